@@ -1,0 +1,117 @@
+#pragma once
+// The world: bodies, constraints (immovable OBBs), springs, cloths; one fixed step at a time (book.md 3.4).
+//
+// Model only what the scene requires: bodies are sorted by kind when added, and each stage of Update runs
+// only over the kinds present. A particle-only scene does no pair tests, impulses or spring work; a scene
+// without springs or cloth pays nothing for them. Nothing is allocated per step in steady state.
+//
+// Stages live in the file of the chapter that introduced them:
+//   PhysicsSystemParticles.cpp (ch14)  particle forces, integration, constraint solving
+//   PhysicsSystemVolumes.cpp   (ch15)  broadphase + manifolds, impulses, volume integration, projection
+//   PhysicsSystemSoft.cpp      (ch16)  spring and cloth forces, distance joints
+
+#include <cstddef>
+#include <vector>
+
+#include "Geometry3D.h"
+#include "Integrator.h"
+#include "Rigidbody.h"
+
+class Particle;
+class RigidbodyVolume;
+class Spring;
+class Cloth;
+class DistanceJoint;
+
+/// A colliding pair found this step, with its manifold (normal from a to b).
+struct CollisionPair {
+    RigidbodyVolume* a = nullptr;
+    RigidbodyVolume* b = nullptr;
+    CollisionManifold manifold;
+};
+
+class PhysicsSystem {
+public:
+    // The book's public parameters, with its defaults.
+    float LinearProjectionPercent = 0.45f;  ///< 0.2-0.8: smaller jitters less and sinks more
+    float PenetrationSlack = 0.01f;         ///< 0.01-0.1: penetration left uncorrected
+    int ImpulseIteration = 5;               ///< passes over every contact per step
+    bool DoLinearProjection = true;
+    bool DebugRender = false;               ///< read by the drawing layer only
+    bool RenderRandomColors = false;        ///< read by the drawing layer only
+    /// How particles (free, cloth and jointed) are integrated. The book ships semi-implicit Euler.
+    Integrator integrator = Integrator::SemiImplicitEuler;
+
+    PhysicsSystem();
+    ~PhysicsSystem();
+    PhysicsSystem(const PhysicsSystem&) = delete;
+    PhysicsSystem& operator=(const PhysicsSystem&) = delete;
+
+    /// Advances the world by dt seconds (one fixed step). dt <= 0 or non-finite does nothing.
+    void Update(float deltaTime);
+
+    /// Adds a body by pointer (not owned). Particles, volumes (sphere/box), distance joints and other
+    /// Rigidbody subclasses are kept in separate lists so each stage touches only its own kind.
+    void AddRigidbody(Rigidbody* body);
+    void AddCloth(Cloth* cloth);
+    /// Stores a copy, as the book does.
+    void AddSpring(const Spring& spring);
+    void AddConstraint(const OBB& constraint);
+    void ClearRigidbodys();
+    void ClearConstraints();
+    void ClearSprings();
+    void ClearCloths();
+
+    // Read access for drawing, tests and benchmarks.
+    const std::vector<Rigidbody*>& Bodies() const { return bodies; }  ///< insertion order
+    const std::vector<Particle*>& Particles() const { return particles; }
+    const std::vector<RigidbodyVolume*>& Volumes() const { return volumes; }
+    const std::vector<DistanceJoint*>& Joints() const { return joints; }
+    const std::vector<OBB>& Constraints() const { return constraints; }
+    const std::vector<Spring>& Springs() const { return springs; }
+    const std::vector<Cloth*>& Cloths() const { return cloths; }
+    /// Colliding pairs found at the start of the last step (debug drawing of manifolds).
+    const std::vector<CollisionPair>& Collisions() const { return results; }
+    std::size_t CollisionCount() const { return resultCount; }
+    /// Number of Update calls that advanced the world.
+    long long StepCount() const { return stepCount; }
+
+private:
+    // ---- ch14: PhysicsSystemParticles.cpp
+    /// Integrates every particle (free and cloth) with `integrator`; multi-stage integrators re-evaluate
+    /// AccumulateParticleForces at their intermediate states.
+    void IntegrateParticles(float dt);
+    /// Gravity on every particle, then spring forces (AccumulateSpringForces).
+    void AccumulateParticleForces();
+    /// Free particles, then joints, then cloth particles against the constraints (book order).
+    void SolveParticleConstraints();
+
+    // ---- ch15: PhysicsSystemVolumes.cpp
+    void FindCollisions();  ///< pair search over volumes only; fills results[0..resultCount)
+    void ApplyVolumeForces();
+    void ApplyImpulses();
+    void IntegrateVolumes(float dt);
+    void ApplyLinearProjection();
+
+    // ---- ch16: PhysicsSystemSoft.cpp
+    /// Adds the force of every spring (system and cloth) to its particles' `forces`.
+    void AccumulateSpringForces();
+    void SolveJoints();
+
+    /// Rebuilds allParticles after bodies or cloths change.
+    void RebuildParticleList();
+
+    std::vector<Rigidbody*> bodies;  // every body, insertion order
+    std::vector<Particle*> particles;
+    std::vector<RigidbodyVolume*> volumes;
+    std::vector<DistanceJoint*> joints;
+    std::vector<Rigidbody*> others;  // any other Rigidbody subclass: generic virtual calls
+    std::vector<Cloth*> cloths;
+    std::vector<OBB> constraints;
+    std::vector<Spring> springs;
+    std::vector<Particle*> allParticles;  // free particles then every cloth's particles
+
+    std::vector<CollisionPair> results;  // capacity reused; only [0, resultCount) is valid
+    std::size_t resultCount = 0;
+    long long stepCount = 0;
+};

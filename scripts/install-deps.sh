@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs every build, test and benchmark dependency of Physics Sandbox from Debian 12 packages.
+# Skips packages that are already installed; needs root (or sudo) only when something is missing.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libosmesa6-dev      # off-screen Mesa context (llvmpipe)
+  python3-glad        # GLAD 2 generator (the `glad` command), run offline at configure time
+  libimgui-dev        # Dear ImGui 1.86 with the OpenGL2 back end
+  libstb-dev          # imgui's pkg-config wants -lstb
+  libtinyobjloader-dev
+  libgtest-dev
+  libbenchmark-dev
+  libpng-dev          # PNG encoder for frames
+  gnuplot-nox         # speed/accuracy plots (bench/)
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed'; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+as_root=()
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  as_root=(sudo)
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${as_root[@]}" apt-get update -qq
+"${as_root[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
