@@ -14,6 +14,7 @@ packages=(
   libbenchmark-dev
   libpng-dev          # PNG encoder for frames
   gnuplot-nox         # speed/accuracy plots (bench/)
+  ccache              # faster rebuilds (optional at build time)
 )
 
 missing=()

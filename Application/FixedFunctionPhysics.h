@@ -1,0 +1,28 @@
+#pragma once
+// Drawing of physics state (the book's PhysicsSystem::Render, Particle::Render, Cloth::Render ...), moved
+// out of Physics/ so that physics never includes GL. Colour table of book.md 1.5.
+
+#include "Cloth.h"
+#include "Particle.h"
+#include "PhysicsSystem.h"
+#include "RigidbodyVolume.h"
+
+/// Book colours (book.md 1.5), as light ambient/diffuse.
+namespace BookColors {
+constexpr vec3 kRigidbodyDiffuse{200.0f / 255.0f, 0.0f, 0.0f};
+constexpr vec3 kRigidbodyAmbient{200.0f / 255.0f, 50.0f / 255.0f, 50.0f / 255.0f};
+constexpr vec3 kGroundDiffuse{0.0f, 0.0f, 200.0f / 255.0f};
+constexpr vec3 kGroundAmbient{50.0f / 255.0f, 50.0f / 255.0f, 200.0f / 255.0f};
+constexpr vec3 kConstraintDiffuse{0.0f, 200.0f / 255.0f, 0.0f};
+constexpr vec3 kConstraintAmbient{50.0f / 255.0f, 200.0f / 255.0f, 50.0f / 255.0f};
+}  // namespace BookColors
+
+/// A red sphere of radius 0.1 at the particle.
+void Render(const Particle& particle);
+/// Sphere or box of the body (collision volumes synced first).
+void Render(const RigidbodyVolume& body);
+/// debug: particles and magenta/yellow/cyan spring lines; otherwise red one-sided triangles.
+void Render(const Cloth& cloth, bool debug);
+/// The book's PhysicsSystem::Render (book.md 3.4): bodies (random colours if RenderRandomColors), constraint 0
+/// blue and the rest green, manifolds if DebugRender, spring lines, cloths.
+void Render(const PhysicsSystem& system);

@@ -1,0 +1,64 @@
+#pragma once
+// Base of every demo (book.md 1.1): an orbit camera, mouse state, a help window, and the parameter table
+// that feeds both its ImGui panel and `--set`. Subclasses drive a PhysicsSystem (usually through a GL-free
+// scene in Demos/Scenes) and draw through the fixed-function Render(...) overloads.
+
+#include <string>
+#include <vector>
+
+#include "Camera.h"
+#include "Parameters.h"
+
+/// One row of the --state CSV.
+struct BodyState {
+    int body = 0;
+    const char* kind = "";  ///< "particle", "sphere", "box", "cloth-particle", ...
+    vec3 position;
+    vec3 velocity;
+};
+
+class DemoBase {
+public:
+    OrbitCamera camera;
+
+    DemoBase();
+    virtual ~DemoBase() = default;
+    DemoBase(const DemoBase&) = delete;
+    DemoBase& operator=(const DemoBase&) = delete;
+
+    /// Calls Resize; subclasses build their scene here.
+    virtual void Initialize(int width, int height);
+    /// camera.Perspective(60, w/h, 0.01, 1000) and remembers the viewport size.
+    virtual void Resize(int width, int height);
+    /// Draws the origin axes (no depth test, unlit).
+    virtual void Render();
+    /// Camera control from the mouse state (right rotates, middle zooms, left pans), then camera.Update(dt).
+    virtual void Update(float dt);
+    /// The help window ("How to use"); subclasses draw their panel and call this.
+    virtual void ImGUI();
+    virtual void Shutdown() {}
+
+    void SetMouseState(bool left, bool middle, bool right, const vec2& delta, const vec2& mouse);
+
+    /// The demo's parameters: its panel widgets, settable with --set key=value.
+    ParameterSet& Parameters() { return params; }
+    const ParameterSet& Parameters() const { return params; }
+    /// Appends one row per simulated body (for --state and the non-finite check).
+    virtual void CollectState(std::vector<BodyState>* /*out*/) const {}
+    /// Deterministic stand-in for the mouse (pick rays, dragging) in headless runs; called once per output
+    /// frame before the fixed updates of that frame. Default: nothing.
+    virtual void ScriptFrame(int /*frame*/) {}
+    /// False if any collected body state is non-finite; *where then names the body and the value.
+    bool StateIsFinite(std::string* where) const;
+
+protected:
+    bool show_help = false;
+    bool mouseLeftDown = false;
+    bool mouseRightDown = false;
+    bool mouseMiddleDown = false;
+    vec2 mouseDelta;
+    vec2 mousePos;
+    vec2 size;
+    bool configHelpWindow = true;
+    ParameterSet params;
+};
