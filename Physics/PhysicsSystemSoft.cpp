@@ -1,8 +1,21 @@
-// STUB (issue 6 replaces this file): spring, cloth and joint stages of PhysicsSystem.
+// Chapter 16 stages of PhysicsSystem: spring and cloth forces, distance joints.
 #include "Cloth.h"
 #include "DistanceJoint.h"
 #include "PhysicsSystem.h"
 #include "Spring.h"
 
-void PhysicsSystem::AccumulateSpringForces() {}
-void PhysicsSystem::SolveJoints() {}
+void PhysicsSystem::AccumulateSpringForces() {
+    // Book order (book.md 3.4 step 6): system springs, then each cloth's structural, shear, bend springs.
+    // The force is evaluated at the current (possibly intermediate) particle state; erratum 5.2-20.
+    for (Spring& spring : springs) spring.ApplyForce(0.0f);
+    for (Cloth* cloth : cloths) {
+        for (Spring& spring : cloth->structural) spring.ApplyForce(0.0f);
+        for (Spring& spring : cloth->shear) spring.ApplyForce(0.0f);
+        for (Spring& spring : cloth->bend) spring.ApplyForce(0.0f);
+    }
+}
+
+void PhysicsSystem::SolveJoints() {
+    // Joints were added after their particles, so they run after the free particles' own constraint pass.
+    for (DistanceJoint* joint : joints) joint->SolveConstraints(constraints);
+}

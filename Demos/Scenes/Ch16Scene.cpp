@@ -1,0 +1,45 @@
+#include "Ch16Scene.h"
+
+#include "Spring.h"
+
+Ch16Scene::Ch16Scene(const Ch16Params& p) { Reset(p); }
+
+OBB Ch16Scene::Ground() { return OBB(vec3(0.0f, 0.0f, 0.0f), vec3(10.0f, 0.1f, 10.0f)); }
+
+const std::array<vec3, 4>& Ch16Scene::PostPositions() {
+    // Book.md 2.7: two posts at height 2.4 and two at 2.3, at (+-0.5, +-0.5).
+    static const std::array<vec3, 4> posts = {vec3(0.5f, 2.4f, 0.5f), vec3(-0.5f, 2.3f, 0.5f), vec3(-0.5f, 2.4f, -0.5f),
+                                              vec3(0.5f, 2.3f, -0.5f)};
+    return posts;
+}
+
+OBB Ch16Scene::PostCollider(int i) {
+    return OBB(PostPositions()[i], vec3(kPostCollisionHalf, kPostHalfHeight, kPostCollisionHalf));
+}
+
+OBB Ch16Scene::PostVisual(int i) {
+    return OBB(PostPositions()[i], vec3(kPostDrawHalf, kPostHalfHeight, kPostDrawHalf));
+}
+
+void Ch16Scene::Reset(const Ch16Params& p) {
+    params = p;
+    system = std::make_unique<PhysicsSystem>();
+    system->integrator = params.integrator;
+    cloth = std::make_unique<Cloth>();
+    cloth->Initialize(params.count, params.distance, vec3(0.0f, kClothHeight, 0.0f));
+    const float k = FromBookSpringConstant(params.k);
+    const float b = FromBookSpringConstant(params.damping);
+    // The book's order: structural, bend, shear.
+    cloth->SetStructuralSprings(k, b);
+    cloth->SetBendSprings(k, b);
+    cloth->SetShearSprings(k, b);
+    system->AddCloth(cloth.get());
+    system->AddConstraint(Ground());
+    for (int i = 0; i < 4; ++i) system->AddConstraint(PostCollider(i));
+    monitor.Start(*system);
+}
+
+bool Ch16Scene::Step() {
+    system->Update(params.dt);
+    return monitor.Check(*system);
+}

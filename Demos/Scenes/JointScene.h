@@ -1,0 +1,56 @@
+#pragma once
+// Joint Demo (book.md 2.8): CH14's particles and ramps, with particle i and i + n/2 held apart by a
+// distance joint. GL-free; shared by JointDemo, the tests and the benchmarks.
+
+#include <memory>
+#include <vector>
+
+#include "DistanceJoint.h"
+#include "Integrator.h"
+#include "Particle.h"
+#include "PhysicsSystem.h"
+#include "Random.h"
+#include "StabilityMonitor.h"
+
+struct JointParams {
+    int numParticles = 50;  ///< 2..100 on the panel; takes effect on Reset
+    Integrator integrator = Integrator::SemiImplicitEuler;
+    float dt = 0.03f;  ///< fixed step (book: 0.03 s, erratum 5.2-16)
+};
+
+class JointScene {
+public:
+    static constexpr float kFloorY = -5.0f;  ///< the book's Update clamps y >= -5
+
+    /// rng is the demo's generator; it is NOT reseeded by Reset, as the book's rand() is never reseeded.
+    explicit JointScene(const JointParams& params = {}, MsvcRand* rng = nullptr);
+    JointScene(const JointScene&) = delete;
+    JointScene& operator=(const JointScene&) = delete;
+    /// Rebuilds the world (the book's ResetDemo). An odd count is rounded UP to even for the particles that
+    /// are created (erratum 5.2-23), so every particle has a joint; params.numParticles is left as given.
+    void Reset(const JointParams& params);
+    /// One fixed step of params.dt, the y >= -5 clamp, then the stability check. False once unstable.
+    bool Step();
+
+    const JointParams& Params() const { return params; }
+    PhysicsSystem& System() { return *system; }
+    const PhysicsSystem& System() const { return *system; }
+    const std::vector<Particle>& Particles() const { return particles; }
+    const std::vector<DistanceJoint>& Joints() const { return joints; }
+    const StabilityMonitor& Monitor() const { return monitor; }
+
+    /// The four CH14 constraints in order (ground, obb1, obb2, obb3), book.md 2.1.
+    static std::vector<OBB> Constraints();
+    /// CH14's spawn box: centre (-0.5, 6.5, -1.01), half-size (3.8505, 2, 4.034834).
+    static vec3 SpawnCenter() { return vec3(-0.5f, 6.5f, -1.01f); }
+    static vec3 SpawnHalfSize() { return vec3(3.8505f, 2.0f, 4.034834f); }
+
+private:
+    JointParams params;
+    MsvcRand ownRng;
+    MsvcRand* rng;
+    std::unique_ptr<PhysicsSystem> system;
+    std::vector<Particle> particles;
+    std::vector<DistanceJoint> joints;
+    StabilityMonitor monitor;
+};

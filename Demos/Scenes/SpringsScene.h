@@ -1,0 +1,50 @@
+#pragma once
+// Simple Springs (book.md 2.6): a heavy particle (50 kg) and a light one (1 kg) joined by one spring,
+// falling onto the ground. GL-free; shared by the SimpleSprings demo, the tests and the benchmarks.
+
+#include <memory>
+#include <vector>
+
+#include "Integrator.h"
+#include "Particle.h"
+#include "PhysicsSystem.h"
+#include "Spring.h"
+#include "StabilityMonitor.h"
+
+/// The demo's panel values. k and b are the BOOK's numbers (velocity change per 0.03 s step); the scene
+/// converts them with FromBookSpringConstant so the motion matches the book at any dt (docs/errata/ch16.md).
+struct SpringsParams {
+    float k = -2.0f;          ///< book k, -5..0 (negative attracts)
+    float b = 0.5f;           ///< book damping, 0..1
+    float restLength = 1.0f;  ///< m, 0..5
+    Integrator integrator = Integrator::SemiImplicitEuler;
+    float dt = 0.03f;  ///< fixed step (book: 0.03 s, erratum 5.2-16)
+};
+
+class SpringsScene {
+public:
+    static constexpr float kHeavyMass = 50.0f;
+    static constexpr float kLightMass = 1.0f;
+    static constexpr float kFloorY = -5.0f;  ///< the book's Update clamps y >= -5
+
+    explicit SpringsScene(const SpringsParams& params = {});
+    /// Rebuilds the world from params (the book's ResetDemo); the step count restarts at 0.
+    void Reset(const SpringsParams& params);
+    /// One fixed step of params.dt, the y >= -5 clamp, then the stability check. False once unstable.
+    bool Step();
+
+    const SpringsParams& Params() const { return params; }
+    PhysicsSystem& System() { return *system; }
+    const PhysicsSystem& System() const { return *system; }
+    const StabilityMonitor& Monitor() const { return monitor; }
+    /// p0 (heavy, index 0) and p1 (light, index 1).
+    const std::vector<Particle>& Particles() const { return particles; }
+    /// The OBB ground: half-size (10, 0.15, 10) at the origin.
+    static OBB Ground();
+
+private:
+    SpringsParams params;
+    std::unique_ptr<PhysicsSystem> system;
+    std::vector<Particle> particles;
+    StabilityMonitor monitor;
+};
