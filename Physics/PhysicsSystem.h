@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "Broadphase.h"
 #include "Geometry3D.h"
 #include "Integrator.h"
 #include "Rigidbody.h"
@@ -41,6 +42,8 @@ public:
     bool RenderRandomColors = false;        ///< read by the drawing layer only
     /// How particles (free, cloth and jointed) are integrated. The book ships semi-implicit Euler.
     Integrator integrator = Integrator::SemiImplicitEuler;
+    /// Volume pairs are found by sweep-and-prune (Broadphase.h) from this many volumes up; all pairs below.
+    std::size_t BroadphaseMinVolumes = 32;
 
     PhysicsSystem();
     ~PhysicsSystem();
@@ -113,5 +116,7 @@ private:
 
     std::vector<CollisionPair> results;  // capacity reused; only [0, resultCount) is valid
     std::size_t resultCount = 0;
+    Broadphase broadphase;                            // used only from BroadphaseMinVolumes volumes up
+    std::vector<std::pair<int, int>> candidatePairs;  // broadphase output, capacity reused
     long long stepCount = 0;
 };

@@ -1,0 +1,68 @@
+#include "Broadphase.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "RigidbodyVolume.h"
+
+void VolumeBounds(const RigidbodyVolume& body, vec3* outMin, vec3* outMax) {
+    vec3 extent;
+    if (body.type == RigidbodyType::Sphere) {
+        const float r = body.sphere.radius;
+        extent = vec3(r, r, r);
+        *outMin = body.sphere.position - extent;
+        *outMax = body.sphere.position + extent;
+        return;
+    }
+    if (body.type == RigidbodyType::Box) {
+        // Half extent along world axis i: sum over local axes k of |axis_k[i]| * size_k.
+        const mat3& R = body.box.orientation;
+        for (int i = 0; i < 3; ++i)
+            extent[i] = std::fabs(R[0][i]) * body.box.size.x + std::fabs(R[1][i]) * body.box.size.y +
+                        std::fabs(R[2][i]) * body.box.size.z;
+        *outMin = body.box.position - extent;
+        *outMax = body.box.position + extent;
+        return;
+    }
+    *outMin = body.position;
+    *outMax = body.position;
+}
+
+void Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::vector<std::pair<int, int>>* pairs) {
+    pairs->clear();
+    const int n = static_cast<int>(volumes.size());
+
+    // Keep the previous order when the body set is unchanged; otherwise start from insertion order.
+    if (static_cast<int>(entries.size()) != n) {
+        entries.resize(n);
+        for (int i = 0; i < n; ++i) entries[i].index = i;
+    }
+    for (Entry& e : entries) {
+        const RigidbodyVolume& body = *volumes[e.index];
+        VolumeBounds(body, &e.min, &e.max);
+        e.dynamic = body.mass > 0.0f;
+    }
+    // Insertion sort on min.x (ties by index, so the order is a pure function of the bounds): O(n) when the
+    // bodies barely moved since the last step.
+    for (int i = 1; i < n; ++i) {
+        const Entry key = entries[i];
+        int j = i - 1;
+        while (j >= 0 &&
+               (entries[j].min.x > key.min.x || (entries[j].min.x == key.min.x && entries[j].index > key.index))) {
+            entries[j + 1] = entries[j];
+            --j;
+        }
+        entries[j + 1] = key;
+    }
+    // Sweep: only bodies whose x intervals overlap are compared on y and z.
+    for (int i = 0; i < n; ++i) {
+        const Entry& a = entries[i];
+        for (int k = i + 1; k < n && entries[k].min.x <= a.max.x; ++k) {
+            const Entry& b = entries[k];
+            if (!a.dynamic && !b.dynamic) continue;
+            if (a.max.y < b.min.y || b.max.y < a.min.y || a.max.z < b.min.z || b.max.z < a.min.z) continue;
+            pairs->emplace_back(std::min(a.index, b.index), std::max(a.index, b.index));
+        }
+    }
+    std::sort(pairs->begin(), pairs->end());
+}
