@@ -1,0 +1,59 @@
+#include "Ch15Scene.h"
+
+Ch15Scene::Ch15Scene(const Ch15Params& p) : params(p) { Reset(); }
+
+void Ch15Scene::Reset() {
+    system = std::make_unique<PhysicsSystem>();
+    bodies.assign(3, RigidbodyVolume(RigidbodyType::Box));
+
+    // book.md 2.5: cor 0.5 and friction 0.6 are the defaults; all three are synced at reset.
+    RigidbodyVolume& tilted = bodies[0];
+    tilted.position = vec3(0.5f, 6.0f, 0.0f);
+    tilted.SetEulerOrientation(vec3(0.0f, 0.0f, 0.4f));  // radians: roll ~22.92 degrees
+    tilted.mass = 1.0f;
+
+    RigidbodyVolume& heavy = bodies[1];
+    heavy.position = vec3(0.0f, 1.0f, 0.0f);
+    heavy.mass = 5.0f;
+
+    // (0,-0.5,0)*(1,0.5,1) and (50,1,50)*0.25 as in the book: top face at y = 0.
+    RigidbodyVolume& ground = bodies[2];
+    ground.position = vec3(0.0f, -0.25f, 0.0f);
+    ground.box.size = vec3(12.5f, 0.25f, 12.5f);
+    ground.mass = 0.0f;
+
+    for (RigidbodyVolume& body : bodies) {
+        body.SynchCollisionVolumes();
+        system->AddRigidbody(&body);
+    }
+    system->RenderRandomColors = true;
+    ApplySettings();
+}
+
+void Ch15Scene::ApplySettings() {
+    system->LinearProjectionPercent = params.projection;
+    system->PenetrationSlack = params.slop;
+    system->ImpulseIteration = params.iterations;
+    system->DoLinearProjection = params.linearProjection;
+    system->DebugRender = params.debug;
+}
+
+void Ch15Scene::Step(float dt) {
+    ApplySettings();
+    system->Update(dt);
+}
+
+void Ch15Scene::AddParameters(ParameterSet* set) {
+    set->AddFloat("projection", &params.projection, 0.2f, 0.8f,
+                  "LinearProjectionPercent: share of the penetration corrected per step (panel \"Porjection\")",
+                  [this] { ApplySettings(); });
+    set->AddFloat("slop", &params.slop, 0.01f, 0.1f, "PenetrationSlack: penetration left uncorrected (m)",
+                  [this] { ApplySettings(); });
+    set->AddInt("iterations", &params.iterations, 1, 20, "ImpulseIteration: passes over every contact per step",
+                [this] { ApplySettings(); });
+    set->AddBool("linear-projection", &params.linearProjection, "DoLinearProjection: positional correction",
+                 [this] { ApplySettings(); });
+    set->AddBool("debug", &params.debug, "DebugRender: box edges and collision manifolds", [this] { ApplySettings(); });
+    set->AddAction(
+        "reset", [this] { Reset(); }, "rebuild the scene");
+}

@@ -1,0 +1,46 @@
+#pragma once
+// Linear Impulse (book.md 2.3): two spheres or two boxes thrown at each other (or dropped onto each other)
+// above a static ground slab, with the demo's pause / single-step controls. GL-free; shared by LinearImpulse,
+// the tests and the benchmarks.
+
+#include <memory>
+#include <vector>
+
+#include "Parameters.h"
+#include "PhysicsSystem.h"
+#include "RigidbodyVolume.h"
+
+/// The "Linear Impulse Demo" panel values. The book starts paused; headless runs start unpaused (pause=1
+/// restores the book's start).
+struct LinearImpulseParams {
+    bool spheres = false;  ///< "Spheres": spheres instead of boxes
+    bool drop = false;     ///< "Drop": stacked at rest instead of thrown
+    bool pause = false;    ///< "Pause"
+    int frames = 1;        ///< "Frames": steps taken by one press of "Step"
+};
+
+class LinearImpulseScene {
+public:
+    explicit LinearImpulseScene(const LinearImpulseParams& params = {});
+    /// Rebuilds the bodies from spheres/drop (the book's ResetDemo), volumes synced (erratum 5.2-28).
+    void Reset();
+    /// The "Step" button: queue `frames` single steps to run while paused.
+    void RequestSteps();
+    /// The book's Update: one step of dt unless paused; while paused, one queued step if any.
+    void Update(float dt);
+    /// Registers step, frames, reset, pause, spheres and drop on *set.
+    void AddParameters(ParameterSet* set);
+
+    LinearImpulseParams& Params() { return params; }
+    int PendingSteps() const { return pendingSteps; }
+    PhysicsSystem& System() { return *system; }
+    const PhysicsSystem& System() const { return *system; }
+    /// [0] first body (red), [1] second body (blue), [2] ground.
+    const std::vector<RigidbodyVolume>& Bodies() const { return bodies; }
+
+private:
+    LinearImpulseParams params;
+    int pendingSteps = 0;
+    std::unique_ptr<PhysicsSystem> system;
+    std::vector<RigidbodyVolume> bodies;
+};

@@ -1,0 +1,45 @@
+#include "MomentumScene.h"
+
+MomentumScene::MomentumScene(const MomentumParams& p) : params(p) { Reset(); }
+
+void MomentumScene::Reset() {
+    system = std::make_unique<PhysicsSystem>();
+    system->RenderRandomColors = true;
+    system->ImpulseIteration = 20;
+    bodies.assign(kSpheres + 1, RigidbodyVolume(RigidbodyType::Sphere));
+
+    // book.md 2.4: x = i * 2.00002 for i = 0..3 and 4 * 3.00003 for the last; y = 1.16 puts the bottoms 0.01
+    // above the ground top (0.15).
+    for (int i = 0; i < kSpheres; ++i) {
+        RigidbodyVolume& s = bodies[i];
+        const float spacing = (1.0f + 0.00001f) * (i < kSpheres - 1 ? 2.0f : 3.0f);
+        s.position = vec3(static_cast<float>(i) * spacing, 1.16f, 0.0f);
+        s.damping = params.damping;
+        if (!params.gravity) s.gravity = vec3();
+    }
+    RigidbodyVolume& last = bodies[kSpheres - 1];
+    last.AddLinearImpulse(Normalized(vec3() - last.position) * kLaunchSpeed);
+
+    RigidbodyVolume& ground = bodies[kSpheres];
+    ground.type = RigidbodyType::Box;
+    ground.box.size = vec3(15.0f, 0.15f, 15.0f);
+    ground.mass = 0.0f;
+
+    for (RigidbodyVolume& body : bodies) {
+        body.SynchCollisionVolumes();  // erratum 5.2-28: the book leaves the volumes at the origin until drawn
+        system->AddRigidbody(&body);
+    }
+}
+
+void MomentumScene::Step(float dt) { system->Update(dt); }
+
+void MomentumScene::AddParameters(ParameterSet* set) {
+    set->AddAction(
+        "reset", [this] { Reset(); }, "rebuild the scene");
+}
+
+vec3 MomentumScene::TotalMomentum() const {
+    vec3 p;
+    for (const RigidbodyVolume& body : bodies) p += body.velocity * body.mass;
+    return p;
+}

@@ -1,0 +1,43 @@
+#pragma once
+// Conservation Of Momentum (book.md 2.4): four unit spheres in a row on the ground and a fifth sent at them
+// at 20 m/s. GL-free; shared by ConservationOfMomentum, the tests and the benchmarks.
+
+#include <memory>
+#include <vector>
+
+#include "Parameters.h"
+#include "PhysicsSystem.h"
+#include "RigidbodyVolume.h"
+
+/// The demo has only a Reset button. damping and gravity are not panel values: tests use them to isolate
+/// the impulses from the book's per-step damping (0.98) and from ground contact.
+struct MomentumParams {
+    float damping = 0.98f;  ///< per-step velocity factor of every sphere (book 0.98)
+    bool gravity = true;    ///< false: no gravity, so the spheres never touch the ground (0.01 m gap)
+};
+
+class MomentumScene {
+public:
+    static constexpr int kSpheres = 5;
+    static constexpr float kLaunchSpeed = 20.0f;  ///< m/s, sphere 4 towards x = 0
+
+    explicit MomentumScene(const MomentumParams& params = {});
+    /// Rebuilds the spheres and ground (the book's ResetDemo), volumes synced (erratum 5.2-28).
+    void Reset();
+    void Step(float dt);
+    /// Registers the reset action on *set.
+    void AddParameters(ParameterSet* set);
+    /// Sum of m v over the spheres (kg m/s).
+    vec3 TotalMomentum() const;
+
+    MomentumParams& Params() { return params; }
+    PhysicsSystem& System() { return *system; }
+    const PhysicsSystem& System() const { return *system; }
+    /// Spheres 0..4 then the ground (index 5).
+    const std::vector<RigidbodyVolume>& Bodies() const { return bodies; }
+
+private:
+    MomentumParams params;
+    std::unique_ptr<PhysicsSystem> system;
+    std::vector<RigidbodyVolume> bodies;
+};
