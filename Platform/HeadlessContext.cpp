@@ -1,0 +1,53 @@
+#include "HeadlessContext.h"
+
+#include <glad/gl.h>
+
+#include <cstdlib>
+
+#include "OSMesaContext.h"
+
+void PinSoftwareRasterizer() {
+    // llvmpipe, not softpipe: the goldens were made with it.
+    setenv("GALLIUM_DRIVER", "llvmpipe", 1);
+    // The JIT otherwise picks 256-bit AVX code on AVX2 machines and 128-bit SSE elsewhere; the two round
+    // differently in places, so pin the narrower one every x86-64 CPU has.
+    setenv("LP_NATIVE_VECTOR_WIDTH", "128", 1);
+    // Rasteriser threads change speed, not pixels (llvmpipe bins into fixed tiles). One thread leaves the
+    // second core to the PNG encoder; a caller may override it.
+    setenv("LP_NUM_THREADS", "1", 0);
+}
+
+std::unique_ptr<HeadlessContext> CreateHeadlessContext(int width, int height, HeadlessInfo* info, std::string* error) {
+    std::unique_ptr<HeadlessContext> context = CreateOSMesaContext(width, height, error);
+    if (!context) return nullptr;
+    const int version = gladLoadGL(reinterpret_cast<GLADloadfunc>(context->ProcLoader()));
+    if (version == 0) {
+        *error = "gladLoadGL failed (no GL entry points from " + std::string(context->BackendName()) + ")";
+        return nullptr;
+    }
+    if (GLAD_VERSION_MAJOR(version) < 2 || (GLAD_VERSION_MAJOR(version) == 2 && GLAD_VERSION_MINOR(version) < 1)) {
+        *error = "OpenGL 2.1 required, context offers " + std::to_string(GLAD_VERSION_MAJOR(version)) + "." +
+                 std::to_string(GLAD_VERSION_MINOR(version));
+        return nullptr;
+    }
+    GLint depthBits = 0, stencilBits = 0;
+    glGetIntegerv(GL_DEPTH_BITS, &depthBits);
+    glGetIntegerv(GL_STENCIL_BITS, &stencilBits);
+    if (depthBits < 24 || stencilBits < 8) {
+        *error = "context has " + std::to_string(depthBits) + " depth bits and " + std::to_string(stencilBits) +
+                 " stencil bits; 24 and 8 are required";
+        return nullptr;
+    }
+    if (info) {
+        const auto text = [](GLenum name) {
+            const GLubyte* s = glGetString(name);
+            return s ? std::string(reinterpret_cast<const char*>(s)) : std::string();
+        };
+        info->backend = context->BackendName();
+        info->renderer = text(GL_RENDERER);
+        info->version = text(GL_VERSION);
+        info->depthBits = depthBits;
+        info->stencilBits = stencilBits;
+    }
+    return context;
+}

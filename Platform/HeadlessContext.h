@@ -1,0 +1,47 @@
+#pragma once
+// A current OpenGL 2.1 compatibility context without a window, rendering into an off-screen colour buffer.
+// OSMesa is the one back end today (Debian 12 ships it; Mesa 25.1 dropped it upstream), so context creation
+// sits behind this interface and an EGL pbuffer back end can be added beside it.
+
+#include <memory>
+#include <string>
+
+/// The GL function loader type GLAD 2's gladLoadGL expects (kept free of GL headers here).
+using HeadlessProc = void (*)();
+using HeadlessProcLoader = HeadlessProc (*)(const char* name);
+
+class HeadlessContext {
+public:
+    virtual ~HeadlessContext() = default;
+    /// Short name of the back end ("osmesa").
+    virtual const char* BackendName() const = 0;
+    /// Resolves a GL entry point of this context; nullptr if unknown.
+    virtual HeadlessProcLoader ProcLoader() const = 0;
+    /// Makes the context current on the calling thread. False on failure.
+    virtual bool MakeCurrent() = 0;
+    int Width() const { return width; }
+    int Height() const { return height; }
+
+protected:
+    int width = 0;
+    int height = 0;
+};
+
+/// What CreateHeadlessContext found once the context was current (for the summary, docs and tests).
+struct HeadlessInfo {
+    std::string backend;   ///< "osmesa"
+    std::string renderer;  ///< glGetString(GL_RENDERER), e.g. "llvmpipe (LLVM 15.0.6, 128 bits)"
+    std::string version;   ///< glGetString(GL_VERSION)
+    int depthBits = 0;
+    int stencilBits = 0;
+};
+
+/// Pins what makes Mesa's software rasteriser reproducible across machines: GALLIUM_DRIVER=llvmpipe and
+/// LP_NATIVE_VECTOR_WIDTH=128 (overwritten), LP_NUM_THREADS (only if unset; it does not change pixels).
+/// Must run before the first context is created. Mesa 22.3's libOSMesa reads all three.
+void PinSoftwareRasterizer();
+
+/// Creates a width x height RGBA context (24 depth bits, 8 stencil bits, GL 2.1 compatibility), makes it
+/// current, loads the GL functions through GLAD and checks the depth and stencil bits it got.
+/// Returns nullptr and sets *error (naming the step that failed) on failure.
+std::unique_ptr<HeadlessContext> CreateHeadlessContext(int width, int height, HeadlessInfo* info, std::string* error);

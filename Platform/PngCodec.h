@@ -1,0 +1,27 @@
+#pragma once
+// PNG encoding and decoding of RGB frames through libpng, and the whole-or-nothing file write.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "Image.h"
+
+/// Encoder settings. The defaults were chosen by measurement (bench/render_bench.cpp, docs/app.md):
+/// zlib level 1 with the Sub filter only encodes a book frame several times faster than libpng's adaptive
+/// filter selection or stb_image_write, for files a little larger.
+struct PngOptions {
+    int level = 1;          ///< zlib level 0..9
+    bool adaptive = false;  ///< false: Sub filter on every row; true: libpng's per-row adaptive choice
+};
+
+/// Encodes img as an 8-bit RGB PNG into *out (replacing its contents). Output depends only on img and
+/// options. False with *error on a libpng failure.
+bool EncodePng(const Image& img, const PngOptions& options, std::vector<std::uint8_t>* out, std::string* error);
+/// Decodes any PNG libpng reads (palette, grey, alpha, 16-bit) to 8-bit RGB; alpha is dropped.
+bool DecodePng(const std::vector<std::uint8_t>& bytes, Image* img, std::string* error);
+bool ReadFileBytes(const std::string& path, std::vector<std::uint8_t>* bytes, std::string* error);
+bool ReadPngFile(const std::string& path, Image* img, std::string* error);
+/// Writes bytes to path whole or not at all: a temporary file in the same directory, flushed, then renamed
+/// over path. On failure the temporary is removed and *error names the path and the reason.
+bool WriteFileAtomic(const std::string& path, const std::vector<std::uint8_t>& bytes, std::string* error);

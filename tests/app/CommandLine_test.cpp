@@ -1,0 +1,149 @@
+#include "CommandLine.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace {
+
+ParseStatus Parse(std::vector<const char*> args, Options* o, std::string* error) {
+    args.insert(args.begin(), "physics-sandbox");
+    return ParseCommandLine(int(args.size()), args.data(), o, error);
+}
+
+// Expects a parse error whose message contains `needle`.
+void ExpectError(std::vector<const char*> args, const std::string& needle) {
+    Options o;
+    std::string error;
+    EXPECT_EQ(Parse(args, &o, &error), ParseStatus::Error) << needle;
+    EXPECT_NE(error.find(needle), std::string::npos) << "message: " << error;
+}
+
+}  // namespace
+
+TEST(CommandLine, Defaults) {
+    Options o;
+    std::string error;
+    ASSERT_EQ(Parse({"--demo", "ch14"}, &o, &error), ParseStatus::Ok) << error;
+    EXPECT_EQ(o.demo, "ch14");
+    EXPECT_EQ(o.frames, 1);
+    EXPECT_EQ(o.width, 800);
+    EXPECT_EQ(o.height, 600);
+    EXPECT_EQ(o.frameTime.num, 1);
+    EXPECT_EQ(o.frameTime.den, 60);
+    EXPECT_EQ(o.step.num, 3);
+    EXPECT_EQ(o.step.den, 100);
+    EXPECT_FALSE(o.noUi);
+    EXPECT_TRUE(o.encodeThread);
+}
+
+TEST(CommandLine, EveryFlag) {
+    Options o;
+    std::string error;
+    ASSERT_EQ(Parse({"--demo=ch15",
+                     "--frames",
+                     "90",
+                     "--out",
+                     "o",
+                     "--size",
+                     "400x300",
+                     "--set",
+                     "a=1",
+                     "--set",
+                     "b=x=y",
+                     "--state",
+                     "s.csv",
+                     "--no-ui",
+                     "--camera-yaw",
+                     "-30",
+                     "--camera-pitch",
+                     "20",
+                     "--camera-zoom",
+                     "12",
+                     "--camera-target",
+                     "1,2.5,-3",
+                     "--orbit",
+                     "0.5",
+                     "--fps",
+                     "30",
+                     "--dt",
+                     "1/30",
+                     "--only-frames",
+                     "30,0,30",
+                     "--compare",
+                     "g",
+                     "--tolerance",
+                     "4",
+                     "--max-diff",
+                     "0.01",
+                     "--png-level",
+                     "6",
+                     "--serial-encode",
+                     "--progress",
+                     "5",
+                     "--quiet"},
+                    &o, &error),
+              ParseStatus::Ok)
+        << error;
+    EXPECT_EQ(o.demo, "ch15");
+    EXPECT_EQ(o.frames, 90);
+    EXPECT_EQ(o.outDir, "o");
+    EXPECT_EQ(o.width, 400);
+    EXPECT_EQ(o.height, 300);
+    ASSERT_EQ(o.sets.size(), 2u);
+    EXPECT_EQ(o.sets[1].first, "b");
+    EXPECT_EQ(o.sets[1].second, "x=y");
+    EXPECT_EQ(o.stateFile, "s.csv");
+    EXPECT_TRUE(o.noUi);
+    EXPECT_TRUE(o.hasYaw && o.hasPitch && o.hasZoom && o.hasTarget);
+    EXPECT_FLOAT_EQ(o.yaw, -30.0f);
+    EXPECT_FLOAT_EQ(o.target[1], 2.5f);
+    EXPECT_FLOAT_EQ(o.orbitDegreesPerFrame, 0.5f);
+    EXPECT_EQ(o.frameTime.den, 30);
+    EXPECT_EQ(o.step.den, 30);
+    EXPECT_EQ(o.onlyFrames, (std::vector<int>{0, 30}));
+    EXPECT_EQ(o.compareDir, "g");
+    EXPECT_EQ(o.thresholds.channelTolerance, 4);
+    EXPECT_FLOAT_EQ(float(o.thresholds.maxDifferingFraction), 0.01f);
+    EXPECT_EQ(o.pngLevel, 6);
+    EXPECT_FALSE(o.encodeThread);
+    EXPECT_EQ(o.progressEvery, 5);
+    EXPECT_TRUE(o.quiet);
+}
+
+TEST(CommandLine, ListAndHelpNeedNoDemo) {
+    Options o;
+    std::string error;
+    ASSERT_EQ(Parse({"--list"}, &o, &error), ParseStatus::Ok);
+    EXPECT_EQ(o.mode, Options::Mode::List);
+    Options h;
+    ASSERT_EQ(Parse({"--help"}, &h, &error), ParseStatus::Ok);
+    EXPECT_EQ(h.mode, Options::Mode::Help);
+    EXPECT_NE(UsageText().find("--demo ID"), std::string::npos);
+}
+
+TEST(CommandLine, ErrorsNameTheFlagAndValue) {
+    ExpectError({"--demo", "x", "--bogus"}, "unknown option '--bogus'");
+    ExpectError({}, "no --demo");
+    ExpectError({"--demo"}, "--demo needs a value");
+    ExpectError({"--demo", "x", "--frames", "0"}, "--frames 0");
+    ExpectError({"--demo", "x", "--frames", "-5"}, "--frames -5");
+    ExpectError({"--demo", "x", "--frames", "ten"}, "--frames ten");
+    ExpectError({"--demo", "x", "--size", "800"}, "--size 800");
+    ExpectError({"--demo", "x", "--size", "0x600"}, "--size 0x600");
+    ExpectError({"--demo", "x", "--size", "800x-1"}, "--size 800x-1");
+    ExpectError({"--demo", "x", "--set", "novalue"}, "expected key=value");
+    ExpectError({"--demo", "x", "--set", "=1"}, "expected key=value");
+    ExpectError({"--demo", "x", "--camera-pitch", "95"}, "--camera-pitch 95");
+    ExpectError({"--demo", "x", "--camera-zoom", "nan"}, "--camera-zoom nan");
+    ExpectError({"--demo", "x", "--camera-target", "1,2"}, "--camera-target 1,2");
+    ExpectError({"--demo", "x", "--fps", "0"}, "--fps 0");
+    ExpectError({"--demo", "x", "--dt", "-0.03"}, "--dt -0.03");
+    ExpectError({"--demo", "x", "--dt", "2"}, "--dt 2");
+    ExpectError({"--demo", "x", "--only-frames", "1,,2"}, "--only-frames");
+    ExpectError({"--demo", "x", "--frames", "10", "--only-frames", "10"}, "not below --frames");
+    ExpectError({"--demo", "x", "--compare", "g"}, "--compare needs --out");
+    ExpectError({"--demo", "x", "--update-golden"}, "--update-golden needs --compare");
+    ExpectError({"--demo", "x", "--png-level", "10"}, "--png-level 10");
+    ExpectError({"--no-ui=1", "--demo", "x"}, "takes no value");
+}

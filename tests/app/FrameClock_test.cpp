@@ -1,0 +1,58 @@
+#include "FrameClock.h"
+
+#include <gtest/gtest.h>
+
+TEST(ParseRational, DecimalsAndFractionsAreExact) {
+    Rational r;
+    ASSERT_TRUE(ParseRational("0.03", &r));
+    EXPECT_EQ(r.num, 3);
+    EXPECT_EQ(r.den, 100);
+    ASSERT_TRUE(ParseRational("1/30", &r));
+    EXPECT_EQ(r.num, 1);
+    EXPECT_EQ(r.den, 30);
+    ASSERT_TRUE(ParseRational("62.5", &r));
+    EXPECT_EQ(r.num, 125);
+    EXPECT_EQ(r.den, 2);
+    ASSERT_TRUE(ParseRational("60", &r));
+    EXPECT_EQ(r.num, 60);
+    EXPECT_EQ(r.den, 1);
+}
+
+TEST(ParseRational, RejectsZeroNegativeAndJunk) {
+    Rational r;
+    for (const char* bad : {"0", "0.0", "-1", "1/0", "abc", "", ".", "1e3", "0.0000001", "1..2", "1/2/3"})
+        EXPECT_FALSE(ParseRational(bad, &r)) << bad;
+}
+
+TEST(FrameClock, BookStepsAtSixtyFramesPerSecond) {
+    // Frame 1/60 s, step 0.03 s: ticks of 1/300 s, 5 per frame, 9 per step; strict '>' as main-win32.
+    FrameClock clock({1, 60}, {3, 100});
+    EXPECT_EQ(clock.TicksPerSecond(), 300);
+    EXPECT_EQ(clock.FrameTicks(), 5);
+    EXPECT_EQ(clock.StepTicks(), 9);
+    EXPECT_EQ(clock.AdvanceFrame(), 0);  // 5
+    EXPECT_EQ(clock.AdvanceFrame(), 1);  // 10 > 9 -> 1 left
+    EXPECT_EQ(clock.AdvanceFrame(), 0);  // 6
+    EXPECT_EQ(clock.AdvanceFrame(), 1);  // 11 -> 2
+    EXPECT_EQ(clock.RemainderTicks(), 2);
+}
+
+TEST(FrameClock, StrictComparisonHoldsBackAnExactMultiple) {
+    // Frame = step = 1/30: the accumulator equals the step after one frame, which is not '>' it.
+    FrameClock clock({1, 30}, {1, 30});
+    EXPECT_EQ(clock.AdvanceFrame(), 0);
+    EXPECT_EQ(clock.AdvanceFrame(), 1);
+    EXPECT_EQ(clock.AdvanceFrame(), 1);
+}
+
+TEST(FrameClock, NoDriftOverAMillionFrames) {
+    FrameClock clock({1, 60}, {3, 100});
+    const std::int64_t frames = 1000000;
+    for (std::int64_t i = 0; i < frames; ++i) clock.AdvanceFrame();
+    // 1e6 frames = 50000/3 s exactly; steps = floor of (total ticks - 1) / 9 with the strict comparison:
+    // 5e6 ticks, 555555 steps use 4999995, leaving 5 (5 is not > 9).
+    EXPECT_EQ(clock.Steps(), 555555);
+    EXPECT_EQ(clock.RemainderTicks(), 5);
+    EXPECT_EQ(clock.Steps() * clock.StepTicks() + clock.RemainderTicks(), frames * clock.FrameTicks());
+    EXPECT_DOUBLE_EQ(clock.FrameSeconds(), 1000000.0 / 60.0);
+}
