@@ -70,26 +70,31 @@ bool TriangleBox(const Triangle& t, const vec3& centre, const vec3& size, const 
 
 }  // namespace
 
+/// True if the spheres overlap; touching (distance == r1 + r2) is not overlapping.
 bool SphereSphere(const Sphere& s1, const Sphere& s2) {
     const float radii = s1.radius + s2.radius;
     return DistanceSq(s1.position, s2.position) < radii * radii;
 }
 
+/// True if the box comes strictly closer than the radius to the centre (touching is false).
 bool SphereAABB(const Sphere& sphere, const AABB& aabb) {
     const Point closest = ClosestPoint(aabb, sphere.position);
     return DistanceSq(sphere.position, closest) < sphere.radius * sphere.radius;
 }
 
+/// True if the box comes strictly closer than the radius to the centre (touching is false).
 bool SphereOBB(const Sphere& sphere, const OBB& obb) {
     const Point closest = ClosestPoint(obb, sphere.position);
     return DistanceSq(sphere.position, closest) < sphere.radius * sphere.radius;
 }
 
+/// True if the centre is strictly closer than the radius to the plane (unit normal assumed).
 bool SpherePlane(const Sphere& sphere, const Plane& plane) {
     const Point closest = ClosestPoint(plane, sphere.position);
     return DistanceSq(sphere.position, closest) < sphere.radius * sphere.radius;
 }
 
+/// True if the boxes overlap or touch on every world axis.
 bool AABBAABB(const AABB& aabb1, const AABB& aabb2) {
     const vec3 aMin = GetMin(aabb1), aMax = GetMax(aabb1);
     const vec3 bMin = GetMin(aabb2), bMax = GetMax(aabb2);
@@ -97,6 +102,7 @@ bool AABBAABB(const AABB& aabb1, const AABB& aabb2) {
            aMax.z >= bMin.z;
 }
 
+/// SAT over 15 axes (3 + 3 face axes, 9 edge crosses A x B); touching counts as intersecting.
 bool AABBOBB(const AABB& aabb, const OBB& obb) {
     const vec3 a[3] = {vec3(1, 0, 0), vec3(0, 1, 0), vec3(0, 0, 1)};
     vec3 b[3];
@@ -104,6 +110,7 @@ bool AABBOBB(const AABB& aabb, const OBB& obb) {
     return BoxBox(aabb.position, aabb.size, a, obb.position, obb.size, b);
 }
 
+/// True if the plane passes through or touches the box (unit normal assumed).
 bool AABBPlane(const AABB& aabb, const Plane& plane) {
     // Book: the box's projected half length on the normal against the centre's signed plane distance.
     const float pLen = aabb.size.x * std::fabs(plane.normal.x) + aabb.size.y * std::fabs(plane.normal.y) +
@@ -111,6 +118,7 @@ bool AABBPlane(const AABB& aabb, const Plane& plane) {
     return std::fabs(Dot(plane.normal, aabb.position) - plane.distance) <= pLen;
 }
 
+/// SAT over 15 axes (3 + 3 face axes, 9 edge crosses A x B); touching counts as intersecting.
 bool OBBOBB(const OBB& obb1, const OBB& obb2) {
     vec3 a[3], b[3];
     Axes(obb1.orientation, a);
@@ -118,6 +126,7 @@ bool OBBOBB(const OBB& obb1, const OBB& obb2) {
     return BoxBox(obb1.position, obb1.size, a, obb2.position, obb2.size, b);
 }
 
+/// True if the plane passes through or touches the box (unit normal assumed).
 bool OBBPlane(const OBB& obb, const Plane& plane) {
     vec3 a[3];
     Axes(obb.orientation, a);
@@ -127,6 +136,7 @@ bool OBBPlane(const OBB& obb, const Plane& plane) {
     return std::fabs(Dot(plane.normal, obb.position) - plane.distance) <= pLen;
 }
 
+/// True unless the planes are parallel and distinct (coincident planes intersect).
 bool PlanePlane(const Plane& plane1, const Plane& plane2) {
     const vec3 d = Cross(plane1.normal, plane2.normal);
     const float scaleSq = MagnitudeSq(plane1.normal) * MagnitudeSq(plane2.normal);
@@ -139,17 +149,20 @@ bool PlanePlane(const Plane& plane1, const Plane& plane2) {
     return CMP_EPS(plane1.distance / l1, sign * plane2.distance / l2);
 }
 
+/// Min and max of Dot(corner, axis) over the 8 corners (axis not normalised).
 Interval GetInterval(const AABB& aabb, const vec3& axis) {
     const vec3 a[3] = {vec3(1, 0, 0), vec3(0, 1, 0), vec3(0, 0, 1)};
     return BoxInterval(aabb.position, aabb.size, a, axis);
 }
 
+/// Min and max of Dot(corner, axis) over the 8 corners (axis not normalised).
 Interval GetInterval(const OBB& obb, const vec3& axis) {
     vec3 a[3];
     Axes(obb.orientation, a);
     return BoxInterval(obb.position, obb.size, a, axis);
 }
 
+/// Min and max of Dot(vertex, axis) over the 3 vertices (axis not normalised).
 Interval GetInterval(const Triangle& triangle, const vec3& axis) {
     Interval r;
     r.min = r.max = Dot(triangle.a, axis);
@@ -161,43 +174,52 @@ Interval GetInterval(const Triangle& triangle, const vec3& axis) {
     return r;
 }
 
+/// True if the two projections onto axis overlap or touch.
 bool OverlapOnAxis(const AABB& aabb, const OBB& obb, const vec3& axis) {
     return Overlap(GetInterval(aabb, axis), GetInterval(obb, axis));
 }
 
+/// True if the two boxes' projections onto axis overlap or touch (erratum 5.2-8).
 bool OverlapOnAxis(const OBB& obb1, const OBB& obb2, const vec3& axis) {
     // Erratum 5.2-8: the book projects obb1 twice, so every axis overlaps and OBBOBB is always true.
     return Overlap(GetInterval(obb1, axis), GetInterval(obb2, axis));
 }
 
+/// True if the two projections onto axis overlap or touch.
 bool OverlapOnAxis(const AABB& aabb, const Triangle& triangle, const vec3& axis) {
     return Overlap(GetInterval(aabb, axis), GetInterval(triangle, axis));
 }
 
+/// True if the two projections onto axis overlap or touch.
 bool OverlapOnAxis(const OBB& obb, const Triangle& triangle, const vec3& axis) {
     return Overlap(GetInterval(obb, axis), GetInterval(triangle, axis));
 }
 
+/// True if the two projections onto axis overlap or touch.
 bool OverlapOnAxis(const Triangle& t1, const Triangle& t2, const vec3& axis) {
     return Overlap(GetInterval(t1, axis), GetInterval(t2, axis));
 }
 
+/// True if the triangle comes within the radius of the centre (touching included, as the book).
 bool TriangleSphere(const Triangle& t, const Sphere& s) {
     const Point closest = ClosestPoint(t, s.position);
     return DistanceSq(closest, s.position) <= s.radius * s.radius;
 }
 
+/// SAT over 13 axes (box axes, triangle normal, box axis x edge); degenerate axes skipped.
 bool TriangleAABB(const Triangle& t, const AABB& a) {
     const vec3 axes[3] = {vec3(1, 0, 0), vec3(0, 1, 0), vec3(0, 0, 1)};
     return TriangleBox(t, a.position, a.size, axes);
 }
 
+/// SAT over 13 axes (box axes, triangle normal, box axis x edge); degenerate axes skipped.
 bool TriangleOBB(const Triangle& t, const OBB& o) {
     vec3 axes[3];
     Axes(o.orientation, axes);
     return TriangleBox(t, o.position, o.size, axes);
 }
 
+/// True if the triangle touches or crosses the plane (or lies in it).
 bool TrianglePlane(const Triangle& t, const Plane& p) {
     const float s1 = PlaneEquation(t.a, p), s2 = PlaneEquation(t.b, p), s3 = PlaneEquation(t.c, p);
     if (CMP_EPS(s1, 0.0f) && CMP_EPS(s2, 0.0f) && CMP_EPS(s3, 0.0f)) return true;  // lies in the plane
@@ -206,6 +228,7 @@ bool TrianglePlane(const Triangle& t, const Plane& p) {
     return true;
 }
 
+/// SAT over normals, edge crosses and in-plane edge normals; coplanar and degenerate safe.
 bool TriangleTriangle(const Triangle& t1, const Triangle& t2) {
     // Book axes: both normals and the 9 edge crosses. Coplanar triangles make every edge cross parallel to
     // the shared normal, so the book misses in-plane separations; the in-plane edge normals n x e of both

@@ -40,22 +40,26 @@ bool IsDegenerate(const Triangle& t, const vec3& n) {
 
 }  // namespace
 
+/// True if the point is inside or on the sphere (world space); a zero radius contains only the centre.
 bool PointInSphere(const Point& point, const Sphere& sphere) {
     // The book uses a strict <; the surface counts as inside here, like PointInAABB/PointInOBB.
     return DistanceSq(point, sphere.position) <= sphere.radius * sphere.radius;
 }
 
+/// True if Dot(p, n) equals the plane distance within the book's FLT_EPSILON comparison.
 bool PointOnPlane(const Point& point, const Plane& plane) {
     // Book: CMP(Dot(p, n) - d, 0) with Geometry3D's FLT_EPSILON comparison, scaled by the magnitudes.
     return CMP_EPS(Dot(point, plane.normal), plane.distance);
 }
 
+/// True if the point is inside or on the box; a zero-size box contains only its centre.
 bool PointInAABB(const Point& point, const AABB& aabb) {
     const vec3 mn = GetMin(aabb), mx = GetMax(aabb);
     return point.x >= mn.x && point.y >= mn.y && point.z >= mn.z && point.x <= mx.x && point.y <= mx.y &&
            point.z <= mx.z;
 }
 
+/// True if |Dot(p - C, axis_i)| <= size_i on all three axes, exact (no epsilon), as the book.
 bool PointInOBB(const Point& point, const OBB& obb) {
     const vec3 dir = point - obb.position;
     for (int i = 0; i < 3; ++i) {
@@ -65,6 +69,7 @@ bool PointInOBB(const Point& point, const OBB& obb) {
     return true;
 }
 
+/// True if the point lies on the segment (squared distance within FLT_EPSILON * scale^2).
 bool PointOnLine(const Point& point, const Line& line) {
     const Point closest = ClosestOnSegment(line.start, line.end, point);
     // Squared distance within the book's FLT_EPSILON test, scaled by the coordinates' magnitude.
@@ -72,6 +77,7 @@ bool PointOnLine(const Point& point, const Line& line) {
     return DistanceSq(closest, point) <= FLT_EPSILON * s * s;
 }
 
+/// True if the point lies on the ray at t >= 0; the origin itself counts.
 bool PointOnRay(const Point& point, const Ray& ray) {
     if (point.x == ray.origin.x && point.y == ray.origin.y && point.z == ray.origin.z) return true;
     const Point closest = ClosestPoint(ray, point);
@@ -79,6 +85,7 @@ bool PointOnRay(const Point& point, const Ray& ray) {
     return DistanceSq(closest, point) <= FLT_EPSILON * s * s;
 }
 
+/// True if p lies in the triangle (on its plane, edges included); collinear corners: on a segment.
 bool PointInTriangle(const Point& p, const Triangle& t) {
     const vec3 n = Cross(t.b - t.a, t.c - t.a);
     if (IsDegenerate(t, n)) {
@@ -97,6 +104,7 @@ bool PointInTriangle(const Point& p, const Triangle& t) {
     return Dot(Cross(b, c), n) >= slack && Dot(Cross(c, a), n) >= slack && Dot(Cross(a, b), n) >= slack;
 }
 
+/// Nearest point of the sphere SURFACE; for the centre itself, the +X surface point.
 Point ClosestPoint(const Sphere& sphere, const Point& point) {
     vec3 dir = Normalized(point - sphere.position);
     // Coincident with the centre: every surface point is equally close; pick the +X one.
@@ -104,6 +112,7 @@ Point ClosestPoint(const Sphere& sphere, const Point& point) {
     return sphere.position + dir * sphere.radius;
 }
 
+/// Nearest point of the solid box: each axis clamped to its own range (erratum 5.2-9).
 Point ClosestPoint(const AABB& aabb, const Point& point) {
     // Erratum 5.2-9: the book clamps y and z against min.x / max.x; clamp each axis to its own range.
     const vec3 mn = GetMin(aabb), mx = GetMax(aabb);
@@ -112,6 +121,7 @@ Point ClosestPoint(const AABB& aabb, const Point& point) {
     return r;
 }
 
+/// Nearest point of the solid box: local coordinates clamped to +-size (axes assumed unit).
 Point ClosestPoint(const OBB& obb, const Point& point) {
     Point result = obb.position;
     const vec3 dir = point - obb.position;
@@ -124,6 +134,7 @@ Point ClosestPoint(const OBB& obb, const Point& point) {
     return result;
 }
 
+/// Orthogonal projection onto the plane (any nonzero normal length); a zero normal returns the point.
 Point ClosestPoint(const Plane& plane, const Point& point) {
     // Book: p - n (Dot(n, p) - d) for a unit n; dividing by |n|^2 also serves non-unit normals.
     const float nn = MagnitudeSq(plane.normal);
@@ -131,8 +142,10 @@ Point ClosestPoint(const Plane& plane, const Point& point) {
     return point - plane.normal * ((Dot(plane.normal, point) - plane.distance) / nn);
 }
 
+/// Nearest point of the segment (t clamped to [0, 1]); a zero-length segment gives its start.
 Point ClosestPoint(const Line& line, const Point& point) { return ClosestOnSegment(line.start, line.end, point); }
 
+/// Nearest point of the ray (t clamped to >= 0); a zero direction gives the origin.
 Point ClosestPoint(const Ray& ray, const Point& point) {
     const float dd = MagnitudeSq(ray.direction);
     if (!(dd > 0.0f)) return ray.origin;
@@ -140,6 +153,7 @@ Point ClosestPoint(const Ray& ray, const Point& point) {
     return ray.origin + ray.direction * t;
 }
 
+/// Nearest point of the solid triangle; a degenerate one is treated as its edges.
 Point ClosestPoint(const Triangle& t, const Point& p) {
     const vec3 n = Cross(t.b - t.a, t.c - t.a);
     if (IsDegenerate(t, n)) return ClosestOnTriangleEdges(t, p);
