@@ -177,7 +177,8 @@ std::array<Line, 12> GetEdges(const OBB& obb);
 std::array<Plane, 6> GetPlanes(const OBB& obb);
 /// Segment-plane intersection with t in [0, 1]; a segment parallel to the plane is rejected.
 bool ClipToPlane(const Plane& plane, const Line& line, Point* outPoint);
-/// Appends to `out` every intersection of the edges with obb's face planes that lies in the obb.
+/// Appends to `out` every intersection of the edges with obb's face planes that lies in the obb (within
+/// 1e-4 * max(1, largest half extent), erratum 5.2-5). Allocates only when `out` runs out of capacity.
 void ClipEdgesToOBB(const std::array<Line, 12>& edges, const OBB& obb, std::vector<Point>* out);
 /// Overlap of the two boxes' projections on `axis` (normalised inside), 0 if they do not overlap.
 /// *outShouldFlip is set when B's interval starts before A's (the axis must be negated to point A->B).
@@ -186,6 +187,8 @@ float PenetrationDepth(const OBB& o1, const OBB& o2, const vec3& axis, bool* out
 // ---- Collision manifolds, chapter 15 (Manifolds.cpp). Normal from A to B. ----------------------------
 /// depth = half the overlap, contact at A + n*(rA - depth) (erratum 5.2-1 fixed).
 CollisionManifold FindCollisionFeatures(const Sphere& A, const Sphere& B);
+/// Normal from the box surface to the sphere centre (centre inside: nearest face, erratum 5.2-32); depth = half
+/// the penetration; one contact.
 CollisionManifold FindCollisionFeatures(const OBB& A, const Sphere& B);
 /// SAT with A x B edge axes (5.2-2), no sign-losing zeroing (5.2-3); contacts from edge clipping projected
 /// onto the mid plane, duplicates removed. Coincident centres and deep overlaps give a finite manifold.
