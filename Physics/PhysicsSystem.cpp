@@ -20,7 +20,7 @@ void PhysicsSystem::Update(float deltaTime) {
     // a dt-free impulse after it), so every integrator sees them at its own intermediate states.
     if (hasVolumes) {
         FindCollisions();
-        ApplyVolumeForces();
+        ApplyVolumeForces(deltaTime);
         if (resultCount > 0) ApplyImpulses();
         IntegrateVolumes(deltaTime);
         if (DoLinearProjection && resultCount > 0) ApplyLinearProjection();

@@ -91,7 +91,8 @@ private:
 
     // ---- ch15: PhysicsSystemVolumes.cpp
     void FindCollisions();  ///< pair search over volumes only; fills results[0..resultCount)
-    void ApplyVolumeForces();
+    /// Gravity on every volume, turned into this step's velocity change before the impulses (ch15 note N1).
+    void ApplyVolumeForces(float dt);
     void ApplyImpulses();
     void IntegrateVolumes(float dt);
     void ApplyLinearProjection();

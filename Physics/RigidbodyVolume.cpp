@@ -28,7 +28,12 @@ bool IsIsotropic(const vec3& inertia) { return inertia.x == inertia.y && inertia
 void RigidbodyVolume::ApplyForces() { forces = gravity * mass; }
 
 void RigidbodyVolume::Update(float dt) {
-    // Book order (book.md 3.3): accelerate, damp per step, zero tiny components, then move.
+    IntegrateVelocity(dt);
+    IntegratePosition(dt);
+}
+
+void RigidbodyVolume::IntegrateVelocity(float dt) {
+    // Book order (book.md 3.3): accelerate, damp per step, zero tiny components.
     velocity += forces * InvMass() * dt;
     velocity *= damping;
     ZeroSmall(velocity, velocityEpsilon);
@@ -40,7 +45,9 @@ void RigidbodyVolume::Update(float dt) {
         angVel *= damping;
         ZeroSmall(angVel, velocityEpsilon);
     }
+}
 
+void RigidbodyVolume::IntegratePosition(float dt) {
     position += velocity * dt;
 
     // erratum 5.2-12: orientation is a quaternion advanced by the world-space angular velocity (exponential

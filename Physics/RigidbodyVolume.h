@@ -34,8 +34,13 @@ public:
 
     /// forces = gravity * mass (book: torques are never set).
     void ApplyForces() override;
-    /// Semi-implicit Euler step of dt seconds with the book's damping and thresholds, then syncs the volumes.
+    /// Semi-implicit Euler step of dt seconds with the book's damping and thresholds, then syncs the volumes:
+    /// IntegrateVelocity then IntegratePosition (the book's Update).
     void Update(float dt) override;
+    /// v += F/m dt, w += I^-1 torque dt, both damped and thresholded (the first half of the book's Update).
+    void IntegrateVelocity(float dt);
+    /// x += v dt, orientation advanced by w (momentum-preserving for anisotropic bodies), volumes synced.
+    void IntegratePosition(float dt);
     /// Copies position and orientation into `box` and `sphere`.
     void SynchCollisionVolumes();
     /// 0 for a static body (mass <= 0), else 1/mass.
