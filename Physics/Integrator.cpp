@@ -1,6 +1,198 @@
-// STUB (issue 4 replaces this file).
+// The five particle integrators (docs/ch14.md has the table). Hot loops use component arithmetic: the Math
+// library's vec3 operators are out-of-line calls.
 #include "Integrator.h"
 
-const char* ToString(Integrator) { return "euler"; }
-bool ParseIntegrator(const std::string&, Integrator*) { return false; }
-std::string IntegratorIds() { return "euler"; }
+#include "Particle.h"
+
+namespace {
+
+struct IdName {
+    Integrator integrator;
+    const char* id;
+};
+constexpr IdName kIds[] = {{Integrator::ExplicitEuler, "explicit-euler"},
+                           {Integrator::SemiImplicitEuler, "euler"},
+                           {Integrator::VelocityVerlet, "velocity-verlet"},
+                           {Integrator::PositionVerlet, "verlet"},
+                           {Integrator::RK4, "rk4"}};
+
+inline vec3 Add(const vec3& a, const vec3& b) { return vec3(a.x + b.x, a.y + b.y, a.z + b.z); }
+inline vec3 Scale(const vec3& a, float s) { return vec3(a.x * s, a.y * s, a.z * s); }
+/// a + b * s
+inline vec3 Mad(const vec3& a, const vec3& b, float s) { return vec3(a.x + b.x * s, a.y + b.y * s, a.z + b.z * s); }
+inline bool SameBits(const vec3& a, const vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+}  // namespace
+
+const char* ToString(Integrator integrator) {
+    for (const IdName& e : kIds)
+        if (e.integrator == integrator) return e.id;
+    return "unknown";
+}
+
+bool ParseIntegrator(const std::string& text, Integrator* out) {
+    for (const IdName& e : kIds)
+        if (text == e.id) {
+            if (out != nullptr) *out = e.integrator;
+            return true;
+        }
+    return false;
+}
+
+std::string IntegratorIds() {
+    std::string ids;
+    for (const IdName& e : kIds) {
+        if (!ids.empty()) ids += ", ";
+        ids += e.id;
+    }
+    return ids;
+}
+
+int ForceEvaluations(Integrator integrator) {
+    switch (integrator) {
+        case Integrator::VelocityVerlet:
+            return 2;
+        case Integrator::RK4:
+            return 4;
+        default:
+            return 1;
+    }
+}
+
+void IntegrateParticleStates(Integrator method, Particle* const* particles, std::size_t count,
+                             IntegratorScratch* scratch, float dt, ForceEvaluator evaluate, void* context) {
+    if (count == 0 || !(dt > 0.0f)) return;
+    const float halfDt = 0.5f * dt;
+    switch (method) {
+        case Integrator::ExplicitEuler:
+            // Forward Euler with the step's damping on the carried velocity: v0 = v f; x += v0 dt; v = v0 + a dt.
+            evaluate(context);
+            for (std::size_t i = 0; i < count; ++i) {
+                Particle& p = *particles[i];
+                const vec3 v0 = Scale(p.velocity, p.friction);
+                const vec3 a = Scale(p.forces, p.InvMass());
+                p.oldPosition = p.position;
+                p.position = Mad(p.position, v0, dt);
+                p.velocity = Mad(v0, a, dt);
+            }
+            break;
+
+        case Integrator::SemiImplicitEuler:
+            // The book's shipped Particle::Update: v = v f + a dt; x += v dt.
+            evaluate(context);
+            for (std::size_t i = 0; i < count; ++i) {
+                Particle& p = *particles[i];
+                const vec3 a = Scale(p.forces, p.InvMass());
+                p.oldPosition = p.position;
+                p.velocity = Mad(Scale(p.velocity, p.friction), a, dt);
+                p.position = Mad(p.position, p.velocity, dt);
+            }
+            break;
+
+        case Integrator::VelocityVerlet:
+            // x1 = x0 + v0 dt + a0 dt^2/2; a1 = a(x1, v0 + a0 dt); v1 = v0 + (a0 + a1) dt/2, with v0 = v f.
+            // Under constant force this is the book's "accurate Euler" (x += (v_old + v_new) dt/2).
+            evaluate(context);
+            for (std::size_t i = 0; i < count; ++i) {
+                Particle& p = *particles[i];
+                IntegratorScratch& s = scratch[i];
+                s.x0 = p.position;
+                s.v0 = Scale(p.velocity, p.friction);
+                s.a0 = Scale(p.forces, p.InvMass());
+                p.position = Mad(s.x0, Mad(s.v0, s.a0, halfDt), dt);
+                p.velocity = Mad(s.v0, s.a0, dt);  // predicted, for velocity-dependent forces
+            }
+            evaluate(context);
+            for (std::size_t i = 0; i < count; ++i) {
+                Particle& p = *particles[i];
+                const IntegratorScratch& s = scratch[i];
+                const vec3 a1 = Scale(p.forces, p.InvMass());
+                p.oldPosition = s.x0;
+                p.velocity = Mad(s.v0, Add(s.a0, a1), halfDt);
+            }
+            break;
+
+        case Integrator::PositionVerlet: {
+            // The book's Verlet, x1 = x0 + (x0 - x_prev) f + a0 dt^2, with the mass divided out (erratum
+            // 5.2-22: the book multiplies forces = g m by dt^2, so heavier particles fall faster). The history
+            // x0 - x_prev is kept in `velocity` (m/s at x0): x0 - x_prev = v dt - a_prev dt^2/2, where a_prev is
+            // the acceleration of the previous step (still in `forces`). This reproduces x_prev exactly after
+            // an undisturbed step, lets impulses, bounces and setters act on velocity as for every other
+            // integrator, and gives a second-order (Taylor) start for a fresh particle (oldPosition ==
+            // position after SetPosition or a constraint hit): there a_prev := a0, so x1 = x0 + v dt + a0 dt^2/2.
+            const float dtSq = dt * dt;
+            for (std::size_t i = 0; i < count; ++i)
+                scratch[i].a0 = Scale(particles[i]->forces, particles[i]->InvMass());
+            evaluate(context);
+            for (std::size_t i = 0; i < count; ++i) {
+                Particle& p = *particles[i];
+                const vec3 a = Scale(p.forces, p.InvMass());
+                const vec3 aPrev = SameBits(p.oldPosition, p.position) ? a : scratch[i].a0;
+                const vec3 history = Mad(Scale(p.velocity, dt), aPrev, -0.5f * dtSq);  // x0 - x_prev
+                const vec3 step = Mad(Scale(history, p.friction), a, dtSq);            // x1 - x0
+                p.oldPosition = p.position;
+                p.position = Add(p.position, step);
+                // Velocity at x1 to second order: the mean velocity over the step plus half the step's a dt. It
+                // is taken from the intended displacement, not from the rounded positions, so float rounding
+                // of large positions does not random-walk into the velocity (plain Verlet's weakness in float).
+                p.velocity = Mad(Scale(step, 1.0f / dt), a, halfDt);
+            }
+            break;
+        }
+
+        case Integrator::RK4: {
+            // Classical RK4 on (x, v) from (x0, v0 = v f): k_x = v, k_v = a(x, v) at t, t+dt/2 (twice), t+dt.
+            const float sixthDt = dt / 6.0f;
+            for (std::size_t i = 0; i < count; ++i) {
+                Particle& p = *particles[i];
+                IntegratorScratch& s = scratch[i];
+                s.x0 = p.position;
+                s.v0 = Scale(p.velocity, p.friction);
+                p.velocity = s.v0;
+            }
+            evaluate(context);  // k1 at (x0, v0)
+            for (std::size_t i = 0; i < count; ++i) {
+                Particle& p = *particles[i];
+                IntegratorScratch& s = scratch[i];
+                const vec3 kv = Scale(p.forces, p.InvMass());
+                s.sumX = s.v0;
+                s.sumV = kv;
+                p.position = Mad(s.x0, s.v0, halfDt);
+                p.velocity = Mad(s.v0, kv, halfDt);
+            }
+            evaluate(context);  // k2 at the midpoint predicted by k1
+            for (std::size_t i = 0; i < count; ++i) {
+                Particle& p = *particles[i];
+                IntegratorScratch& s = scratch[i];
+                const vec3 kx = p.velocity;
+                const vec3 kv = Scale(p.forces, p.InvMass());
+                s.sumX = Mad(s.sumX, kx, 2.0f);
+                s.sumV = Mad(s.sumV, kv, 2.0f);
+                p.position = Mad(s.x0, kx, halfDt);
+                p.velocity = Mad(s.v0, kv, halfDt);
+            }
+            evaluate(context);  // k3 at the midpoint predicted by k2
+            for (std::size_t i = 0; i < count; ++i) {
+                Particle& p = *particles[i];
+                IntegratorScratch& s = scratch[i];
+                const vec3 kx = p.velocity;
+                const vec3 kv = Scale(p.forces, p.InvMass());
+                s.sumX = Mad(s.sumX, kx, 2.0f);
+                s.sumV = Mad(s.sumV, kv, 2.0f);
+                p.position = Mad(s.x0, kx, dt);
+                p.velocity = Mad(s.v0, kv, dt);
+            }
+            evaluate(context);  // k4 at the end predicted by k3
+            for (std::size_t i = 0; i < count; ++i) {
+                Particle& p = *particles[i];
+                const IntegratorScratch& s = scratch[i];
+                const vec3 kx = p.velocity;
+                const vec3 kv = Scale(p.forces, p.InvMass());
+                p.oldPosition = s.x0;
+                p.position = Mad(s.x0, Add(s.sumX, kx), sixthDt);
+                p.velocity = Mad(s.v0, Add(s.sumV, kv), sixthDt);
+            }
+            break;
+        }
+    }
+}

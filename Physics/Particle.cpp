@@ -1,10 +1,153 @@
-// STUB (issue 4 replaces this file).
+// Particle state, the book's single-particle step, and constraint solving against immovable OBBs
+// (book.md 3.2), with the book's failure modes fixed: see docs/errata/ch14.md.
 #include "Particle.h"
 
+#include <cfloat>
+#include <cmath>
+
+namespace {
+
+inline float Dot3(const vec3& a, const vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+/// Where the segment travelled this step first meets a box, in world space.
+struct SegmentHit {
+    float t = FLT_MAX;  ///< fraction of the segment at the entry; -1 when the start was already inside
+    vec3 point;         ///< on the box surface
+    vec3 normal;        ///< outward unit face normal
+};
+
+/// The book's Linetest + Raycast from oldPosition fused into one slab clip in the box's frame: the segment
+/// p0 -> p0 + delta against the solid box. Never normalises anything, so a zero-length segment (a particle at
+/// rest, erratum 5.2-6) is just a point test. A start inside (or on) the box is pushed out through the
+/// nearest face (t = -1). Returns false when the closed segment misses the box.
+bool ClipSegment(const OBB& box, const vec3& p0, const vec3& delta, SegmentHit* out) {
+    const vec3 rel(p0.x - box.position.x, p0.y - box.position.y, p0.z - box.position.z);
+    const float* m = box.orientation.asArray;
+    float tEnter = -FLT_MAX, tExit = FLT_MAX;
+    int enterAxis = -1;
+    float enterSign = 1.0f;
+    bool inside = true;
+    float s[3];
+    for (int i = 0; i < 3; ++i) {
+        const vec3 axis(m[3 * i], m[3 * i + 1], m[3 * i + 2]);
+        const float e = std::fabs(box.size[i]);
+        s[i] = Dot3(rel, axis);
+        const float d = Dot3(delta, axis);
+        if (std::fabs(s[i]) > e) inside = false;
+        // Parallel to this slab (or no motion): the start's offset alone decides.
+        if (std::fabs(d) < 1e-20f) {
+            if (std::fabs(s[i]) > e) return false;
+            continue;
+        }
+        const float inv = 1.0f / d;
+        float tNear = (-e - s[i]) * inv, tFar = (e - s[i]) * inv;
+        if (tNear > tFar) {
+            const float tmp = tNear;
+            tNear = tFar;
+            tFar = tmp;
+        }
+        if (tNear > tEnter) {
+            tEnter = tNear;
+            enterAxis = i;
+            enterSign = d > 0.0f ? -1.0f : 1.0f;  // the face met first faces against the travel
+        }
+        if (tFar < tExit) tExit = tFar;
+    }
+    if (inside) {
+        // Nearest face of the start point (smallest distance to a face plane).
+        int best = 0;
+        float bestGap = FLT_MAX;
+        for (int i = 0; i < 3; ++i) {
+            const float gap = std::fabs(box.size[i]) - std::fabs(s[i]);
+            if (gap < bestGap) {
+                bestGap = gap;
+                best = i;
+            }
+        }
+        const vec3 axis(m[3 * best], m[3 * best + 1], m[3 * best + 2]);
+        const float sign = s[best] < 0.0f ? -1.0f : 1.0f;
+        const float push = sign * std::fabs(box.size[best]) - s[best];
+        out->t = -1.0f;
+        out->normal = vec3(axis.x * sign, axis.y * sign, axis.z * sign);
+        out->point = vec3(p0.x + axis.x * push, p0.y + axis.y * push, p0.z + axis.z * push);
+        return true;
+    }
+    if (enterAxis < 0 || !(tEnter <= tExit) || !(tEnter >= 0.0f) || !(tEnter <= 1.0f)) return false;
+    const vec3 axis(m[3 * enterAxis], m[3 * enterAxis + 1], m[3 * enterAxis + 2]);
+    out->t = tEnter;
+    out->normal = vec3(axis.x * enterSign, axis.y * enterSign, axis.z * enterSign);
+    out->point = vec3(p0.x + delta.x * tEnter, p0.y + delta.y * tEnter, p0.z + delta.z * tEnter);
+    return true;
+}
+
+inline bool SegmentMissesBounds(const vec3& a, const vec3& b, const ParticleConstraint& c) {
+    return std::fmax(a.x, b.x) < c.boundsMin.x || std::fmin(a.x, b.x) > c.boundsMax.x ||
+           std::fmax(a.y, b.y) < c.boundsMin.y || std::fmin(a.y, b.y) > c.boundsMax.y ||
+           std::fmax(a.z, b.z) < c.boundsMin.z || std::fmin(a.z, b.z) > c.boundsMax.z;
+}
+
+}  // namespace
+
+ParticleConstraint PrepareParticleConstraint(const OBB& box) {
+    ParticleConstraint c;
+    c.box = box;
+    const float* m = box.orientation.asArray;
+    for (int w = 0; w < 3; ++w) {
+        // World half-extent along axis w: sum over local axes of |axis_i[w]| * size_i.
+        float extent = 0.0f;
+        for (int i = 0; i < 3; ++i) extent += std::fabs(m[3 * i + w]) * std::fabs(box.size[i]);
+        c.boundsMin[w] = box.position[w] - extent;
+        c.boundsMax[w] = box.position[w] + extent;
+    }
+    return c;
+}
+
 Particle::Particle() : Rigidbody(RigidbodyType::Particle) {}
+
 void Particle::ApplyForces() { forces = gravity * mass; }
-void Particle::Update(float) {}
-void Particle::SolveConstraints(const std::vector<OBB>&) {}
+
+void Particle::Update(float dt) {
+    // The book's shipped EULER_INTEGRATION step (semi-implicit Euler with per-step damping).
+    oldPosition = position;
+    const vec3 acceleration = forces * InvMass();
+    velocity = velocity * friction + acceleration * dt;
+    position = position + velocity * dt;
+}
+
+void Particle::SolveConstraints(const std::vector<OBB>& constraints) {
+    SegmentHit best, hit;
+    const vec3 delta = position - oldPosition;
+    for (const OBB& box : constraints)
+        if (ClipSegment(box, oldPosition, delta, &hit) && hit.t < best.t) best = hit;
+    if (best.t == FLT_MAX) return;
+    ResolveHit(best.point, best.normal);
+}
+
+void Particle::SolveConstraints(const ParticleConstraint* constraints, std::size_t count) {
+    SegmentHit best, hit;
+    const vec3 delta(position.x - oldPosition.x, position.y - oldPosition.y, position.z - oldPosition.z);
+    for (std::size_t i = 0; i < count; ++i) {
+        if (SegmentMissesBounds(oldPosition, position, constraints[i])) continue;
+        if (ClipSegment(constraints[i].box, oldPosition, delta, &hit) && hit.t < best.t) best = hit;
+    }
+    if (best.t == FLT_MAX) return;
+    ResolveHit(best.point, best.normal);
+}
+
+void Particle::ResolveHit(const vec3& point, const vec3& normal) {
+    // Book: place the particle just off the surface, reflect the normal part of the velocity with `bounce`
+    // and keep the tangential part. Only an approaching normal part is reflected (a particle pushed out of a
+    // box while already leaving keeps its velocity). oldPosition = position: the next segment starts here.
+    position = vec3(point.x + normal.x * kContactOffset, point.y + normal.y * kContactOffset,
+                    point.z + normal.z * kContactOffset);
+    oldPosition = position;
+    const float vn = Dot3(velocity, normal);
+    if (vn < 0.0f) {
+        const float change = -(1.0f + bounce) * vn;  // vt - e vn = v - (1 + e) vn
+        velocity = vec3(velocity.x + normal.x * change, velocity.y + normal.y * change, velocity.z + normal.z * change);
+    }
+}
+
 void Particle::SetPosition(const vec3& pos) { position = oldPosition = pos; }
 void Particle::AddImpulse(const vec3& impulse) { velocity += impulse; }
 float Particle::InvMass() const { return mass == 0.0f ? 0.0f : 1.0f / mass; }

@@ -2,23 +2,39 @@
 // A point mass with no volume (book.md 3.2): falls under gravity, bounces off OBB constraints, never
 // tunnels. `friction` is the book's per-step velocity damping factor, not contact friction.
 
+#include <cstddef>
 #include <vector>
 
 #include "Geometry3D.h"
 #include "Integrator.h"
 #include "Rigidbody.h"
 
+/// An OBB constraint prepared once per step for particle tests: its world AABB (a cheap reject) and the box.
+struct ParticleConstraint {
+    OBB box;
+    vec3 boundsMin, boundsMax;
+};
+/// Copies the box and computes its world-space AABB (half-extents projected on the world axes).
+ParticleConstraint PrepareParticleConstraint(const OBB& box);
+
 class Particle : public Rigidbody {
 public:
+    /// Distance (m) a resolved particle is put off the surface (the repo's 0.003; erratum 5.1-7).
+    static constexpr float kContactOffset = 0.003f;
+
     Particle();
 
     /// forces = gravity * mass (the repo's fix of erratum 5.1-6).
     void ApplyForces() override;
     /// One step with the book's shipped integrator (semi-implicit Euler) using the current `forces`.
     void Update(float dt) override;
-    /// Line-tests the segment travelled this step against each OBB in order; on the first hit the particle
-    /// is put 0.003 m off the surface and the normal part of its velocity reflected with `bounce`.
+    /// Tests the segment travelled this step (oldPosition -> position, world space) against every OBB and
+    /// resolves the earliest hit: the particle is put kContactOffset off the surface and the approaching normal
+    /// part of its velocity reflected with `bounce`. A start inside a box leaves through the nearest face; a
+    /// zero-length segment is a point test (no NaN). At most one box per call, as the book.
     void SolveConstraints(const std::vector<OBB>& constraints) override;
+    /// The same on prepared constraints (PhysicsSystem's per-step path: AABB reject, no per-box setup).
+    void SolveConstraints(const ParticleConstraint* constraints, std::size_t count);
 
     /// Sets position and oldPosition (the particle is at rest in the travelled-segment sense).
     void SetPosition(const vec3& pos);
@@ -44,6 +60,8 @@ public:
 
 protected:
     friend class PhysicsSystem;
+    friend void IntegrateParticleStates(Integrator, Particle* const*, std::size_t, IntegratorScratch*, float,
+                                        ForceEvaluator, void*);
     vec3 position;
     vec3 oldPosition;
     vec3 velocity;
@@ -52,4 +70,7 @@ protected:
     float friction = 0.95f;
     float bounce = 0.7f;
     float mass = 1.0f;
+
+private:
+    void ResolveHit(const vec3& point, const vec3& normal);
 };

@@ -19,6 +19,7 @@
 #include "Rigidbody.h"
 
 class Particle;
+struct ParticleConstraint;
 class RigidbodyVolume;
 class Spring;
 class Cloth;
@@ -114,6 +115,8 @@ private:
     std::vector<OBB> constraints;
     std::vector<Spring> springs;
     std::vector<Particle*> allParticles;  // free particles then every cloth's particles
+    std::vector<IntegratorScratch> integratorScratch;  // ch14: one per allParticles entry, grown only
+    std::vector<ParticleConstraint> preparedConstraints;  // ch14: constraints with AABBs, rebuilt per step
 
     std::vector<CollisionPair> results;  // capacity reused; only [0, resultCount) is valid
     std::size_t resultCount = 0;

@@ -1,7 +1,36 @@
-// STUB (issue 4 replaces this file): particle stages of PhysicsSystem.
+// Chapter 14 stages of PhysicsSystem: particle forces, integration (Integrator.cpp) and constraint solving.
+// A particle-only step touches each particle a fixed number of times and allocates nothing once the scratch
+// arrays have grown to the particle and constraint counts.
+#include "Cloth.h"
 #include "Particle.h"
 #include "PhysicsSystem.h"
 
-void PhysicsSystem::IntegrateParticles(float) {}
-void PhysicsSystem::AccumulateParticleForces() {}
-void PhysicsSystem::SolveParticleConstraints() {}
+void PhysicsSystem::AccumulateParticleForces() {
+    // Gravity * mass (erratum 5.1-6), then springs (ch16) add to it.
+    for (Particle* p : allParticles) {
+        const float m = p->mass;
+        p->forces = vec3(p->gravity.x * m, p->gravity.y * m, p->gravity.z * m);
+    }
+    if (!springs.empty() || !cloths.empty()) AccumulateSpringForces();
+}
+
+void PhysicsSystem::IntegrateParticles(float dt) {
+    if (integratorScratch.size() < allParticles.size()) integratorScratch.resize(allParticles.size());
+    ForceEvaluator evaluate = [](void* self) { static_cast<PhysicsSystem*>(self)->AccumulateParticleForces(); };
+    IntegrateParticleStates(integrator, allParticles.data(), allParticles.size(), integratorScratch.data(), dt,
+                            evaluate, this);
+}
+
+void PhysicsSystem::SolveParticleConstraints() {
+    if (!constraints.empty()) {
+        if (preparedConstraints.size() != constraints.size()) preparedConstraints.resize(constraints.size());
+        for (std::size_t i = 0; i < constraints.size(); ++i)
+            preparedConstraints[i] = PrepareParticleConstraint(constraints[i]);
+        for (Particle* p : particles) p->SolveConstraints(preparedConstraints.data(), preparedConstraints.size());
+    }
+    // Joints move their particles and re-solve them against `constraints` themselves.
+    if (!joints.empty()) SolveJoints();
+    if (!constraints.empty())
+        for (std::size_t i = particles.size(); i < allParticles.size(); ++i)
+            allParticles[i]->SolveConstraints(preparedConstraints.data(), preparedConstraints.size());
+}

@@ -1,0 +1,61 @@
+#include "Ch14Scene.h"
+
+#include <cmath>
+
+#include "Random.h"
+
+Ch14Scene::Ch14Scene(const Ch14Params& p) { Reset(p); }
+
+std::array<OBB, 4> Ch14Scene::Constraints() {
+    // book.md 2.1: positions, Rotation3x3(pitch, yaw, roll) in degrees, half-sizes.
+    OBB ground(vec3(0.0f, 0.0f, 0.0f), vec3(10.0f, 0.15f, 10.0f));
+    OBB obb1(vec3(0.0f, 1.86f, -1.92f), vec3(2.0f, 0.15f, 2.0f), Rotation3x3(30.716f, 0.0f, 0.0f));
+    OBB obb2(vec3(-1.0f, 3.6f, 1.2f), vec3(2.0f, 0.15f, 2.0f), Rotation3x3(-33.964f, -24.233f, 9.128f));
+    OBB obb3(vec3(0.0f, 3.93f, -2.27f), vec3(2.0f, 0.15f, 0.7817011f), Rotation3x3(24.702f, 0.0f, 0.0f));
+    return {ground, obb1, obb2, obb3};
+}
+
+void Ch14Scene::Reset(const Ch14Params& p) {
+    params = p;
+    if (params.particles < 1) params.particles = 1;
+    if (!(params.dt > 0.0f) || !std::isfinite(params.dt)) params.dt = Ch14Params().dt;
+    system = std::make_unique<PhysicsSystem>();
+    system->integrator = params.integrator;
+    for (const OBB& box : Constraints()) system->AddConstraint(box);
+
+    bodies.clear();
+    bodies.reserve(static_cast<std::size_t>(params.particles));
+    MsvcRand random(params.seed);
+    const vec3 lo(kSpawnCenter.x - kSpawnHalfSize.x, kSpawnCenter.y - kSpawnHalfSize.y,
+                  kSpawnCenter.z - kSpawnHalfSize.z);
+    const vec3 hi(kSpawnCenter.x + kSpawnHalfSize.x, kSpawnCenter.y + kSpawnHalfSize.y,
+                  kSpawnCenter.z + kSpawnHalfSize.z);
+    for (int i = 0; i < params.particles; ++i) {
+        // The book's call order per particle: x, y, z, then bounce (separate statements, so the order is fixed).
+        const float x = random.Range(lo.x, hi.x);
+        const float y = random.Range(lo.y, hi.y);
+        const float z = random.Range(lo.z, hi.z);
+        const float bounce = random.Range(0.0f, 1.0f);
+        bodies.emplace_back();
+        bodies.back().SetPosition(vec3(x, y, z));
+        bodies.back().SetBounce(bounce);
+    }
+    for (Particle& particle : bodies) system->AddRigidbody(&particle);
+}
+
+void Ch14Scene::Step() {
+    system->Update(params.dt);
+    for (Particle& particle : bodies) {
+        const vec3 pos = particle.GetPosition();
+        if (pos.y < kFloorClamp) particle.SetPosition(vec3(pos.x, kFloorClamp, pos.z));
+    }
+}
+
+void Ch14Scene::SetIntegrator(Integrator integrator) {
+    params.integrator = integrator;
+    system->integrator = integrator;
+}
+
+void Ch14Scene::SetDt(float dt) {
+    if (dt > 0.0f && std::isfinite(dt)) params.dt = dt;
+}
