@@ -184,6 +184,9 @@ ParseStatus ParseCommandLine(int argc, const char* const* argv, Options* o, std:
                 if (!ParseLong(value, &n) || n < 0 || n > 100000000)
                     return bad("expected a frame interval (0 = automatic)");
                 o->progressEvery = int(n);
+            } else if (flag == "--debug-nonfinite-at") {
+                if (!ParseLong(value, &n) || n < 0) return bad("expected a frame number");
+                o->debugNonFiniteAt = int(n);
             }
         }
     }

@@ -40,6 +40,9 @@ struct Options {
     bool encodeThread = true;  ///< --serial-encode turns it off (same files, slower)
     int progressEvery = 0;     ///< 0 = automatic (see docs/app.md)
     bool quiet = false;
+    /// Test hook: report frame N as non-finite (exercises the exit-3 path; DemoBase::StateIsFinite is the
+    /// real check). -1 = off.
+    int debugNonFiniteAt = -1;
 };
 
 enum class ParseStatus { Ok, Error };

@@ -40,7 +40,8 @@ bool EncodeRows(const Image& img, const PngOptions& options, WriteTarget* target
     }
     png_set_write_fn(png, target, AppendBytes, NoFlush);
     png_set_compression_level(png, options.level);
-    png_set_filter(png, PNG_FILTER_TYPE_BASE, options.adaptive ? PNG_ALL_FILTERS : PNG_FILTER_SUB);
+    static const int kFilters[] = {PNG_FILTER_NONE, PNG_FILTER_SUB, PNG_FILTER_UP, PNG_ALL_FILTERS};
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, kFilters[int(options.filter)]);
     png_set_IHDR(png, info, png_uint_32(img.width), png_uint_32(img.height), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
     png_write_info(png, info);

@@ -7,12 +7,15 @@
 
 #include "Image.h"
 
-/// Encoder settings. The defaults were chosen by measurement (bench/render_bench.cpp, docs/app.md):
-/// zlib level 1 with the Sub filter only encodes a book frame several times faster than libpng's adaptive
-/// filter selection or stb_image_write, for files a little larger.
+/// Row filter: one fixed filter for every row, or libpng's per-row adaptive choice (much slower).
+enum class PngFilter { None, Sub, Up, Adaptive };
+
+/// Encoder settings. The defaults were chosen by measurement (bench/render_bench.cpp, docs/app.md): zlib
+/// level 1 with one fixed row filter encodes a frame several times faster than libpng's adaptive filter
+/// choice or stb_image_write, for files of about the same size.
 struct PngOptions {
-    int level = 1;          ///< zlib level 0..9
-    bool adaptive = false;  ///< false: Sub filter on every row; true: libpng's per-row adaptive choice
+    int level = 1;  ///< zlib level 0..9
+    PngFilter filter = PngFilter::Up;
 };
 
 /// Encodes img as an 8-bit RGB PNG into *out (replacing its contents). Output depends only on img and

@@ -29,13 +29,13 @@ std::string TempDir() {
 TEST(PngCodec, RoundTripIsLosslessAtEveryLevelAndFilterMode) {
     const Image img = Pattern(37, 23);  // odd sizes: no row alignment assumptions
     for (int level : {0, 1, 6, 9}) {
-        for (bool adaptive : {false, true}) {
+        for (PngFilter filter : {PngFilter::None, PngFilter::Sub, PngFilter::Up, PngFilter::Adaptive}) {
             std::vector<std::uint8_t> bytes;
             std::string error;
-            ASSERT_TRUE(EncodePng(img, {level, adaptive}, &bytes, &error)) << error;
+            ASSERT_TRUE(EncodePng(img, {level, filter}, &bytes, &error)) << error;
             Image back;
             ASSERT_TRUE(DecodePng(bytes, &back, &error)) << error;
-            EXPECT_TRUE(back == img) << "level " << level << " adaptive " << adaptive;
+            EXPECT_TRUE(back == img) << "level " << level << " filter " << int(filter);
         }
     }
 }

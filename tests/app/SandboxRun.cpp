@@ -1,0 +1,67 @@
+#include "SandboxRun.h"
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+std::string Quote(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+}  // namespace
+
+std::string ReadText(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+std::string ScratchDir(const std::string& name) {
+    const std::string dir = ::testing::TempDir() + "psb_app_" + std::to_string(getpid()) + "_" + name;
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+SandboxResult RunSandboxExe(const std::vector<std::string>& args) {
+    const std::string dir = ScratchDir("run_capture");
+    std::string command = Quote(PSB_SANDBOX_EXE);
+    for (const std::string& a : args) command += " " + Quote(a);
+    command += " >" + Quote(dir + "/out") + " 2>" + Quote(dir + "/err") + " </dev/null";
+    const int status = std::system(command.c_str());
+    SandboxResult r;
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = ReadText(dir + "/out");
+    r.err = ReadText(dir + "/err");
+    std::filesystem::remove_all(dir);
+    return r;
+}
+
+std::vector<std::string> ListDemoIds() {
+    const SandboxResult r = RunSandboxExe({"--list"});
+    std::vector<std::string> ids;
+    std::istringstream lines(r.out);
+    std::string line;
+    while (std::getline(lines, line)) ids.push_back(line.substr(0, line.find('\t')));
+    return ids;
+}
+
+std::vector<std::string> FilesIn(const std::string& dir) {
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(dir, ec))
+        if (e.is_regular_file()) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
