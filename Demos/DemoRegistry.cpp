@@ -1,11 +1,17 @@
 #include "DemoRegistry.h"
 
+#include "CH15Demo.h"
+#include "ConservationOfMomentum.h"
 #include "DemoBase.h"
+#include "LinearImpulse.h"
 // Each demo adds its include and one row below, in the book's list order.
 
 const std::vector<DemoInfo>& AllDemos() {
     static const std::vector<DemoInfo> demos = {
         // {"raycast", "Raycast Demo", [] { return std::make_unique<RaycastDemo>(); }},
+        {"linear-impulse", "Linear Impulse", [] { return std::make_unique<LinearImpulse>(); }},
+        {"momentum", "Conservation Of Momentum", [] { return std::make_unique<ConservationOfMomentum>(); }},
+        {"ch15", "Chapter 15", [] { return std::make_unique<CH15Demo>(); }},
     };
     return demos;
 }

@@ -1,0 +1,63 @@
+#include "CH15Demo.h"
+
+#include <glad/gl.h>
+#include <imgui.h>
+
+#include "FixedFunctionPhysics.h"
+#include "FixedFunctionPrimitives.h"
+
+CH15Demo::CH15Demo() { scene.AddParameters(&params); }
+
+void CH15Demo::Initialize(int width, int height) {
+    DemoBase::Initialize(width, height);
+    camera.SetTarget(vec3(3.75622f, 2.98255f, 0.0f));
+    camera.SetZoom(12.0f);
+    camera.SetRotation(vec2(-67.9312f, 19.8f));
+    glPointSize(5.0f);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    scene.Reset();
+}
+
+void CH15Demo::Render() {
+    DemoBase::Render();
+    SetLightDirection(vec3(0.0f, 1.0f, 0.0f));
+    ::Render(scene.System());
+}
+
+void CH15Demo::Update(float dt) {
+    DemoBase::Update(dt);
+    scene.Step(dt);
+}
+
+void CH15Demo::ImGUI() {
+    // book.md 2.5; the book's PushItemWidth calls are popped here (erratum 5.2-26).
+    Ch15Params& p = scene.Params();
+    ImGui::SetNextWindowPos(ImVec2(400.0f, 10.0f), ImGuiCond_Once);
+    ImGui::SetNextWindowSize(ImVec2(370.0f, 75.0f), ImGuiCond_Always);
+    ImGui::Begin("Chapter 15 Demo", nullptr, ImGuiWindowFlags_NoResize);
+    ImGui::PushItemWidth(55.0f);
+    ImGui::SliderFloat("Porjection", &p.projection, 0.2f, 0.8f);
+    ImGui::PopItemWidth();
+    ImGui::SameLine();
+    ImGui::PushItemWidth(55.0f);
+    ImGui::SliderFloat("Slop", &p.slop, 0.01f, 0.1f);
+    ImGui::PopItemWidth();
+    ImGui::SameLine();
+    ImGui::PushItemWidth(55.0f);
+    ImGui::SliderInt("Iteration", &p.iterations, 1, 20);
+    ImGui::PopItemWidth();
+    if (ImGui::Button("Reset")) scene.Reset();
+    ImGui::SameLine();
+    ImGui::Checkbox("Debug Render", &p.debug);
+    ImGui::SameLine();
+    ImGui::Checkbox("Linear Projection", &p.linearProjection);
+    ImGui::End();
+    DemoBase::ImGUI();
+}
+
+void CH15Demo::CollectState(std::vector<BodyState>* out) const {
+    const std::vector<RigidbodyVolume>& bodies = scene.Bodies();
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+        out->push_back({static_cast<int>(i), "box", bodies[i].position, bodies[i].velocity});
+}

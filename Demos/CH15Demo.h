@@ -1,0 +1,26 @@
+#pragma once
+// Chapter 15 (book.md 2.5): two boxes stacking on a ground slab, with the solver panel.
+
+#include "Ch15Scene.h"
+#include "DemoBase.h"
+
+class CH15Demo : public DemoBase {
+public:
+    /// Registers the panel values (projection, slop, iterations, linear-projection, debug, reset).
+    CH15Demo();
+    /// Camera target (3.75622, 2.98255, 0), zoom 12, rotation (-67.9312, 19.8); point size 5; the scene.
+    void Initialize(int width, int height) override;
+    /// Origin, light (0, 1, 0, 0), then the physics system (random colours; edges and manifolds if debug).
+    void Render() override;
+    /// Camera, then one physics step of dt.
+    void Update(float dt) override;
+    /// "Chapter 15 Demo": Porjection / Slop / Iteration sliders, Reset, Debug Render, Linear Projection.
+    void ImGUI() override;
+    /// One "box" row per body.
+    void CollectState(std::vector<BodyState>* out) const override;
+
+    const Ch15Scene& Scene() const { return scene; }
+
+private:
+    Ch15Scene scene;
+};

@@ -1,0 +1,61 @@
+#include "LinearImpulse.h"
+
+#include <glad/gl.h>
+#include <imgui.h>
+
+#include "FixedFunctionPhysics.h"
+#include "FixedFunctionPrimitives.h"
+
+LinearImpulse::LinearImpulse() { scene.AddParameters(&params); }
+
+void LinearImpulse::Initialize(int width, int height) {
+    DemoBase::Initialize(width, height);
+    camera.SetTarget(vec3(3.75622f, 2.98255f, 0.0f));
+    camera.SetZoom(9.0f);
+    camera.SetRotation(vec2(-67.9312f, 19.8f));
+    glPointSize(5.0f);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    scene.Reset();
+}
+
+void LinearImpulse::Render() {
+    DemoBase::Render();
+    SetLightDirection(vec3(0.0f, 1.0f, 0.0f));
+    ::Render(scene.System());
+}
+
+void LinearImpulse::Update(float dt) {
+    DemoBase::Update(dt);
+    scene.Update(dt);
+}
+
+void LinearImpulse::ImGUI() {
+    // book.md 2.3; the PushItemWidth is popped here (erratum 5.2-26).
+    LinearImpulseParams& p = scene.Params();
+    ImGui::SetNextWindowPos(ImVec2(400.0f, 10.0f), ImGuiCond_Once);
+    ImGui::SetNextWindowSize(ImVec2(370.0f, 100.0f), ImGuiCond_Always);
+    ImGui::Begin("Linear Impulse Demo", nullptr, ImGuiWindowFlags_NoResize);
+    if (ImGui::Button("Step")) scene.RequestSteps();
+    ImGui::SameLine();
+    ImGui::PushItemWidth(100.0f);
+    if (ImGui::InputInt("Frames", &p.frames) && p.frames < 1) p.frames = 1;
+    ImGui::PopItemWidth();
+    ImGui::SameLine();
+    if (ImGui::Button("Reset")) scene.Reset();
+    ImGui::SameLine();
+    ImGui::Checkbox("Pause", &p.pause);
+    if (ImGui::Checkbox("Spheres", &p.spheres)) scene.Reset();
+    ImGui::SameLine();
+    if (ImGui::Checkbox("Drop", &p.drop)) scene.Reset();
+    ImGui::End();
+    DemoBase::ImGUI();
+}
+
+void LinearImpulse::CollectState(std::vector<BodyState>* out) const {
+    const std::vector<RigidbodyVolume>& bodies = scene.Bodies();
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const char* kind = bodies[i].type == RigidbodyType::Sphere ? "sphere" : "box";
+        out->push_back({static_cast<int>(i), kind, bodies[i].position, bodies[i].velocity});
+    }
+}
