@@ -3,6 +3,7 @@
 // out of Physics/ so that physics never includes GL. Colour table of book.md 1.5.
 
 #include "Cloth.h"
+#include "DistanceJoint.h"
 #include "Particle.h"
 #include "PhysicsSystem.h"
 #include "RigidbodyVolume.h"
@@ -17,10 +18,13 @@ constexpr vec3 kConstraintDiffuse{0.0f, 200.0f / 255.0f, 0.0f};
 constexpr vec3 kConstraintAmbient{50.0f / 255.0f, 200.0f / 255.0f, 50.0f / 255.0f};
 }  // namespace BookColors
 
-/// A red sphere of radius 0.1 at the particle.
+/// A sphere of radius 0.1 at the particle, in the current light colours (PhysicsSystem sets red).
 void Render(const Particle& particle);
-/// Sphere or box of the body (collision volumes synced first).
+/// Sphere or box of the body at its current position and orientation (as after SynchCollisionVolumes),
+/// in the current light colours.
 void Render(const RigidbodyVolume& body);
+/// A line between the joint's two particles (lit, as in the book); nothing if a particle is missing.
+void Render(const DistanceJoint& joint);
 /// debug: particles and magenta/yellow/cyan spring lines; otherwise red one-sided triangles.
 void Render(const Cloth& cloth, bool debug);
 /// The book's PhysicsSystem::Render (book.md 3.4): bodies (random colours if RenderRandomColors), constraint 0

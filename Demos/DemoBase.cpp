@@ -1,0 +1,76 @@
+#include "DemoBase.h"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "FixedFunctionPrimitives.h"
+
+DemoBase::DemoBase() = default;
+
+void DemoBase::Initialize(int width, int height) { Resize(width, height); }
+
+void DemoBase::Resize(int width, int height) {
+    const float w = static_cast<float>(width > 0 ? width : 1);
+    const float h = static_cast<float>(height > 0 ? height : 1);
+    camera.Perspective(60.0f, w / h, 0.01f, 1000.0f);
+    size = vec2(w, h);
+}
+
+void DemoBase::Render() { FixedFunctionOrigin(); }
+
+void DemoBase::Update(float dt) {
+    // One mouse button at a time, right before middle before left (book.md 1.1).
+    if (mouseRightDown)
+        camera.Rotate(mouseDelta, dt);
+    else if (mouseMiddleDown)
+        camera.Zoom(mouseDelta.y, dt);
+    else if (mouseLeftDown)
+        camera.Pan(mouseDelta, dt);
+    camera.Update(dt);
+}
+
+void DemoBase::ImGUI() {
+    if (!show_help) return;
+    if (configHelpWindow) {
+        ImGui::SetNextWindowPos(ImVec2(400.0f, 90.0f));
+        ImGui::SetNextWindowSize(ImVec2(370.0f, 100.0f));
+        configHelpWindow = false;
+    }
+    ImGui::Begin("How to use", &show_help, ImGuiWindowFlags_NoResize);
+    ImGui::Text("A 3 button mouse is needed to navigate the scene");
+    ImGui::Text("Press the left mouse and move the mouse to pan");
+    ImGui::Text("Press the middle mouse and move the mouse to zoom");
+    ImGui::Text("Press the right mouse and move the mouse to rotate");
+    ImGui::End();
+}
+
+void DemoBase::SetMouseState(bool left, bool middle, bool right, const vec2& delta, const vec2& mouse) {
+    mouseLeftDown = left;
+    mouseMiddleDown = middle;
+    mouseRightDown = right;
+    mouseDelta = delta;
+    mousePos = mouse;
+}
+
+bool DemoBase::StateIsFinite(std::string* where) const {
+    std::vector<BodyState> bodies;
+    CollectState(&bodies);
+    for (const BodyState& b : bodies) {
+        const vec3* vectors[2] = {&b.position, &b.velocity};
+        const char* names[2] = {"position", "velocity"};
+        for (int v = 0; v < 2; ++v) {
+            const vec3& x = *vectors[v];
+            if (std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z)) continue;
+            if (where != nullptr) {
+                std::ostringstream out;
+                out << "body " << b.body << " (" << b.kind << ") " << names[v] << " = (" << x.x << ", " << x.y << ", "
+                    << x.z << ")";
+                *where = out.str();
+            }
+            return false;
+        }
+    }
+    return true;
+}

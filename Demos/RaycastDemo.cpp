@@ -1,0 +1,115 @@
+#include "RaycastDemo.h"
+
+#include <glad/gl.h>
+#include <imgui.h>
+
+#include <cstdio>
+
+#include "FixedFunctionPrimitives.h"
+
+#ifndef PSB_DEMO_ASSET_DIR
+#define PSB_DEMO_ASSET_DIR "Demos/assets"
+#endif
+
+namespace {
+const vec3 kLightDirection{0.5f, 1.0f, -1.5f};
+const vec3 kLightColor{0.0f, 0.0f, 0.5f};  // ambient and diffuse: the demo's blue tint (book.md 1.5)
+
+const char* ShapeName(RaycastScene::Shape s) {
+    switch (s) {
+        case RaycastScene::Shape::Sphere:
+            return "sphere";
+        case RaycastScene::Shape::AABB:
+            return "AABB";
+        case RaycastScene::Shape::OBB:
+            return "OBB";
+        case RaycastScene::Shape::Plane:
+            return "plane";
+        case RaycastScene::Shape::Triangle:
+            return "triangle";
+        case RaycastScene::Shape::Model:
+            return "model";
+        case RaycastScene::Shape::None:
+            break;
+    }
+    return "nothing";
+}
+}  // namespace
+
+RaycastDemo::RaycastDemo() {
+    ResetRaycastResult(&hit);
+    params.AddBool("script", &p.script, "sweep a scripted pick ray across the screen (0: no pick, as before a click)");
+    params.AddFloat("speed", &p.speed, 0.0f, 8.0f, "sweeps per 240 output frames");
+}
+
+void RaycastDemo::Initialize(int width, int height) {
+    DemoBase::Initialize(width, height);
+    glPointSize(5.0f);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    SetLightDirection(kLightDirection);
+
+    const std::string path = FirstObjFile(PSB_DEMO_ASSET_DIR);
+    std::string error = path.empty() ? std::string("no .obj file in " PSB_DEMO_ASSET_DIR) : std::string();
+    if (!path.empty() && scene.LoadModel(path, &error)) {
+        modelStatus = "model: " + path.substr(path.find_last_of('/') + 1);
+    } else {
+        modelStatus = "no model (" + error + ")";
+        std::fprintf(stderr, "raycast: %s\n", modelStatus.c_str());
+    }
+}
+
+void RaycastDemo::ScriptFrame(int frame) {
+    picking = p.script;
+    if (!picking) {
+        screenRay = Ray();
+        ResetRaycastResult(&hit);
+        hitShape = RaycastScene::Shape::None;
+        return;
+    }
+    // The book's left-click pick (book.md 2.0), with the scripted cursor as the mouse position.
+    mousePos = RaycastScene::ScriptedCursor(frame, p.speed, size);
+    screenRay = GetPickRay(mousePos, vec2(0.0f, 0.0f), size, camera.GetViewMatrix(), camera.GetProjectionMatrix());
+    screenRay.NormalizeDirection();
+    hit = scene.CastAll(screenRay, &hitShape);
+}
+
+void RaycastDemo::Render() {
+    DemoBase::Render();
+    SetLightDirection(kLightDirection);
+    SetLightColors(kLightColor, kLightColor);
+    ::Render(scene.sphere);
+    ::Render(scene.aabb);
+    ::Render(scene.obb);
+    ::Render(scene.plane);
+    ::Render(scene.triangle);
+    if (scene.HasModel()) ::Render(scene.model);
+
+    glDisable(GL_LIGHTING);
+    if (picking && hit.hit) {
+        glColor3f(1.0f, 0.0f, 0.0f);
+        ::Render(Point(hit.point));
+        glColor3f(0.0f, 1.0f, 0.0f);
+        ::Render(Line(hit.point, hit.point + hit.normal));
+    }
+    glColor3f(0.0f, 0.0f, 1.0f);
+    ::Render(screenRay);
+    glEnable(GL_LIGHTING);
+}
+
+void RaycastDemo::ImGUI() {
+    ImGui::SetNextWindowPos(ImVec2(400.0f, 10.0f), ImGuiCond_Once);
+    ImGui::SetNextWindowSize(ImVec2(370.0f, 75.0f), ImGuiCond_Always);
+    ImGui::Begin("Raycast Demo", nullptr, ImGuiWindowFlags_NoResize);
+    ImGui::Checkbox("Scripted pick", &p.script);
+    ImGui::SameLine();
+    ImGui::PushItemWidth(100.0f);
+    ImGui::SliderFloat("Speed", &p.speed, 0.0f, 8.0f, "%.2f");
+    ImGui::PopItemWidth();
+    if (picking && hit.hit)
+        ImGui::Text("Hit %s at t = %.3f", ShapeName(hitShape), static_cast<double>(hit.t));
+    else
+        ImGui::Text("No hit; %s", modelStatus.c_str());
+    ImGui::End();
+    DemoBase::ImGUI();
+}

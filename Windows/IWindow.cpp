@@ -1,0 +1,26 @@
+#include "IWindow.h"
+
+#include <algorithm>
+#include <utility>
+
+IWindow::IWindow(std::string windowTitle, int w, int h)
+    : width(std::max(1, w)), height(std::max(1, h)), title(std::move(windowTitle)) {}
+
+void IWindow::SetTitle(const std::string& newTitle) {
+    title = newTitle;
+    titleDirty = true;
+}
+
+bool IWindow::GetAndResetTitleDirtyFlag() {
+    const bool dirty = titleDirty;
+    titleDirty = false;
+    return dirty;
+}
+
+void IWindow::Resize(int w, int h) {
+    width = std::max(1, w);
+    height = std::max(1, h);
+    OnResize(width, height);
+}
+
+void IWindow::SetTargetFPS(int fps) { targetFPS = std::clamp(fps, 15, 120); }
