@@ -23,6 +23,27 @@ OBB Ch16Scene::PostVisual(int i) {
 
 void Ch16Scene::Reset(const Ch16Params& p) {
     params = p;
+    integratorIndex = IntegratorIndex(params.integrator);
+    Build();
+}
+
+void Ch16Scene::Reset() {
+    params.integrator = IntegratorAt(integratorIndex);
+    Build();
+}
+
+int Ch16Scene::Advance(float elapsed) {
+    const int due = accumulator.Advance(elapsed, params.dt);
+    int run = 0;
+    while (run < due && monitor.Stable()) {
+        Step();
+        ++run;
+    }
+    return run;
+}
+
+void Ch16Scene::Build() {
+    accumulator.Clear();
     system = std::make_unique<PhysicsSystem>();
     system->integrator = params.integrator;
     cloth = std::make_unique<Cloth>();
@@ -42,4 +63,14 @@ void Ch16Scene::Reset(const Ch16Params& p) {
 bool Ch16Scene::Step() {
     system->Update(params.dt);
     return monitor.Check(*system);
+}
+
+void Ch16Scene::AddParameters(ParameterSet* set) {
+    auto reset = [this] { Reset(); };
+    set->AddInt("count", &params.count, 5, 30, "cloth particles per side; applied on reset", reset);
+    set->AddFloat("distance", &params.distance, 0.1f, 1.0f, "cloth particle spacing in m; applied on reset", reset);
+    set->AddFloat("k", &params.k, -5.0f, 0.0f, "book spring k of every cloth spring; applied on reset", reset);
+    set->AddFloat("damping", &params.damping, 0.0f, 1.0f, "book spring damping d (no widget in the book)", reset);
+    set->AddAction("reset", reset, "rebuild the scene with the panel values");
+    AddStepParameters(set, &integratorIndex, &params.dt, reset);
 }

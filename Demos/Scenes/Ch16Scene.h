@@ -7,7 +7,9 @@
 
 #include "Cloth.h"
 #include "Integrator.h"
+#include "Parameters.h"
 #include "PhysicsSystem.h"
+#include "SoftSceneCommon.h"
 #include "StabilityMonitor.h"
 
 /// The demo's panel values. k and damping are the BOOK's numbers (velocity change per 0.03 s step); the
@@ -33,9 +35,18 @@ public:
     explicit Ch16Scene(const Ch16Params& params = {});
     /// Rebuilds the world from params (the book's ResetDemo); the step count restarts at 0.
     void Reset(const Ch16Params& params);
+    /// Rebuilds from the current (panel) values, the integrator taken from the "integrator" choice.
+    void Reset();
     /// One fixed step of params.dt, then the stability check. False once unstable.
     bool Step();
 
+    /// Runs the steps of params.dt due after `elapsed` host seconds (StepAccumulator); stops once unstable.
+    /// Returns the number of steps run.
+    int Advance(float elapsed);
+    /// Registers the panel values and the "reset" action on *set; --set resets the scene.
+    void AddParameters(ParameterSet* set);
+
+    Ch16Params& Params() { return params; }
     const Ch16Params& Params() const { return params; }
     PhysicsSystem& System() { return *system; }
     const PhysicsSystem& System() const { return *system; }
@@ -52,7 +63,11 @@ public:
     static OBB PostVisual(int i);
 
 private:
+    void Build();
+
     Ch16Params params;
+    int integratorIndex = 0;
+    StepAccumulator accumulator;
     std::unique_ptr<PhysicsSystem> system;
     std::unique_ptr<Cloth> cloth;
     StabilityMonitor monitor;

@@ -14,6 +14,27 @@ std::vector<OBB> JointScene::Constraints() {
 
 void JointScene::Reset(const JointParams& p) {
     params = p;
+    integratorIndex = IntegratorIndex(params.integrator);
+    Build();
+}
+
+void JointScene::Reset() {
+    params.integrator = IntegratorAt(integratorIndex);
+    Build();
+}
+
+int JointScene::Advance(float elapsed) {
+    const int due = accumulator.Advance(elapsed, params.dt);
+    int run = 0;
+    while (run < due && monitor.Stable()) {
+        Step();
+        ++run;
+    }
+    return run;
+}
+
+void JointScene::Build() {
+    accumulator.Clear();
     system = std::make_unique<PhysicsSystem>();
     system->integrator = params.integrator;
     for (const OBB& c : Constraints()) system->AddConstraint(c);
@@ -51,4 +72,11 @@ bool JointScene::Step() {
         if (pos.y < kFloorY) particle.SetPosition(vec3(pos.x, kFloorY, pos.z));
     }
     return monitor.Check(*system);
+}
+
+void JointScene::AddParameters(ParameterSet* set) {
+    auto reset = [this] { Reset(); };
+    set->AddInt("count", &params.numParticles, 2, 100, "particle count (odd rounds up); applied on reset", reset);
+    set->AddAction("reset", reset, "rebuild the scene with the panel values (new random spawn)");
+    AddStepParameters(set, &integratorIndex, &params.dt, reset);
 }

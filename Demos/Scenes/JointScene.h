@@ -7,9 +7,11 @@
 
 #include "DistanceJoint.h"
 #include "Integrator.h"
+#include "Parameters.h"
 #include "Particle.h"
 #include "PhysicsSystem.h"
 #include "Random.h"
+#include "SoftSceneCommon.h"
 #include "StabilityMonitor.h"
 
 struct JointParams {
@@ -29,9 +31,18 @@ public:
     /// Rebuilds the world (the book's ResetDemo). An odd count is rounded UP to even for the particles that
     /// are created (erratum 5.2-23), so every particle has a joint; params.numParticles is left as given.
     void Reset(const JointParams& params);
+    /// Rebuilds from the current (panel) values, the integrator taken from the "integrator" choice.
+    void Reset();
     /// One fixed step of params.dt, the y >= -5 clamp, then the stability check. False once unstable.
     bool Step();
 
+    /// Runs the steps of params.dt due after `elapsed` host seconds (StepAccumulator); stops once unstable.
+    /// Returns the number of steps run.
+    int Advance(float elapsed);
+    /// Registers the panel values and the "reset" action on *set; --set resets the scene.
+    void AddParameters(ParameterSet* set);
+
+    JointParams& Params() { return params; }
     const JointParams& Params() const { return params; }
     PhysicsSystem& System() { return *system; }
     const PhysicsSystem& System() const { return *system; }
@@ -46,7 +57,11 @@ public:
     static vec3 SpawnHalfSize() { return vec3(3.8505f, 2.0f, 4.034834f); }
 
 private:
+    void Build();
+
     JointParams params;
+    int integratorIndex = 0;
+    StepAccumulator accumulator;
     MsvcRand ownRng;
     MsvcRand* rng;
     std::unique_ptr<PhysicsSystem> system;

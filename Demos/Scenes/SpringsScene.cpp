@@ -6,6 +6,27 @@ OBB SpringsScene::Ground() { return OBB(vec3(0.0f, 0.0f, 0.0f), vec3(10.0f, 0.15
 
 void SpringsScene::Reset(const SpringsParams& p) {
     params = p;
+    integratorIndex = IntegratorIndex(params.integrator);
+    Build();
+}
+
+void SpringsScene::Reset() {
+    params.integrator = IntegratorAt(integratorIndex);
+    Build();
+}
+
+int SpringsScene::Advance(float elapsed) {
+    const int due = accumulator.Advance(elapsed, params.dt);
+    int run = 0;
+    while (run < due && monitor.Stable()) {
+        Step();
+        ++run;
+    }
+    return run;
+}
+
+void SpringsScene::Build() {
+    accumulator.Clear();
     system = std::make_unique<PhysicsSystem>();
     system->integrator = params.integrator;
     system->AddConstraint(Ground());
@@ -31,4 +52,13 @@ bool SpringsScene::Step() {
         if (pos.y < kFloorY) particle.SetPosition(vec3(pos.x, kFloorY, pos.z));
     }
     return monitor.Check(*system);
+}
+
+void SpringsScene::AddParameters(ParameterSet* set) {
+    auto reset = [this] { Reset(); };
+    set->AddFloat("k", &params.k, -5.0f, 0.0f, "book spring k (negative attracts); applied on reset", reset);
+    set->AddFloat("b", &params.b, 0.0f, 1.0f, "book spring damping; applied on reset", reset);
+    set->AddFloat("l", &params.restLength, 0.0f, 5.0f, "spring rest length in m; applied on reset", reset);
+    set->AddAction("reset", reset, "rebuild the scene with the panel values");
+    AddStepParameters(set, &integratorIndex, &params.dt, reset);
 }

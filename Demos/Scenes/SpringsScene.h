@@ -6,8 +6,10 @@
 #include <vector>
 
 #include "Integrator.h"
+#include "Parameters.h"
 #include "Particle.h"
 #include "PhysicsSystem.h"
+#include "SoftSceneCommon.h"
 #include "Spring.h"
 #include "StabilityMonitor.h"
 
@@ -30,9 +32,18 @@ public:
     explicit SpringsScene(const SpringsParams& params = {});
     /// Rebuilds the world from params (the book's ResetDemo); the step count restarts at 0.
     void Reset(const SpringsParams& params);
+    /// Rebuilds from the current (panel) values, the integrator taken from the "integrator" choice.
+    void Reset();
     /// One fixed step of params.dt, the y >= -5 clamp, then the stability check. False once unstable.
     bool Step();
 
+    /// Runs the steps of params.dt due after `elapsed` host seconds (StepAccumulator); stops once unstable.
+    /// Returns the number of steps run.
+    int Advance(float elapsed);
+    /// Registers the panel values and the "reset" action on *set; --set resets the scene.
+    void AddParameters(ParameterSet* set);
+
+    SpringsParams& Params() { return params; }
     const SpringsParams& Params() const { return params; }
     PhysicsSystem& System() { return *system; }
     const PhysicsSystem& System() const { return *system; }
@@ -43,7 +54,11 @@ public:
     static OBB Ground();
 
 private:
+    void Build();
+
     SpringsParams params;
+    int integratorIndex = 0;
+    StepAccumulator accumulator;
     std::unique_ptr<PhysicsSystem> system;
     std::vector<Particle> particles;
     StabilityMonitor monitor;

@@ -1,0 +1,45 @@
+#include "SoftSceneCommon.h"
+
+#include <sstream>
+
+std::vector<std::string> IntegratorChoices() {
+    std::vector<std::string> ids;
+    std::istringstream in(IntegratorIds());
+    std::string id;
+    while (std::getline(in, id, ',')) {
+        const size_t first = id.find_first_not_of(' ');
+        const size_t last = id.find_last_not_of(' ');
+        if (first != std::string::npos) ids.push_back(id.substr(first, last - first + 1));
+    }
+    return ids;
+}
+
+int IntegratorIndex(Integrator integrator) {
+    const std::vector<std::string> ids = IntegratorChoices();
+    for (size_t i = 0; i < ids.size(); ++i)
+        if (ids[i] == ToString(integrator)) return static_cast<int>(i);
+    return 0;
+}
+
+Integrator IntegratorAt(int index) {
+    const std::vector<std::string> ids = IntegratorChoices();
+    Integrator result = Integrator::SemiImplicitEuler;
+    if (index >= 0 && index < static_cast<int>(ids.size())) ParseIntegrator(ids[index], &result);
+    return result;
+}
+
+void AddStepParameters(ParameterSet* set, int* integratorIndex, float* dt, const std::function<void()>& onChange) {
+    set->AddChoice("integrator", integratorIndex, IntegratorChoices(),
+                   "particle integrator for springs, cloth and joints (book: euler)", onChange);
+    set->AddFloat("dt", dt, kMinSceneDt, kMaxSceneDt, "physics step in s (book: 0.03)", onChange);
+}
+
+int StepAccumulator::Advance(double elapsed, double dt) {
+    if (!(dt > 0.0) || !(elapsed > 0.0)) return 0;
+    accumulated += elapsed;
+    // A relative slack so 0.03 host steps run exactly one 0.03 step despite rounding.
+    const int steps = static_cast<int>((accumulated + dt * 1e-6) / dt);
+    accumulated -= steps * dt;
+    if (accumulated < 0.0) accumulated = 0.0;
+    return steps;
+}
