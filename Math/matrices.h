@@ -17,8 +17,7 @@ struct mat2 {
 struct mat3 {
     float asArray[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
     constexpr mat3() = default;
-    constexpr mat3(float f11, float f12, float f13, float f21, float f22, float f23, float f31, float f32,
-                   float f33)
+    constexpr mat3(float f11, float f12, float f13, float f21, float f22, float f23, float f31, float f32, float f33)
         : asArray{f11, f12, f13, f21, f22, f23, f31, f32, f33} {}
     float* operator[](int row) { return asArray + row * 3; }
     const float* operator[](int row) const { return asArray + row * 3; }
@@ -27,8 +26,8 @@ struct mat3 {
 struct mat4 {
     float asArray[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
     constexpr mat4() = default;
-    constexpr mat4(float f11, float f12, float f13, float f14, float f21, float f22, float f23, float f24,
-                   float f31, float f32, float f33, float f34, float f41, float f42, float f43, float f44)
+    constexpr mat4(float f11, float f12, float f13, float f14, float f21, float f22, float f23, float f24, float f31,
+                   float f32, float f33, float f34, float f41, float f42, float f43, float f44)
         : asArray{f11, f12, f13, f14, f21, f22, f23, f24, f31, f32, f33, f34, f41, f42, f43, f44} {}
     float* operator[](int row) { return asArray + row * 4; }
     const float* operator[](int row) const { return asArray + row * 4; }
@@ -41,7 +40,7 @@ mat4 ZeroMat4();
 /// Row i of an orientation matrix: the local axis i expressed in world space.
 vec3 GetRow(const mat3& m, int row);
 
-bool operator==(const mat2& l, const mat2& r); ///< element-wise CMP (absolute 0.005)
+bool operator==(const mat2& l, const mat2& r);  ///< element-wise CMP (absolute 0.005)
 bool operator==(const mat3& l, const mat3& r);
 bool operator==(const mat4& l, const mat4& r);
 bool operator!=(const mat2& l, const mat2& r);

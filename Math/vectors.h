@@ -2,7 +2,6 @@
 // vec2 / vec3 with the book's conventions (row vectors, left-handed, degrees in every rotation helper).
 // Written as plain structs (no anonymous unions); operator[] indexes the components.
 
-
 struct vec2 {
     float x = 0.0f, y = 0.0f;
     constexpr vec2() = default;
@@ -27,7 +26,7 @@ vec2 operator/(const vec2& l, const vec2& r);
 vec2 operator/(const vec2& l, float r);
 vec2 operator-(const vec2& v);
 vec2& operator+=(vec2& l, const vec2& r);
-vec2& operator-=(vec2& l, const vec2& r); // erratum 5.2-31: the book subtracts r.y from x
+vec2& operator-=(vec2& l, const vec2& r);  // erratum 5.2-31: the book subtracts r.y from x
 vec2& operator*=(vec2& l, const vec2& r);
 vec2& operator*=(vec2& l, float r);
 vec2& operator/=(vec2& l, const vec2& r);

@@ -42,13 +42,21 @@ bool ParseBool(const std::string& text, bool* out) {
 std::string RangeText(const ParameterSet::Entry& e) {
     std::ostringstream s;
     switch (e.kind) {
-        case ParameterSet::Kind::Int: s << "integer " << static_cast<long>(e.min) << ".." << static_cast<long>(e.max); break;
-        case ParameterSet::Kind::Float: s << "number " << e.min << ".." << e.max; break;
-        case ParameterSet::Kind::Bool: s << "0|1"; break;
+        case ParameterSet::Kind::Int:
+            s << "integer " << static_cast<long>(e.min) << ".." << static_cast<long>(e.max);
+            break;
+        case ParameterSet::Kind::Float:
+            s << "number " << e.min << ".." << e.max;
+            break;
+        case ParameterSet::Kind::Bool:
+            s << "0|1";
+            break;
         case ParameterSet::Kind::Choice:
             for (size_t i = 0; i < e.choices.size(); ++i) s << (i ? "|" : "") << e.choices[i];
             break;
-        case ParameterSet::Kind::Action: s << "1 (action)"; break;
+        case ParameterSet::Kind::Action:
+            s << "1 (action)";
+            break;
     }
     return s.str();
 }
@@ -154,11 +162,20 @@ std::string ParameterSet::Get(const std::string& key) const {
     if (e == nullptr) return "";
     std::ostringstream s;
     switch (e->kind) {
-        case Kind::Int: s << *e->intValue; break;
-        case Kind::Float: s << *e->floatValue; break;
-        case Kind::Bool: s << (*e->boolValue ? 1 : 0); break;
-        case Kind::Choice: s << e->choices.at(static_cast<size_t>(*e->intValue)); break;
-        case Kind::Action: break;
+        case Kind::Int:
+            s << *e->intValue;
+            break;
+        case Kind::Float:
+            s << *e->floatValue;
+            break;
+        case Kind::Bool:
+            s << (*e->boolValue ? 1 : 0);
+            break;
+        case Kind::Choice:
+            s << e->choices.at(static_cast<size_t>(*e->intValue));
+            break;
+        case Kind::Action:
+            break;
     }
     return s.str();
 }
