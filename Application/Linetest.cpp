@@ -5,6 +5,9 @@
 #include "Compare.h"
 #include "Geometry3D.h"
 
+/// Defined in Raycast.cpp: the barycentric inside test shared by the triangle raycast and line test.
+bool InsideBarycentric(const vec3& weights);
+
 namespace {
 
 /// Below this squared length (the repo's Linetest(OBB) guard) a segment is tested as its start point.
@@ -101,6 +104,5 @@ bool Linetest(const Triangle& triangle, const Line& line) {
     const float t = -startSide / nAB;
     if (!(t >= 0.0f && t <= 1.0f)) return false;
     const Point crossing = line.start + ab * t;
-    const vec3 bc = Barycentric(crossing, triangle);
-    return bc.x >= 0.0f && bc.x <= 1.0f && bc.y >= 0.0f && bc.y <= 1.0f && bc.z >= 0.0f && bc.z <= 1.0f;
+    return InsideBarycentric(Barycentric(crossing, triangle));
 }

@@ -76,6 +76,9 @@ bool SlabTest(const Slab* slabs, float* outT, int* outAxis, float* outSign) {
 
 bool IsZero(const vec3& v) { return v.x == 0.0f && v.y == 0.0f && v.z == 0.0f; }
 
+/// Barycentric slack of the triangle tests (dimensionless: a fraction of the triangle's extent).
+constexpr float kBarycentricSlack = 1e-6f;
+
 }  // namespace
 
 /// Sphere raycast (book: e = C - o, a = e.d, b^2 = |e|^2 - a^2, f = sqrt(r^2 - b^2)).
@@ -167,14 +170,18 @@ Plane FromTriangle(const Triangle& t) {
     return result;
 }
 
-/// Triangle raycast: one-sided plane raycast, then every barycentric weight in [0, 1] (book).
+/// True if every weight is >= -kBarycentricSlack (weights sum to 1, so none exceeds 1 + 2 * slack).
+bool InsideBarycentric(const vec3& weights) {
+    return weights.x >= -kBarycentricSlack && weights.y >= -kBarycentricSlack && weights.z >= -kBarycentricSlack;
+}
+
+/// Triangle raycast: one-sided plane raycast, then every barycentric weight in [0, 1] (book), with a slack of
+/// 1e-6 so that a ray through a shared vertex or edge of a closed mesh cannot slip between the triangles.
 bool Raycast(const Triangle& triangle, const Ray& ray, RaycastResult* outResult) {
     ResetRaycastResult(outResult);
     RaycastResult planeResult;
     if (!Raycast(FromTriangle(triangle), ray, &planeResult)) return false;
-    const vec3 bc = Barycentric(planeResult.point, triangle);
-    for (int i = 0; i < 3; ++i)
-        if (!(bc[i] >= 0.0f && bc[i] <= 1.0f)) return false;
+    if (!InsideBarycentric(Barycentric(planeResult.point, triangle))) return false;
     if (outResult != nullptr) *outResult = planeResult;
     return true;
 }
