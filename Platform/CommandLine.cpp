@@ -95,11 +95,11 @@ ParseStatus ParseCommandLine(int argc, const char* const* argv, Options* o, std:
             if (flag == "--serial-encode") o->encodeThread = false;
         } else {
             // Every other flag takes a value.
-            static const char* const valued[] = {"--demo",        "--frames",        "--out",        "--size",
-                                                 "--set",         "--state",         "--camera-yaw", "--camera-pitch",
-                                                 "--camera-zoom", "--camera-target", "--orbit",      "--fps",
-                                                 "--dt",          "--only-frames",   "--compare",    "--tolerance",
-                                                 "--max-diff",    "--png-level",     "--progress"};
+            static const char* const valued[] = {
+                "--demo",      "--frames",     "--out",          "--size",        "--set",
+                "--state",     "--camera-yaw", "--camera-pitch", "--camera-zoom", "--camera-target",
+                "--orbit",     "--fps",        "--dt",           "--only-frames", "--compare",
+                "--tolerance", "--max-diff",   "--png-level",    "--progress",    "--debug-nonfinite-at"};
             if (std::find_if(std::begin(valued), std::end(valued), [&](const char* f) { return flag == f; }) ==
                 std::end(valued)) {
                 *error = "unknown option '" + flag + "' (see --help)";
