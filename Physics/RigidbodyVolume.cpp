@@ -196,11 +196,13 @@ void ApplyImpulse(RigidbodyVolume& A, RigidbodyVolume& B, const CollisionManifol
     // erratum 5.2-14: friction acts on the relative velocity AFTER the normal impulse; the book reuses the
     // pre-impulse vr, so a contact whose sliding is created by the normal impulse (an off-centre hit that
     // spins the body) gets no friction. The book also skips friction when |t|^2 <= 0.005 and |jt| <= 0.005
-    // (Compare.h CMP), which lets slow sliding (< 0.07 m/s) creep for free; only a zero tangent is skipped.
+    // (Compare.h CMP), which lets slow sliding (< 0.07 m/s) creep for free; only a negligible tangent is skipped.
     vr = RelativeVelocity(A, B, rA, rB);
+    // A tangent below 1e-4 of |vr| is rounding noise from subtracting two nearly equal vectors: its direction is
+    // arbitrary (not even perpendicular to n), so it is skipped rather than normalised.
     vec3 t = vr - n * Dot(vr, n);
     const float tSq = MagnitudeSq(t);
-    if (!(tSq > 1e-12f)) return;
+    if (!(tSq > 1e-8f * MagnitudeSq(vr) + 1e-12f)) return;
     t = t * (1.0f / std::sqrt(tSq));
     const float kt = EffectiveInvMass(invSum, iA, iB, rA, rB, t);
     if (kt == 0.0f) return;

@@ -18,7 +18,8 @@ void MomentumScene::Reset() {
         if (!params.gravity) s.gravity = vec3();
     }
     RigidbodyVolume& last = bodies[kSpheres - 1];
-    last.AddLinearImpulse(Normalized(vec3() - last.position) * kLaunchSpeed);
+    // The book normalises the direction towards x = 0 along the row: (-20, 0, 0).
+    last.AddLinearImpulse(Normalized(vec3(-last.position.x, 0.0f, 0.0f)) * kLaunchSpeed);
 
     RigidbodyVolume& ground = bodies[kSpheres];
     ground.type = RigidbodyType::Box;

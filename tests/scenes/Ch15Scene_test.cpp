@@ -1,0 +1,95 @@
+// Chapter 15 scene (book.md 2.5): setup, parameters, settling, determinism.
+#include "Ch15Scene.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "Approx.h"
+
+namespace {
+constexpr float kBookDt = 0.03f;  // erratum 5.2-16: the book's fixed step
+}
+
+TEST(Ch15Scene, BuildsTheBookScene) {
+    Ch15Scene scene;
+    const std::vector<RigidbodyVolume>& b = scene.Bodies();
+    ASSERT_EQ(b.size(), 3u);
+    EXPECT_TRUE(
+        MatNear(b[0].box.orientation, mat3(0.92106f, 0.38942f, 0, -0.38942f, 0.92106f, 0, 0, 0, 1), tol::kBook));
+    EXPECT_TRUE(VecNear(b[0].box.position, vec3(0.5f, 6, 0), tol::kExact));
+    EXPECT_EQ(b[1].mass, 5.0f);
+    EXPECT_TRUE(VecNear(b[2].box.position, vec3(0, -0.25f, 0), tol::kExact));
+    EXPECT_TRUE(VecNear(b[2].box.size, vec3(12.5f, 0.25f, 12.5f), tol::kExact));
+    EXPECT_EQ(b[2].mass, 0.0f);
+    EXPECT_EQ(scene.System().ImpulseIteration, 8);
+    EXPECT_TRUE(scene.System().RenderRandomColors);
+    // The heavy box starts exactly touching the ground: depth 0 is no contact.
+    scene.Step(kBookDt);
+    EXPECT_EQ(scene.System().CollisionCount(), 0u);
+}
+
+TEST(Ch15Scene, ParametersCoverEveryPanelWidget) {
+    Ch15Scene scene;
+    ParameterSet set;
+    scene.AddParameters(&set);
+    std::string error;
+    ASSERT_TRUE(set.Set("projection", "0.3", &error)) << error;
+    ASSERT_TRUE(set.Set("slop", "0.05", &error)) << error;
+    ASSERT_TRUE(set.Set("iterations", "12", &error)) << error;
+    ASSERT_TRUE(set.Set("linear-projection", "0", &error)) << error;
+    ASSERT_TRUE(set.Set("debug", "1", &error)) << error;
+    EXPECT_FLOAT_EQ(scene.System().LinearProjectionPercent, 0.3f);
+    EXPECT_FLOAT_EQ(scene.System().PenetrationSlack, 0.05f);
+    EXPECT_EQ(scene.System().ImpulseIteration, 12);
+    EXPECT_FALSE(scene.System().DoLinearProjection);
+    EXPECT_TRUE(scene.System().DebugRender);
+    EXPECT_FALSE(set.Set("iterations", "21", &error));
+    for (int i = 0; i < 20; ++i) scene.Step(kBookDt);
+    ASSERT_TRUE(set.Set("reset", "1", &error)) << error;
+    EXPECT_TRUE(VecNear(scene.Bodies()[0].position, vec3(0.5f, 6, 0), tol::kExact));
+    EXPECT_EQ(scene.System().ImpulseIteration, 12);  // panel values survive Reset
+}
+
+// After 10 s at the book's 0.03 s step: the tilted box lands on the edge of the heavy one and slides off onto
+// the ground beside it, as in the book's GIF (book-ch15-late.png: red and blue boxes side by side). Both rest
+// face down on the ground (one axis within 2 degrees of vertical, centres at y = 1 within slop + 2 cm), do
+// not overlap (centres at least 2 - 0.05 m apart horizontally) and are slow.
+TEST(Ch15Scene, TiltedBoxEndsBesideTheHeavyOne) {
+    Ch15Scene scene;
+    for (int i = 0; i < 334; ++i) scene.Step(kBookDt);
+    const RigidbodyVolume& red = scene.Bodies()[0];
+    const RigidbodyVolume& blue = scene.Bodies()[1];
+    auto upAlignment = [](const RigidbodyVolume& body) {
+        const mat3 R = ToMat3(body.orientation);
+        float up = 0;
+        for (int k = 0; k < 3; ++k) up = std::fmax(up, std::fabs(R[k][1]));
+        return up;
+    };
+    const vec3 d = red.position - blue.position;
+    std::printf("ch15 after 10 s: red (%.3f, %.3f, %.3f) blue (%.3f, %.3f, %.3f), speeds %.4f %.4f\n", red.position.x,
+                red.position.y, red.position.z, blue.position.x, blue.position.y, blue.position.z,
+                Magnitude(red.velocity), Magnitude(blue.velocity));
+    for (const RigidbodyVolume* body : {&red, &blue}) {
+        EXPECT_NEAR(body->position.y, 1.0f, 0.01f + 0.02f);
+        EXPECT_GT(upAlignment(*body), std::cos(DEG2RAD(2.0f)));
+        EXPECT_LT(Magnitude(body->velocity), 0.05f);
+    }
+    EXPECT_GT(std::fmax(std::fabs(d.x), std::fabs(d.z)), 2.0f - 0.05f);
+}
+
+TEST(Ch15Scene, TwoRunsAreBitwiseIdentical) {
+    Ch15Scene a, b;
+    for (int i = 0; i < 200; ++i) {
+        a.Step(kBookDt);
+        b.Step(kBookDt);
+    }
+    for (std::size_t i = 0; i < a.Bodies().size(); ++i) {
+        EXPECT_EQ(std::memcmp(&a.Bodies()[i].position, &b.Bodies()[i].position, sizeof(vec3)), 0);
+        EXPECT_EQ(std::memcmp(&a.Bodies()[i].orientation, &b.Bodies()[i].orientation, sizeof(quat)), 0);
+        EXPECT_EQ(std::memcmp(&a.Bodies()[i].angVel, &b.Bodies()[i].angVel, sizeof(vec3)), 0);
+    }
+}
