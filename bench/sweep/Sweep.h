@@ -1,0 +1,70 @@
+#pragma once
+// psb-sweep: reference problems with exact (or converged) answers, each run over the settings that matter to
+// it, one CSV row per run (issue 7). A problem builds its world directly on the Physics API, steps it, and
+// reports one error number, whether the state stayed finite and bounded, and the CPU time of the stepping
+// alone (setup, references and error evaluation are not timed).
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "Integrator.h"
+
+namespace sweep {
+
+/// One point of a problem's grid. Fields a problem does not use keep their "n/a" values and print as "-".
+struct Settings {
+    bool hasIntegrator = false;  ///< particle problems: PhysicsSystem::integrator; volumes always use their own
+    Integrator integrator = Integrator::SemiImplicitEuler;
+    double dt = 0.01;     ///< s per frame
+    int substeps = 1;     ///< PhysicsSystem::Update calls of dt / substeps per frame
+    int iterations = -1;  ///< PhysicsSystem::ImpulseIteration; -1 = not used
+    int projection = -1;  ///< PhysicsSystem::DoLinearProjection as 0/1; -1 = not used
+    double param = 0.0;   ///< the problem's swept physical parameter (stiffness, mass ratio, e); 0 = none
+};
+
+/// What one run measured.
+struct Outcome {
+    double error = 0.0;       ///< the problem's error number (units in Problem::errorUnit); inf if unmeasurable
+    bool stable = true;       ///< every sampled state finite and inside the problem's bounds
+    double simSeconds = 0.0;  ///< simulated time actually run (shorter when stopped as unstable)
+    double cpuSeconds = 0.0;  ///< thread CPU time of the stepping loop only
+    long long steps = 0;      ///< PhysicsSystem::Update calls
+    std::string note;         ///< e.g. the StabilityMonitor report; no commas
+};
+
+struct Problem {
+    std::string name;
+    std::string description;  ///< one line for --list
+    std::string errorUnit;    ///< what `error` is, for --list and the docs
+    std::string paramName;    ///< what Settings::param is ("" when unused)
+    /// The settings to run: the full grid, or a few points for CI (--quick).
+    std::function<std::vector<Settings>(bool quick)> grid;
+    std::function<Outcome(const Settings&)> run;
+    /// False: run only when named with --problem (the physics it needs does not give a meaningful answer yet).
+    bool inDefault = true;
+};
+
+/// Every problem in a fixed order (the sweep and its shards rely on it).
+const std::vector<Problem>& AllProblems();
+
+// Registration, one function per source file.
+void AddParticleProblems(std::vector<Problem>* out);
+void AddRigidProblems(std::vector<Problem>* out);
+void AddClothProblems(std::vector<Problem>* out);
+
+/// The default step sizes, 1e-4 .. 0.1 s; every value divides 1 s and 2 s into whole steps.
+const std::vector<double>& StepSizes();
+/// A few of them for --quick.
+const std::vector<double>& QuickStepSizes();
+
+/// Thread CPU time in seconds (CLOCK_THREAD_CPUTIME_ID).
+double CpuNow();
+
+/// Complete elliptic integral of the first kind K(k) = pi / (2 AGM(1, sqrt(1 - k^2))), for 0 <= k < 1.
+double EllipticK(double k);
+/// Period of a simple pendulum of length L (m) released from rest at theta0 (rad) under gravity g (m/s^2):
+/// 4 sqrt(L/g) K(sin(theta0/2)). Exact, any amplitude below pi.
+double PendulumPeriod(double length, double g, double theta0);
+
+}  // namespace sweep
