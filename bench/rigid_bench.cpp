@@ -1,0 +1,186 @@
+// psb-rigid-bench: rigid-body scenes with the book's solver (ImpulseIteration 5, projection 0.45, slack 0.01,
+// damping 0.98 per step, restitution 0.5, friction 0.6) at 60 Hz. Usage: psb-rigid-bench [quick]
+//   boxpile N  N unit cubes in columns of 10 (2.2 m apart vertically, 2.5 m grid) dropped on a static ground
+//   pyramid B  a 2-D pyramid of unit cubes with base B, resting (0.01 m gaps in x)
+//   tower H    one column of H unit cubes, resting
+//   bounce e   unit sphere, bottom 10 m above the ground, cor e (ground cor 1, so e = min = e)
+// Figures: ms/step (wall clock, this machine), max penetration (deepest manifold depth in the last second), final
+// kinetic energy (linear + angular, J), max displacement of any body from its start (m).
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+#include "PhysicsSystem.h"
+#include "RigidbodyVolume.h"
+
+namespace {
+
+constexpr float kDt = 1.0f / 60.0f;
+
+struct World {
+    std::vector<RigidbodyVolume> bodies;  // [0] is the static ground
+    std::vector<vec3> start;
+};
+
+RigidbodyVolume Cube(const vec3& p) {
+    RigidbodyVolume b(RigidbodyType::Box);
+    b.position = p;
+    b.SynchCollisionVolumes();
+    return b;
+}
+
+void AddGround(World* w, float halfWidth) {
+    RigidbodyVolume g(RigidbodyType::Box);
+    g.position = vec3(0, -0.5f, 0);
+    g.box.size = vec3(halfWidth, 0.5f, halfWidth);
+    g.mass = 0;
+    g.SynchCollisionVolumes();
+    w->bodies.push_back(g);
+}
+
+World BoxPile(int n) {
+    World w;
+    const int columns = (n + 9) / 10;
+    const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<float>(columns))));
+    AddGround(&w, side * 1.25f + 5);
+    for (int i = 0; i < n; ++i) {
+        const int c = i / 10, k = i % 10;
+        const float x = (c % side - 0.5f * (side - 1)) * 2.5f, z = (c / side - 0.5f * (side - 1)) * 2.5f;
+        w.bodies.push_back(Cube(vec3(x, 1.5f + 2.2f * k, z)));
+    }
+    return w;
+}
+
+World Pyramid(int base) {
+    World w;
+    AddGround(&w, base + 5.0f);
+    for (int row = 0; row < base; ++row)
+        for (int i = 0; i < base - row; ++i)
+            w.bodies.push_back(Cube(vec3((i - 0.5f * (base - row - 1)) * 2.01f, 1.0f + 2.0f * row, 0)));
+    return w;
+}
+
+World Tower(int height) {
+    World w;
+    AddGround(&w, 10);
+    for (int k = 0; k < height; ++k) w.bodies.push_back(Cube(vec3(0, 1.0f + 2.0f * k, 0)));
+    return w;
+}
+
+float KineticEnergy(const std::vector<RigidbodyVolume>& bodies) {
+    float e = 0;
+    for (const RigidbodyVolume& b : bodies) {
+        if (!(b.mass > 0)) continue;
+        e +=
+            0.5f * b.mass * MagnitudeSq(b.velocity) + 0.5f * Dot(b.angVel, MultiplyVector(b.angVel, b.InertiaTensor()));
+    }
+    return e;
+}
+
+struct Result {
+    double msPerStep = 0;
+    float maxPenetration = 0, finalKE = 0, maxDisplacement = 0;
+    int steps = 0;
+};
+
+Result Run(World& w, int steps) {
+    PhysicsSystem system;
+    for (RigidbodyVolume& b : w.bodies) {
+        w.start.push_back(b.position);
+        system.AddRigidbody(&b);
+    }
+    Result r;
+    r.steps = steps;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int i = 0; i < steps; ++i) {
+        system.Update(kDt);
+        if (i >= steps - 60)
+            for (std::size_t k = 0; k < system.CollisionCount(); ++k)
+                r.maxPenetration = std::fmax(r.maxPenetration, system.Collisions()[k].manifold.depth);
+    }
+    const auto t1 = std::chrono::steady_clock::now();
+    r.msPerStep = std::chrono::duration<double, std::milli>(t1 - t0).count() / steps;
+    r.finalKE = KineticEnergy(w.bodies);
+    for (std::size_t i = 1; i < w.bodies.size(); ++i)
+        r.maxDisplacement = std::fmax(r.maxDisplacement, Magnitude(w.bodies[i].position - w.start[i]));
+    return r;
+}
+
+void Print(const char* name, int size, const Result& r) {
+    std::printf("| %-8s | %5d | %5d | %9.3f | %8.4f | %10.4g | %8.3f |\n", name, size, r.steps, r.msPerStep,
+                r.maxPenetration, r.finalKE, r.maxDisplacement);
+    std::fflush(stdout);
+}
+
+/// Apex heights (bottom of the sphere above the ground) of the first bounces.
+void Bounce(float e, float damping) {
+    World w;
+    AddGround(&w, 10);
+    RigidbodyVolume s(RigidbodyType::Sphere);
+    s.position = vec3(0, 11, 0);
+    s.cor = e;
+    s.damping = damping;
+    s.SynchCollisionVolumes();
+    w.bodies.push_back(s);
+    w.bodies[0].cor = 1.0f;
+    PhysicsSystem system;
+    for (RigidbodyVolume& b : w.bodies) system.AddRigidbody(&b);
+    const float h0 = 10.0f;
+    std::vector<float> apex;
+    float prevVy = 0, maxPen = 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    const int steps = 600;
+    for (int i = 0; i < steps && apex.size() < 3; ++i) {
+        system.Update(kDt);
+        const RigidbodyVolume& b = w.bodies[1];
+        if (prevVy > 0 && b.velocity.y <= 0) apex.push_back(b.position.y - 1.0f);
+        prevVy = b.velocity.y;
+        for (std::size_t k = 0; k < system.CollisionCount(); ++k)
+            maxPen = std::fmax(maxPen, system.Collisions()[k].manifold.depth);
+    }
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / steps;
+    std::printf("| %.2f | %.2f | %.4f | %.4f |", e, damping, ms, maxPen);
+    for (std::size_t n = 0; n < 3; ++n) {
+        const float expect = std::pow(e, 2.0f * (n + 1)) * h0;
+        if (n < apex.size())
+            std::printf(" %.3f / %.3f |", apex[n], expect);
+        else
+            std::printf(" - / %.3f |", expect);
+    }
+    std::printf("\n");
+    std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const bool quick = argc > 1 && std::strcmp(argv[1], "quick") == 0;
+    std::printf(
+        "Solver: ImpulseIteration 5, LinearProjectionPercent 0.45, PenetrationSlack 0.01, damping 0.98/step, "
+        "cor 0.5, friction 0.6, dt 1/60 s\n\n");
+    std::printf("| scene    |  size | steps |  ms/step  | max pen. | final KE J | max disp |\n");
+    std::printf("|----------|-------|-------|-----------|----------|------------|----------|\n");
+    const int pileSizes[] = {100, 1000, 4000};
+    for (int n : pileSizes) {
+        if (quick && n > 100) break;
+        World w = BoxPile(n);
+        Print("boxpile", n, Run(w, n >= 4000 ? 300 : 600));
+    }
+    for (int b : {10, 20}) {
+        World w = Pyramid(b);
+        Print("pyramid", b, Run(w, 600));
+    }
+    for (int h : {10, 20}) {
+        World w = Tower(h);
+        Print("tower", h, Run(w, 600));
+    }
+    std::printf(
+        "\n| e | damping | ms/step | max pen. | apex 1 (got / e^2 h0) | apex 2 (got / e^4 h0) | apex 3 (got / e^6 h0) "
+        "|\n");
+    std::printf("|---|---|---|---|---|---|---|\n");
+    for (float e : {0.5f, 0.8f})
+        for (float d : {0.98f, 1.0f}) Bounce(e, d);
+    return 0;
+}
