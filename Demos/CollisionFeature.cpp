@@ -67,9 +67,7 @@ void CollisionFeature::Render() {
 }
 
 void CollisionFeature::ImGUI() {
-    ImGui::SetNextWindowPos(ImVec2(400.0f, 10.0f), ImGuiCond_Once);
-    ImGui::SetNextWindowSize(ImVec2(370.0f, 75.0f), ImGuiCond_Always);
-    ImGui::Begin("SAT Test Demo", nullptr, ImGuiWindowFlags_NoResize);
+    BeginPanel("SAT Test Demo");
     ImGui::RadioButton("Translate", &p.gizmo, 0);
     ImGui::SameLine();
     ImGui::RadioButton("Rotate", &p.gizmo, 1);

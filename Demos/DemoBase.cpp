@@ -46,6 +46,12 @@ void DemoBase::ImGUI() {
     ImGui::End();
 }
 
+void DemoBase::BeginPanel(const char* title, float height) {
+    ImGui::SetNextWindowPos(ImVec2(400.0f, 10.0f), ImGuiCond_Once);
+    ImGui::SetNextWindowSize(ImVec2(370.0f, height), ImGuiCond_Always);
+    ImGui::Begin(title, nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoScrollbar);
+}
+
 void DemoBase::SetMouseState(bool left, bool middle, bool right, const vec2& delta, const vec2& mouse) {
     mouseLeftDown = left;
     mouseMiddleDown = middle;

@@ -52,6 +52,11 @@ public:
     bool StateIsFinite(std::string* where) const;
 
 protected:
+    /// Begins a book-style demo panel (book.md 1.7): at (400, 10) on its first frame, 370 wide and `height`
+    /// tall every frame, not resizable, and without the scrollbar ImGui 1.86 would add when the rows fill
+    /// the book's 75-pixel height (1.50 showed none). Always pair with ImGui::End().
+    static void BeginPanel(const char* title, float height = 75.0f);
+
     bool show_help = false;
     bool mouseLeftDown = false;
     bool mouseRightDown = false;

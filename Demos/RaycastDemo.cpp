@@ -98,9 +98,7 @@ void RaycastDemo::Render() {
 }
 
 void RaycastDemo::ImGUI() {
-    ImGui::SetNextWindowPos(ImVec2(400.0f, 10.0f), ImGuiCond_Once);
-    ImGui::SetNextWindowSize(ImVec2(370.0f, 75.0f), ImGuiCond_Always);
-    ImGui::Begin("Raycast Demo", nullptr, ImGuiWindowFlags_NoResize);
+    BeginPanel("Raycast Demo");
     ImGui::Checkbox("Scripted pick", &p.script);
     ImGui::SameLine();
     ImGui::PushItemWidth(100.0f);

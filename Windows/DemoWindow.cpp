@@ -57,7 +57,7 @@ void DemoWindow::OnUpdate(float /*deltaTime*/) {
 void DemoWindow::MainPanel() {
     ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_Once);
     ImGui::SetNextWindowSize(ImVec2(370.0f, selectAll ? 145.0f : 75.0f), ImGuiCond_Always);
-    ImGui::Begin("Physics Demo", nullptr, ImGuiWindowFlags_NoResize);
+    ImGui::Begin("Physics Demo", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoScrollbar);
     const float fps = nominalFrameMs > 0.0f ? 1000.0f / nominalFrameMs : 0.0f;
     ImGui::Text("Application average %.3f ms/frame (%.1f FPS)", static_cast<double>(nominalFrameMs),
                 static_cast<double>(fps));

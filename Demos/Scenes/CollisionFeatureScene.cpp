@@ -22,7 +22,7 @@ void CollisionFeatureScene::Script(int frame, float speed) {
     const double cycles = static_cast<double>(frame) * static_cast<double>(speed) / kCycleFrames;
     const float phase = static_cast<float>(cycles - std::floor(cycles));
     const float approach = 0.5f * (1.0f - std::cos(kTwoPi * phase));
-    const float scale = 1.0f - 0.8f * approach;  // centres at 1.0 .. 0.2 of their start
+    const float scale = 1.0f - 0.85f * approach;  // centres at 1.0 .. 0.15 of their start (all six pairs meet)
     obb[0].position = kStart[0] * scale;
     obb[1].position = kStart[1] * scale;
     sphere[0].position = kStart[2] * scale;

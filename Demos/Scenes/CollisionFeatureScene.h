@@ -33,8 +33,9 @@ public:
     /// The book's start: obb0 (4,2,0) identity; obb1 (-4,-2,0) Rotation3x3(30,20,0); s0 (-4,2,0) r 1;
     /// s1 (4,-2,0) r 0.5.
     void Reset();
-    /// Poses every shape for output frame `frame`: each centre moves toward the origin and back
-    /// (at the closest, 0.2 of its start), obb0 turns about Y and Z and obb1 about Y. Frame 0 is the start.
+    /// Poses every shape for output frame `frame`: each centre moves toward the origin and back (at the
+    /// closest, 0.15 of its start, where all six pairs overlap); obb0 turns about Y and Z, obb1 about Y.
+    /// Frame 0 is the start.
     void Script(int frame, float speed);
     /// The six manifolds of the current poses.
     void Compute();
