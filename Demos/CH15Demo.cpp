@@ -33,9 +33,7 @@ void CH15Demo::Update(float dt) {
 void CH15Demo::ImGUI() {
     // book.md 2.5; the book's PushItemWidth calls are popped here (erratum 5.2-26).
     Ch15Params& p = scene.Params();
-    ImGui::SetNextWindowPos(ImVec2(400.0f, 10.0f), ImGuiCond_Once);
-    ImGui::SetNextWindowSize(ImVec2(370.0f, 75.0f), ImGuiCond_Always);
-    ImGui::Begin("Chapter 15 Demo", nullptr, ImGuiWindowFlags_NoResize);
+    BeginPanel("Chapter 15 Demo", 75.0f);
     ImGui::PushItemWidth(55.0f);
     ImGui::SliderFloat("Porjection", &p.projection, 0.2f, 0.8f);
     ImGui::PopItemWidth();

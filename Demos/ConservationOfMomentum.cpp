@@ -32,9 +32,7 @@ void ConservationOfMomentum::Update(float dt) {
 }
 
 void ConservationOfMomentum::ImGUI() {
-    ImGui::SetNextWindowPos(ImVec2(400.0f, 10.0f), ImGuiCond_Once);
-    ImGui::SetNextWindowSize(ImVec2(370.0f, 100.0f), ImGuiCond_Always);
-    ImGui::Begin("Conservation Demo", nullptr, ImGuiWindowFlags_NoResize);
+    BeginPanel("Conservation Demo", 100.0f);
     if (ImGui::Button("Reset")) scene.Reset();
     ImGui::End();
     DemoBase::ImGUI();

@@ -33,9 +33,7 @@ void LinearImpulse::Update(float dt) {
 void LinearImpulse::ImGUI() {
     // book.md 2.3; the PushItemWidth is popped here (erratum 5.2-26).
     LinearImpulseParams& p = scene.Params();
-    ImGui::SetNextWindowPos(ImVec2(400.0f, 10.0f), ImGuiCond_Once);
-    ImGui::SetNextWindowSize(ImVec2(370.0f, 100.0f), ImGuiCond_Always);
-    ImGui::Begin("Linear Impulse Demo", nullptr, ImGuiWindowFlags_NoResize);
+    BeginPanel("Linear Impulse Demo", 100.0f);
     if (ImGui::Button("Step")) scene.RequestSteps();
     ImGui::SameLine();
     ImGui::PushItemWidth(100.0f);
