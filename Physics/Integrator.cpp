@@ -61,6 +61,8 @@ int ForceEvaluations(Integrator integrator) {
 
 void IntegrateParticleStates(Integrator method, Particle* const* particles, std::size_t count,
                              IntegratorScratch* scratch, float dt, ForceEvaluator evaluate, void* context) {
+    // Particle::InvMass inlined (it is out of line): 0 for mass 0.
+    auto InvMassOf = [](const Particle& p) { return p.GetMass() == 0.0f ? 0.0f : 1.0f / p.GetMass(); };
     if (count == 0 || !(dt > 0.0f)) return;
     const float halfDt = 0.5f * dt;
     switch (method) {
@@ -70,7 +72,7 @@ void IntegrateParticleStates(Integrator method, Particle* const* particles, std:
             for (std::size_t i = 0; i < count; ++i) {
                 Particle& p = *particles[i];
                 const vec3 v0 = Scale(p.velocity, p.friction);
-                const vec3 a = Scale(p.forces, p.InvMass());
+                const vec3 a = Scale(p.forces, InvMassOf(p));
                 p.oldPosition = p.position;
                 p.position = Mad(p.position, v0, dt);
                 p.velocity = Mad(v0, a, dt);
@@ -82,7 +84,7 @@ void IntegrateParticleStates(Integrator method, Particle* const* particles, std:
             evaluate(context);
             for (std::size_t i = 0; i < count; ++i) {
                 Particle& p = *particles[i];
-                const vec3 a = Scale(p.forces, p.InvMass());
+                const vec3 a = Scale(p.forces, InvMassOf(p));
                 p.oldPosition = p.position;
                 p.velocity = Mad(Scale(p.velocity, p.friction), a, dt);
                 p.position = Mad(p.position, p.velocity, dt);
@@ -98,7 +100,7 @@ void IntegrateParticleStates(Integrator method, Particle* const* particles, std:
                 IntegratorScratch& s = scratch[i];
                 s.x0 = p.position;
                 s.v0 = Scale(p.velocity, p.friction);
-                s.a0 = Scale(p.forces, p.InvMass());
+                s.a0 = Scale(p.forces, InvMassOf(p));
                 p.position = Mad(s.x0, Mad(s.v0, s.a0, halfDt), dt);
                 p.velocity = Mad(s.v0, s.a0, dt);  // predicted, for velocity-dependent forces
             }
@@ -106,7 +108,7 @@ void IntegrateParticleStates(Integrator method, Particle* const* particles, std:
             for (std::size_t i = 0; i < count; ++i) {
                 Particle& p = *particles[i];
                 const IntegratorScratch& s = scratch[i];
-                const vec3 a1 = Scale(p.forces, p.InvMass());
+                const vec3 a1 = Scale(p.forces, InvMassOf(p));
                 p.oldPosition = s.x0;
                 p.velocity = Mad(s.v0, Add(s.a0, a1), halfDt);
             }
@@ -122,11 +124,11 @@ void IntegrateParticleStates(Integrator method, Particle* const* particles, std:
             // position after SetPosition or a constraint hit): there a_prev := a0, so x1 = x0 + v dt + a0 dt^2/2.
             const float dtSq = dt * dt;
             for (std::size_t i = 0; i < count; ++i)
-                scratch[i].a0 = Scale(particles[i]->forces, particles[i]->InvMass());
+                scratch[i].a0 = Scale(particles[i]->forces, InvMassOf(*particles[i]));
             evaluate(context);
             for (std::size_t i = 0; i < count; ++i) {
                 Particle& p = *particles[i];
-                const vec3 a = Scale(p.forces, p.InvMass());
+                const vec3 a = Scale(p.forces, InvMassOf(p));
                 const vec3 aPrev = SameBits(p.oldPosition, p.position) ? a : scratch[i].a0;
                 const vec3 history = Mad(Scale(p.velocity, dt), aPrev, -0.5f * dtSq);  // x0 - x_prev
                 const vec3 step = Mad(Scale(history, p.friction), a, dtSq);            // x1 - x0
@@ -154,7 +156,7 @@ void IntegrateParticleStates(Integrator method, Particle* const* particles, std:
             for (std::size_t i = 0; i < count; ++i) {
                 Particle& p = *particles[i];
                 IntegratorScratch& s = scratch[i];
-                const vec3 kv = Scale(p.forces, p.InvMass());
+                const vec3 kv = Scale(p.forces, InvMassOf(p));
                 s.sumX = s.v0;
                 s.sumV = kv;
                 p.position = Mad(s.x0, s.v0, halfDt);
@@ -165,7 +167,7 @@ void IntegrateParticleStates(Integrator method, Particle* const* particles, std:
                 Particle& p = *particles[i];
                 IntegratorScratch& s = scratch[i];
                 const vec3 kx = p.velocity;
-                const vec3 kv = Scale(p.forces, p.InvMass());
+                const vec3 kv = Scale(p.forces, InvMassOf(p));
                 s.sumX = Mad(s.sumX, kx, 2.0f);
                 s.sumV = Mad(s.sumV, kv, 2.0f);
                 p.position = Mad(s.x0, kx, halfDt);
@@ -176,7 +178,7 @@ void IntegrateParticleStates(Integrator method, Particle* const* particles, std:
                 Particle& p = *particles[i];
                 IntegratorScratch& s = scratch[i];
                 const vec3 kx = p.velocity;
-                const vec3 kv = Scale(p.forces, p.InvMass());
+                const vec3 kv = Scale(p.forces, InvMassOf(p));
                 s.sumX = Mad(s.sumX, kx, 2.0f);
                 s.sumV = Mad(s.sumV, kv, 2.0f);
                 p.position = Mad(s.x0, kx, dt);
@@ -187,7 +189,7 @@ void IntegrateParticleStates(Integrator method, Particle* const* particles, std:
                 Particle& p = *particles[i];
                 const IntegratorScratch& s = scratch[i];
                 const vec3 kx = p.velocity;
-                const vec3 kv = Scale(p.forces, p.InvMass());
+                const vec3 kv = Scale(p.forces, InvMassOf(p));
                 p.oldPosition = s.x0;
                 p.position = Mad(s.x0, Add(s.sumX, kx), sixthDt);
                 p.velocity = Mad(s.v0, Add(s.sumV, kv), sixthDt);

@@ -80,10 +80,13 @@ bool ClipSegment(const OBB& box, const vec3& p0, const vec3& delta, SegmentHit* 
     return true;
 }
 
+inline float Min(float a, float b) { return a < b ? a : b; }
+inline float Max(float a, float b) { return a > b ? a : b; }
+
+/// True when the segment's AABB and the constraint's AABB are disjoint (plain compares: no libm calls).
 inline bool SegmentMissesBounds(const vec3& a, const vec3& b, const ParticleConstraint& c) {
-    return std::fmax(a.x, b.x) < c.boundsMin.x || std::fmin(a.x, b.x) > c.boundsMax.x ||
-           std::fmax(a.y, b.y) < c.boundsMin.y || std::fmin(a.y, b.y) > c.boundsMax.y ||
-           std::fmax(a.z, b.z) < c.boundsMin.z || std::fmin(a.z, b.z) > c.boundsMax.z;
+    return Max(a.x, b.x) < c.boundsMin.x || Min(a.x, b.x) > c.boundsMax.x || Max(a.y, b.y) < c.boundsMin.y ||
+           Min(a.y, b.y) > c.boundsMax.y || Max(a.z, b.z) < c.boundsMin.z || Min(a.z, b.z) > c.boundsMax.z;
 }
 
 }  // namespace
