@@ -1,0 +1,133 @@
+#!/usr/bin/env bash
+# Turns psb-sweep CSV output into the PNG figures of docs/sweep.md (gnuplot, from gnuplot-nox).
+#   scripts/plot-sweep.sh [CSV...] [-o OUTDIR]
+# Defaults: docs/sweep/results.csv -> docs/sweep/. Several CSVs (shards) are merged; repeated headers skipped.
+# Axis labels come from problems.tsv (psb-sweep --list) beside the first CSV, when present.
+# Per problem: error against CPU cost (s per simulated s) on log-log axes, one line per integrator or solver
+# setting, the Pareto front (no cheaper run is as accurate) as a black dashed line. For spring-stiffness,
+# cloth (+ cloth-stiffness) and stack-mass-ratio: a stability map, step size against stiffness or mass ratio,
+# one panel per integrator (or per solver iteration count), each run coloured stable / inaccurate / unstable.
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+out="$root/docs/sweep"
+inputs=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    -o) out="$2"; shift 2 ;;
+    -h|--help) sed -n '2,8p' "$0"; exit 0 ;;
+    *) inputs+=("$1"); shift ;;
+  esac
+done
+[ ${#inputs[@]} -gt 0 ] || inputs=("$root/docs/sweep/results.csv")
+units="$(dirname "${inputs[0]}")/problems.tsv"
+for f in "${inputs[@]}"; do
+  [ -r "$f" ] || { echo "plot-sweep: cannot read '$f'" >&2; exit 2; }
+done
+command -v gnuplot >/dev/null || { echo "plot-sweep: gnuplot not found (scripts/install-deps.sh)" >&2; exit 1; }
+mkdir -p "$out"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+# Merge: keep one header, sort rows by run index so shards give the same file as one process.
+{ head -n 1 "${inputs[0]}"; for f in "${inputs[@]}"; do tail -n +2 "$f"; done | sort -t, -k1,1n; } > "$work/all.csv"
+
+# Columns: 1 run, 2 problem, 3 integrator, 4 dt, 5 substeps, 6 iterations, 7 projection, 8 param, 9 error,
+# 10 cpu_per_sim_s, 11 stable, 12 steps, 13 sim_s, 14 note.
+series_name() {  # awk snippet: the legend of a row
+  cat <<'AWK'
+function series(   s) {
+  if ($3 != "-") s = $3; else s = "volumes";
+  if ($6 != "-") s = s " it=" $6;
+  if ($7 != "-") s = s " proj=" ($7 == "1" ? "on" : "off");
+  if ($5 != "1") s = s " sub=" $5;
+  if ($8 != "-" && multi) s = s " " pname "=" $8;
+  return s;
+}
+AWK
+}
+
+problems=$(awk -F, 'NR > 1 { print $2 }' "$work/all.csv" | awk '!seen[$0]++')
+maps="spring-stiffness cloth-stiffness stack-mass-ratio"
+
+for p in $problems; do
+  case " $maps " in *" $p "*) continue ;; esac
+  dir="$work/$p"
+  mkdir -p "$dir"
+  # One file per series: "cost error", stable runs only, floors so log axes accept exact answers.
+  multi=$(awk -F, -v p="$p" 'NR > 1 && $2 == p { v[$8] = 1 } END { n = 0; for (k in v) n++; print (n > 1) }' "$work/all.csv")
+  awk -F, -v p="$p" -v dir="$dir" -v multi="$multi" -v pname="$([ "$p" = cloth ] && echo k || echo e)" \
+    "$(series_name)"'
+    NR > 1 && $2 == p && $11 == 1 && $9 != "inf" && $9 != "nan" {
+      s = series(); f = dir "/" s ".dat"; gsub(/ /, "_", f);
+      if (!(f in files)) { files[f] = s; order[++n] = f }
+      e = $9 + 0; if (e < 1e-9) e = 1e-9; c = $10 + 0; if (c < 1e-8) c = 1e-8;
+      print c, e > f
+    }
+    END { for (i = 1; i <= n; i++) print order[i] "\t" files[order[i]] > (dir "/index") }' "$work/all.csv"
+  [ -s "$dir/index" ] || continue
+  # Pareto front over every stable run: by cost, keep a run only if it beats every cheaper one.
+  cat "$dir"/*.dat | sort -g -k1,1 -k2,2 | awk 'BEGIN { best = 1e300 } $2 < best { best = $2; print }' > "$dir/pareto"
+  # Axis label from `psb-sweep --list` saved next to the CSV (docs/sweep/problems.tsv), if present.
+  unit=""
+  [ -r "$units" ] && unit=$(awk -F'\t' -v p="$p" '$1 == p { print $2 }' "$units")
+  [ -n "$unit" ] || unit="error"
+  plot=""
+  while IFS=$'\t' read -r file title; do
+    sort -g -k1,1 "$file" -o "$file"
+    plot+="'$file' using 1:2 with linespoints lw 2 pt 7 ps 0.8 title '$title', "
+  done < "$dir/index"
+  plot+="'$dir/pareto' using 1:2 with lines lw 2 dt 2 lc rgb 'black' title 'Pareto front'"
+  gnuplot <<GP
+set terminal pngcairo size 900,600 font ',10'
+set output '$out/$p.png'
+set logscale xy
+set format x '10^{%L}'
+set format y '10^{%L}'
+set grid
+set key outside right top
+set title "$p: error against cost (stable runs)"
+set xlabel 'CPU seconds per simulated second'
+set ylabel "$unit"
+plot $plot
+GP
+  echo "plot-sweep: $out/$p.png"
+done
+
+# Stability maps. tol: largest error still called "stable" (accurate).
+stability_map() {  # problem(s) regex, output name, y label, tolerance, panel column (3 integrator, 6 iterations)
+  local regex="$1" name="$2" ylabel="$3" tol="$4" col="$5"
+  local dir="$work/map-$name"
+  mkdir -p "$dir"
+  awk -F, -v re="$regex" -v dir="$dir" -v tol="$tol" -v col="$col" '
+    NR > 1 && $2 ~ re {
+      panel = $col; f = dir "/" panel;
+      if (!(panel in seen)) { seen[panel] = 1; order[++n] = panel }
+      y = $8 + 0; if (y < 0) y = -y;
+      cls = ($11 != 1 || $9 == "inf" || $9 == "nan") ? 2 : (($9 + 0) > tol ? 1 : 0);
+      print $4, y, cls > f
+    }
+    END { for (i = 1; i <= n; i++) print order[i] > (dir "/panels") }' "$work/all.csv"
+  [ -s "$dir/panels" ] || return 0
+  local count; count=$(wc -l < "$dir/panels")
+  local cols=$(( count < 3 ? count : 3 )); local rows=$(( (count + cols - 1) / cols ))
+  {
+    echo "set terminal pngcairo size $((380 * cols)),$((330 * rows + 40)) font ',9'"
+    echo "set output '$out/$name.png'"
+    echo "set multiplot layout $rows,$cols title '$name: green stable, orange inaccurate (error > $tol), red unstable'"
+    echo "set logscale xy; set format x '10^{%L}'; set format y '10^{%L}'; set grid; unset key"
+    echo "set xlabel 'dt (s)'; set ylabel '$ylabel'; set xrange [5e-5:0.2]; set offsets 0,0,graph 0.05, graph 0.05"
+    echo "set palette defined (0 '#2ca02c', 1 '#ff9f1a', 2 '#d62728'); set cbrange [0:2]; unset colorbox"
+    while read -r panel; do
+      local label="$panel"; [ "$col" = 6 ] && label="iterations $panel"
+      echo "set title '$label'"
+      echo "plot '$dir/$panel' using 1:2:3 with points pt 5 ps 2.2 palette"
+    done < "$dir/panels"
+    echo "unset multiplot"
+  } | gnuplot
+  echo "plot-sweep: $out/$name.png"
+}
+
+stability_map '^spring-stiffness$' spring-stability 'stiffness K (N/m), 1 kg' 0.05 3
+stability_map '^cloth(-stiffness)?$' cloth-stability '|book k| (x 33.3 N/m)' 0.05 3
+stability_map '^stack-mass-ratio$' stack-stability 'top box mass ratio' 0.01 6
