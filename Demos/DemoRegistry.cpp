@@ -2,9 +2,12 @@
 
 #include "CH14Demo.h"
 #include "CH15Demo.h"
+#include "CH16Demo.h"
 #include "ConservationOfMomentum.h"
+#include "JointDemo.h"
 #include "DemoBase.h"
 #include "LinearImpulse.h"
+#include "SimpleSprings.h"
 // Each demo adds its include and one row below, in the book's list order.
 
 const std::vector<DemoInfo>& AllDemos() {
@@ -14,6 +17,9 @@ const std::vector<DemoInfo>& AllDemos() {
         {"linear-impulse", "Linear Impulse", [] { return std::make_unique<LinearImpulse>(); }},
         {"momentum", "Conservation Of Momentum", [] { return std::make_unique<ConservationOfMomentum>(); }},
         {"ch15", "Chapter 15", [] { return std::make_unique<CH15Demo>(); }},
+        {"springs", "Simple Springs", [] { return std::make_unique<SimpleSprings>(); }},
+        {"ch16", "Chapter 16", [] { return std::make_unique<CH16Demo>(); }},
+        {"joints", "Joint Demo", [] { return std::make_unique<JointDemo>(); }},
     };
     return demos;
 }

@@ -1,0 +1,57 @@
+#include "CH16Demo.h"
+
+#include <imgui.h>
+
+#include "FixedFunctionPhysics.h"
+#include "FixedFunctionPrimitives.h"
+#include "SoftDemoPanel.h"
+
+CH16Demo::CH16Demo() { scene.AddParameters(&params); }
+
+void CH16Demo::Initialize(int width, int height) {
+    DemoBase::Initialize(width, height);
+    InitializeSoftDemoView(this);
+    scene.Reset();
+    reported = false;
+}
+
+void CH16Demo::Update(float dt) {
+    DemoBase::Update(dt);
+    scene.Advance(dt);
+    ReportOnce(scene.Monitor(), "ch16", &reported);
+}
+
+void CH16Demo::Render() {
+    DemoBase::Render();
+    SetLightDirection(kSoftDemoLight);
+    SetLightColors(BookColors::kConstraintAmbient, BookColors::kConstraintDiffuse);
+    for (int i = 0; i < 4; ++i) ::Render(Ch16Scene::PostVisual(i));
+    SetLightColors(BookColors::kGroundAmbient, BookColors::kGroundDiffuse);
+    ::Render(Ch16Scene::Ground());
+    // The book's DebugRender cannot be toggled (erratum 5.2-25): always the red one-sided triangles.
+    if (scene.Monitor().Stable()) ::Render(scene.GetCloth(), scene.System().DebugRender);
+}
+
+void CH16Demo::ImGUI() {
+    Ch16Params& p = scene.Params();
+    BeginSoftPanel("Chapter 16 Demo", p.integrator, p.dt, scene.Monitor());
+    ImGui::PushItemWidth(50.0f);
+    ImGui::SliderInt("Count", &p.count, 5, 30);
+    ImGui::SameLine();
+    ImGui::SliderFloat("Distance", &p.distance, 0.1f, 1.0f);
+    ImGui::SameLine();
+    ImGui::SliderFloat("Spring k", &p.k, -5.0f, 0.0f);
+    ImGui::PopItemWidth();  // erratum 5.2-26: the book never pops it
+    if (ImGui::Button("Reset")) {
+        scene.Reset();
+        reported = false;
+    }
+    EndSoftPanel(params, scene.Monitor());
+    DemoBase::ImGUI();
+}
+
+void CH16Demo::CollectState(std::vector<BodyState>* out) const {
+    const std::vector<Particle>& verts = scene.GetCloth().verts;
+    for (std::size_t i = 0; i < verts.size(); ++i)
+        out->push_back({static_cast<int>(i), "cloth-particle", verts[i].GetPosition(), verts[i].GetVelocity()});
+}

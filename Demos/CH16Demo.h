@@ -1,0 +1,29 @@
+#pragma once
+// Chapter 16 (book.md 2.7): a 15 x 15 cloth dropped onto four posts. The scene (Ch16Scene) is GL-free and
+// shared with the tests and bench/cloth_bench.cpp.
+
+#include "Ch16Scene.h"
+#include "DemoBase.h"
+
+class CH16Demo : public DemoBase {
+public:
+    /// Registers count, distance, k, damping, reset, integrator and dt (--set resets the scene).
+    CH16Demo();
+    /// Book camera preset (CH14's), lighting on, scene rebuilt from the current values.
+    void Initialize(int width, int height) override;
+    /// Origin, light (0, 1, 0, 0), the four posts drawn thin (half-size 0.1, 0.5, 0.1) in green although they
+    /// collide at 0.3, the ground in blue, the cloth as red one-sided triangles (book.md 2.7).
+    void Render() override;
+    /// Camera, then the scene's steps due after dt; stops and prints the report once the monitor fails.
+    void Update(float dt) override;
+    /// "Chapter 16 Demo" panel at (400,10), size (370,75): Count, Distance, Spring k (width 50), Reset.
+    void ImGUI() override;
+    /// One "cloth-particle" row per cloth particle, index z*N + x.
+    void CollectState(std::vector<BodyState>* out) const override;
+
+    const Ch16Scene& Scene() const { return scene; }
+
+private:
+    Ch16Scene scene;
+    bool reported = false;
+};

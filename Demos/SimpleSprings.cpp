@@ -1,0 +1,59 @@
+#include "SimpleSprings.h"
+
+#include <imgui.h>
+
+
+#include "FixedFunctionPhysics.h"
+#include "FixedFunctionPrimitives.h"
+#include "SoftDemoPanel.h"
+
+SimpleSprings::SimpleSprings() { scene.AddParameters(&params); }
+
+void SimpleSprings::Initialize(int width, int height) {
+    DemoBase::Initialize(width, height);
+    InitializeSoftDemoView(this);
+    scene.Reset();
+    reported = false;
+}
+
+void SimpleSprings::Update(float dt) {
+    DemoBase::Update(dt);
+    scene.Advance(dt);
+    ReportOnce(scene.Monitor(), "springs", &reported);
+}
+
+void SimpleSprings::Render() {
+    DemoBase::Render();
+    SetLightDirection(kSoftDemoLight);
+    if (scene.Monitor().Stable()) {
+        ::Render(scene.System());
+    } else {
+        RenderConstraintsOnly(scene.System().Constraints());  // no garbage: the report is on the panel
+    }
+}
+
+void SimpleSprings::ImGUI() {
+    SpringsParams& p = scene.Params();
+    BeginSoftPanel("Simple Springs Demo", scene.Params().integrator, p.dt, scene.Monitor());
+    ImGui::PushItemWidth(100.0f);
+    ImGui::SliderFloat("k", &p.k, -5.0f, 0.0f);
+    ImGui::SameLine();
+    ImGui::SliderFloat("b", &p.b, 0.0f, 1.0f);
+    ImGui::SameLine();
+    ImGui::SliderFloat("l", &p.restLength, 0.0f, 5.0f);
+    ImGui::PopItemWidth();  // erratum 5.2-26: the book never pops it
+    if (ImGui::Button("Reset")) {
+        scene.Reset();
+        reported = false;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Show Help")) show_help = true;
+    EndSoftPanel(params, scene.Monitor());
+    DemoBase::ImGUI();
+}
+
+void SimpleSprings::CollectState(std::vector<BodyState>* out) const {
+    const std::vector<Particle>& particles = scene.Particles();
+    for (std::size_t i = 0; i < particles.size(); ++i)
+        out->push_back({static_cast<int>(i), "particle", particles[i].GetPosition(), particles[i].GetVelocity()});
+}

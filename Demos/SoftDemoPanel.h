@@ -1,0 +1,25 @@
+#pragma once
+// Shared by the chapter 16 demos (SimpleSprings, CH16Demo, JointDemo): view set-up, the panel frame with the
+// book's size, and the stability report in place of garbage.
+
+#include <vector>
+
+#include "DemoBase.h"
+#include "Geometry3D.h"
+#include "Integrator.h"
+#include "StabilityMonitor.h"
+
+/// Light of the chapter 16 demos' Render: (0, 1, 0, 0), straight down (book.md 1.5).
+constexpr vec3 kSoftDemoLight{0.0f, 1.0f, 0.0f};
+
+/// Lighting on, light (0.5, 1, -1.5, 0) until the first Render, CH14's camera preset (book.md 1.4).
+void InitializeSoftDemoView(DemoBase* demo);
+/// Opens the demo panel at (400,10), width 370, height 75 as the book; one text row taller for each of:
+/// a non-book integrator or dt, an instability report.
+void BeginSoftPanel(const char* title, Integrator integrator, float dt, const StabilityMonitor& monitor);
+/// Writes those extra rows (read-only; they are set with --set integrator=... dt=...) and ends the panel.
+void EndSoftPanel(const ParameterSet& params, const StabilityMonitor& monitor);
+/// Prints the monitor's report to stderr the first time it fails (*reported latches).
+void ReportOnce(const StabilityMonitor& monitor, const char* demo, bool* reported);
+/// Constraint 0 blue, the rest green: what is left to draw once a scene has blown up.
+void RenderConstraintsOnly(const std::vector<OBB>& constraints);
