@@ -37,7 +37,7 @@ struct HeadlessInfo {
 };
 
 /// Pins what makes Mesa's software rasteriser reproducible across machines: GALLIUM_DRIVER=llvmpipe and
-/// LP_NATIVE_VECTOR_WIDTH=128 (overwritten), LP_NUM_THREADS (only if unset; it does not change pixels).
+/// LP_NATIVE_VECTOR_WIDTH=128 (overwritten), LP_NUM_THREADS=0 (only if unset; it does not change pixels).
 /// Must run before the first context is created. Mesa 22.3's libOSMesa reads all three.
 void PinSoftwareRasterizer();
 
