@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "Ch16Scene.h"
@@ -43,15 +44,16 @@ std::vector<vec3> Positions(const Ch16Scene& scene) {
     return out;
 }
 
-/// Converged positions at 2 s for a book stiffness, computed once per process.
-const std::vector<vec3>& Reference(double bookK) {
-    static std::map<double, std::vector<vec3>> cache;
-    auto it = cache.find(bookK);
+/// Converged positions at `seconds` (2 s, or n dt for a step that does not divide 2 s) for a book stiffness,
+/// computed once per process.
+const std::vector<vec3>& Reference(double bookK, double seconds) {
+    static std::map<std::pair<double, long long>, std::vector<vec3>> cache;
+    const long long n = StepsFor(seconds, kReferenceDt);
+    auto it = cache.find({bookK, n});
     if (it != cache.end()) return it->second;
     auto scene = MakeCloth(ClothParams(Integrator::RK4, kReferenceDt, bookK));
-    const long long n = StepsFor(kSeconds, kReferenceDt);
     for (long long i = 0; i < n; ++i) scene->Step();
-    return cache[bookK] = Positions(*scene);
+    return cache[{bookK, n}] = Positions(*scene);
 }
 
 double RmsDistance(const std::vector<vec3>& a, const std::vector<vec3>& b) {
@@ -63,9 +65,9 @@ double RmsDistance(const std::vector<vec3>& a, const std::vector<vec3>& b) {
 /// param = the book's k (velocity change per 0.03 s step per metre; -3 in the demo). The StabilityMonitor of
 /// the scene (issue 6) decides "unstable"; its report goes in the note.
 Outcome RunCloth(const Settings& s) {
-    const std::vector<vec3>& reference = Reference(s.param);  // before the timer
-    auto scene = MakeCloth(ClothParams(s.integrator, s.dt, s.param));
     const long long n = StepsFor(kSeconds, s.dt);
+    const std::vector<vec3>& reference = Reference(s.param, double(n) * s.dt);  // before the timer
+    auto scene = MakeCloth(ClothParams(s.integrator, s.dt, s.param));
     Outcome o;
     const double t0 = CpuNow();
     long long i = 0;

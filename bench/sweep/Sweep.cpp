@@ -18,14 +18,20 @@ const std::vector<Problem>& AllProblems() {
     return problems;
 }
 
+namespace {
+std::vector<double> gOverride;  // --dt: replaces both lists for the whole run
+}  // namespace
+
+void OverrideStepSizes(const std::vector<double>& dts) { gOverride = dts; }
+
 const std::vector<double>& StepSizes() {
     static const std::vector<double> dts{1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3, 0.01, 0.02, 0.05, 0.1};
-    return dts;
+    return gOverride.empty() ? dts : gOverride;
 }
 
 const std::vector<double>& QuickStepSizes() {
     static const std::vector<double> dts{1e-3, 0.01, 0.05};
-    return dts;
+    return gOverride.empty() ? dts : gOverride;
 }
 
 double CpuNow() {

@@ -57,6 +57,9 @@ void AddClothProblems(std::vector<Problem>* out);
 const std::vector<double>& StepSizes();
 /// A few of them for --quick.
 const std::vector<double>& QuickStepSizes();
+/// --dt: use these step sizes instead (e.g. a demo's 0.03 s); a step that does not divide a problem's
+/// duration runs round(T / dt) steps and is compared with the reference at that time.
+void OverrideStepSizes(const std::vector<double>& dts);
 
 /// Thread CPU time in seconds (CLOCK_THREAD_CPUTIME_ID).
 double CpuNow();

@@ -14,13 +14,14 @@
 namespace {
 
 constexpr const char* kUsage =
-    "usage: psb-sweep [--problem NAME]... [--quick] [--shard I/N] [--out FILE] [--list] [--help]\n"
+    "usage: psb-sweep [--problem NAME]... [--quick] [--dt LIST] [--shard I/N] [--out FILE] [--list] [--help]\n"
     "Runs the reference problems of docs/sweep.md over their settings; one CSV row per run.\n"
     "  --problem NAME  run only this problem (repeatable; default: every problem --list does not mark\n"
     "                  'not in the default set')\n"
     "  --quick         a small grid per problem (CI)\n"
     "  --shard I/N     run only runs I, I+N, I+2N, ... of the selected grid (1 <= I <= N); the union of the N\n"
     "                  shards is the whole sweep, rows in the same order once concatenated and sorted by run\n"
+    "  --dt LIST       comma-separated step sizes (s) replacing the default 1e-4 .. 0.1 grid, e.g. a demo's 0.03\n"
     "  --out FILE      write the CSV to FILE instead of stdout\n"
     "  --list          print the problems (name, error measured, swept parameter) and exit\n"
     "  --help          this text\n"
@@ -105,6 +106,20 @@ int main(int argc, char** argv) {
             if (!value(&v)) return Fail("--shard needs I/N");
             if (!ParseShard(v, &shardIndex, &shardCount))
                 return Fail("bad --shard '" + v + "': expected I/N with integers 1 <= I <= N");
+        } else if (arg == "--dt") {
+            if (!value(&v)) return Fail("--dt needs a comma-separated list of step sizes");
+            std::vector<double> dts;
+            std::stringstream list(v);
+            std::string item;
+            while (std::getline(list, item, ',')) {
+                char* end = nullptr;
+                const double dt = std::strtod(item.c_str(), &end);
+                if (item.empty() || *end != '\0' || !(dt >= 1e-6 && dt <= 1.0))
+                    return Fail("bad --dt value '" + item + "': expected a number of seconds in [1e-6, 1]");
+                dts.push_back(dt);
+            }
+            if (dts.empty()) return Fail("--dt needs at least one step size");
+            sweep::OverrideStepSizes(dts);
         } else if (arg == "--out") {
             if (!value(&v) || v.empty()) return Fail("--out needs a file name");
             outPath = v;

@@ -1,0 +1,6 @@
+# psb-model-cost (issue 7 item 5): each demo scene's step as built and with an unused subsystem present.
+find_package(benchmark QUIET)
+if(benchmark_FOUND)
+  add_executable(psb-model-cost ${CMAKE_CURRENT_LIST_DIR}/model_cost_bench.cpp)
+  target_link_libraries(psb-model-cost PRIVATE psb_scenes psb_physics psb_options benchmark::benchmark)
+endif()
