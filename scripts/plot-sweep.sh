@@ -131,3 +131,30 @@ stability_map() {  # problem(s) regex, output name, y label, tolerance, panel co
 stability_map '^spring-stiffness$' spring-stability 'stiffness K (N/m), 1 kg' 0.05 3
 stability_map '^cloth(-stiffness)?$' cloth-stability '|book k| (x 33.3 N/m)' 0.05 3
 stability_map '^stack-mass-ratio$' stack-stability 'top box mass ratio' 0.01 6
+
+# "For this error, use this setting; it costs this much": per problem and target error, the cheapest stable run
+# whose error is at or below the target (markdown, included by docs/sweep.md).
+awk -F, -v maps=" $maps " '
+  NR > 1 && $11 == 1 && $9 != "inf" && $9 != "nan" && index(maps, " " $2 " ") == 0 {
+    s = ($3 != "-" ? $3 : "volumes") " dt=" $4;
+    if ($5 != "1") s = s " substeps=" $5;
+    if ($6 != "-") s = s " iterations=" $6;
+    if ($7 != "-") s = s " projection=" ($7 == "1" ? "on" : "off");
+    label = $2; if ($8 != "-") label = label " (param " $8 ")";
+    for (t = 1; t <= 3; t++) {
+      target = 10 ^ -t; k = label SUBSEP target;
+      if ($9 + 0 <= target && (!(k in cost) || $10 + 0 < cost[k])) { cost[k] = $10 + 0; set[k] = s; err[k] = $9 }
+    }
+    if (!(label in seen)) { seen[label] = 1; order[++n] = label }
+  }
+  END {
+    print "| problem | target error | cheapest setting that meets it | error | CPU s per simulated s |";
+    print "|---|---|---|---|---|";
+    for (i = 1; i <= n; i++)
+      for (t = 1; t <= 3; t++) {
+        target = 10 ^ -t; k = order[i] SUBSEP target;
+        if (k in cost) printf "| %s | %g | %s | %s | %.3g |\n", order[i], target, set[k], err[k], cost[k];
+        else printf "| %s | %g | none in the sweep | | |\n", order[i], target;
+      }
+  }' "$work/all.csv" > "$out/cheapest.md"
+echo "plot-sweep: $out/cheapest.md"
