@@ -24,29 +24,13 @@ vec2& operator/=(vec2& l, float r) { return l = l / r; }
 bool operator==(const vec2& l, const vec2& r) { return CMP(l.x, r.x) && CMP(l.y, r.y); }
 bool operator!=(const vec2& l, const vec2& r) { return !(l == r); }
 
-vec3 operator+(const vec3& l, const vec3& r) { return {l.x + r.x, l.y + r.y, l.z + r.z}; }
-vec3 operator-(const vec3& l, const vec3& r) { return {l.x - r.x, l.y - r.y, l.z - r.z}; }
-vec3 operator*(const vec3& l, const vec3& r) { return {l.x * r.x, l.y * r.y, l.z * r.z}; }
-vec3 operator*(const vec3& l, float r) { return {l.x * r, l.y * r, l.z * r}; }
-vec3 operator*(float l, const vec3& r) { return r * l; }
-vec3 operator/(const vec3& l, const vec3& r) { return {l.x / r.x, l.y / r.y, l.z / r.z}; }
-vec3 operator/(const vec3& l, float r) { return {l.x / r, l.y / r, l.z / r}; }
-vec3 operator-(const vec3& v) { return {-v.x, -v.y, -v.z}; }
-vec3& operator+=(vec3& l, const vec3& r) { return l = l + r; }
-vec3& operator-=(vec3& l, const vec3& r) { return l = l - r; }
-vec3& operator*=(vec3& l, const vec3& r) { return l = l * r; }
-vec3& operator*=(vec3& l, float r) { return l = l * r; }
-vec3& operator/=(vec3& l, const vec3& r) { return l = l / r; }
-vec3& operator/=(vec3& l, float r) { return l = l / r; }
 bool operator==(const vec3& l, const vec3& r) { return CMP(l.x, r.x) && CMP(l.y, r.y) && CMP(l.z, r.z); }
 bool operator!=(const vec3& l, const vec3& r) { return !(l == r); }
 
 float Dot(const vec2& l, const vec2& r) { return l.x * r.x + l.y * r.y; }
-float Dot(const vec3& l, const vec3& r) { return l.x * r.x + l.y * r.y + l.z * r.z; }
 float Magnitude(const vec2& v) { return std::sqrt(Dot(v, v)); }
 float Magnitude(const vec3& v) { return std::sqrt(Dot(v, v)); }
 float MagnitudeSq(const vec2& v) { return Dot(v, v); }
-float MagnitudeSq(const vec3& v) { return Dot(v, v); }
 float Distance(const vec2& p1, const vec2& p2) { return Magnitude(p1 - p2); }
 float Distance(const vec3& p1, const vec3& p2) { return Magnitude(p1 - p2); }
 float DistanceSq(const vec2& p1, const vec2& p2) { return MagnitudeSq(p1 - p2); }
@@ -68,10 +52,6 @@ void Normalize(vec2& v) {
 }
 void Normalize(vec3& v) {
     if (MagnitudeSq(v) > 0.0f) v = Normalized(v);
-}
-
-vec3 Cross(const vec3& l, const vec3& r) {
-    return {l.y * r.z - l.z * r.y, l.z * r.x - l.x * r.z, l.x * r.y - l.y * r.x};
 }
 
 float Angle(const vec2& l, const vec2& r) {

@@ -35,29 +35,29 @@ vec2& operator/=(vec2& l, float r);
 bool operator==(const vec2& l, const vec2& r);
 bool operator!=(const vec2& l, const vec2& r);
 
-vec3 operator+(const vec3& l, const vec3& r);
-vec3 operator-(const vec3& l, const vec3& r);
-vec3 operator*(const vec3& l, const vec3& r);
-vec3 operator*(const vec3& l, float r);
-vec3 operator*(float l, const vec3& r);
-vec3 operator/(const vec3& l, const vec3& r);
-vec3 operator/(const vec3& l, float r);
-vec3 operator-(const vec3& v);
-vec3& operator+=(vec3& l, const vec3& r);
-vec3& operator-=(vec3& l, const vec3& r);
-vec3& operator*=(vec3& l, const vec3& r);
-vec3& operator*=(vec3& l, float r);
-vec3& operator/=(vec3& l, const vec3& r);
-vec3& operator/=(vec3& l, float r);
+inline vec3 operator+(const vec3& l, const vec3& r) { return {l.x + r.x, l.y + r.y, l.z + r.z}; }
+inline vec3 operator-(const vec3& l, const vec3& r) { return {l.x - r.x, l.y - r.y, l.z - r.z}; }
+inline vec3 operator*(const vec3& l, const vec3& r) { return {l.x * r.x, l.y * r.y, l.z * r.z}; }
+inline vec3 operator*(const vec3& l, float r) { return {l.x * r, l.y * r, l.z * r}; }
+inline vec3 operator*(float l, const vec3& r) { return {r.x * l, r.y * l, r.z * l}; }
+inline vec3 operator/(const vec3& l, const vec3& r) { return {l.x / r.x, l.y / r.y, l.z / r.z}; }
+inline vec3 operator/(const vec3& l, float r) { return {l.x / r, l.y / r, l.z / r}; }
+inline vec3 operator-(const vec3& v) { return {-v.x, -v.y, -v.z}; }
+inline vec3& operator+=(vec3& l, const vec3& r) { return l = l + r; }
+inline vec3& operator-=(vec3& l, const vec3& r) { return l = l - r; }
+inline vec3& operator*=(vec3& l, const vec3& r) { return l = l * r; }
+inline vec3& operator*=(vec3& l, float r) { return l = l * r; }
+inline vec3& operator/=(vec3& l, const vec3& r) { return l = l / r; }
+inline vec3& operator/=(vec3& l, float r) { return l = l / r; }
 bool operator==(const vec3& l, const vec3& r);
 bool operator!=(const vec3& l, const vec3& r);
 
 float Dot(const vec2& l, const vec2& r);
-float Dot(const vec3& l, const vec3& r);
+inline float Dot(const vec3& l, const vec3& r) { return l.x * r.x + l.y * r.y + l.z * r.z; }
 float Magnitude(const vec2& v);
 float Magnitude(const vec3& v);
 float MagnitudeSq(const vec2& v);
-float MagnitudeSq(const vec3& v);
+inline float MagnitudeSq(const vec3& v) { return v.x * v.x + v.y * v.y + v.z * v.z; }
 float Distance(const vec2& p1, const vec2& p2);
 float Distance(const vec3& p1, const vec3& p2);
 float DistanceSq(const vec2& p1, const vec2& p2);
@@ -69,7 +69,9 @@ void Normalize(vec3& v);
 vec2 Normalized(const vec2& v);
 vec3 Normalized(const vec3& v);
 /// Left-handed cross product (same formula as right-handed; handedness shows in how it is drawn).
-vec3 Cross(const vec3& l, const vec3& r);
+inline vec3 Cross(const vec3& l, const vec3& r) {
+    return {l.y * r.z - l.z * r.y, l.z * r.x - l.x * r.z, l.x * r.y - l.y * r.x};
+}
 /// Angle between two vectors in radians; 0 if either is zero.
 float Angle(const vec2& l, const vec2& r);
 float Angle(const vec3& l, const vec3& r);

@@ -41,7 +41,13 @@ void PhysicsSystem::AddRigidbody(Rigidbody* body) {
     switch (body->type) {
         case RigidbodyType::Particle:
             particles.push_back(static_cast<Particle*>(body));
-            RebuildParticleList();
+            // Free particles come first in allParticles: appending keeps that order while there is no cloth,
+            // and keeps adding N particles O(N) instead of O(N^2).
+            if (cloths.empty()) {
+                allParticles.push_back(particles.back());
+            } else {
+                RebuildParticleList();
+            }
             break;
         case RigidbodyType::Sphere:
         case RigidbodyType::Box:
