@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "Broadphase.h"
+#include "ContactSolver.h"
 #include "Geometry3D.h"
 #include "Integrator.h"
 #include "Rigidbody.h"
@@ -29,6 +30,7 @@ class DistanceJoint;
 struct CollisionPair {
     RigidbodyVolume* a = nullptr;
     RigidbodyVolume* b = nullptr;
+    int indexA = -1, indexB = -1;  ///< positions of a and b in PhysicsSystem::Volumes() (indexA < indexB)
     CollisionManifold manifold;
 };
 
@@ -39,12 +41,17 @@ public:
     float PenetrationSlack = 0.01f;         ///< 0.01-0.1: penetration left uncorrected
     int ImpulseIteration = 5;               ///< passes over every contact per step
     bool DoLinearProjection = true;
-    bool DebugRender = false;               ///< read by the drawing layer only
-    bool RenderRandomColors = false;        ///< read by the drawing layer only
+    bool DebugRender = false;         ///< read by the drawing layer only
+    bool RenderRandomColors = false;  ///< read by the drawing layer only
     /// How particles (free, cloth and jointed) are integrated. The book ships semi-implicit Euler.
     Integrator integrator = Integrator::SemiImplicitEuler;
     /// Volume pairs are found by sweep-and-prune (Broadphase.h) from this many volumes up; all pairs below.
     std::size_t BroadphaseMinVolumes = 32;
+    /// How contact impulses are solved (ContactSolver.h). Book (default) is the book's per-contact solver;
+    /// Accumulated keeps contacts across steps and lets stacks stand (docs/ch15.md).
+    ContactSolver contactSolver = ContactSolver::Book;
+    /// Settings of the Accumulated solver (iterations and slop are ImpulseIteration and PenetrationSlack).
+    AccumulatedSolverSettings accumulated;
 
     PhysicsSystem();
     ~PhysicsSystem();
@@ -77,6 +84,8 @@ public:
     /// Colliding pairs found at the start of the last step (debug drawing of manifolds).
     const std::vector<CollisionPair>& Collisions() const { return results; }
     std::size_t CollisionCount() const { return resultCount; }
+    /// The Accumulated solver's kept contacts and impulses (empty while contactSolver is Book).
+    const AccumulatedContactSolver& AccumulatedSolver() const { return accumulatedSolver; }
     /// Number of Update calls that advanced the world.
     long long StepCount() const { return stepCount; }
 
@@ -114,8 +123,8 @@ private:
     std::vector<Cloth*> cloths;
     std::vector<OBB> constraints;
     std::vector<Spring> springs;
-    std::vector<Particle*> allParticles;  // free particles then every cloth's particles
-    std::vector<IntegratorScratch> integratorScratch;  // ch14: one per allParticles entry, grown only
+    std::vector<Particle*> allParticles;                  // free particles then every cloth's particles
+    std::vector<IntegratorScratch> integratorScratch;     // ch14: one per allParticles entry, grown only
     std::vector<ParticleConstraint> preparedConstraints;  // ch14: constraints with AABBs, rebuilt per step
 
     std::vector<CollisionPair> results;  // capacity reused; only [0, resultCount) is valid
@@ -123,4 +132,6 @@ private:
     Broadphase broadphase;                            // used only from BroadphaseMinVolumes volumes up
     std::vector<std::pair<int, int>> candidatePairs;  // broadphase output, capacity reused
     long long stepCount = 0;
+    AccumulatedContactSolver accumulatedSolver;  // ch15: arbiter state of ContactSolver::Accumulated
+    float volumeStepDt = 0.0f;                   // this step's dt, kept by ApplyVolumeForces for the solver
 };

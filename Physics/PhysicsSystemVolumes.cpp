@@ -18,13 +18,15 @@ void PhysicsSystem::FindCollisions() {
     resultCount = 0;
     // Test one pair, writing into the next slot of `results`; a slot is kept (with its contact capacity) even
     // when the pair does not collide, so the steady state allocates nothing.
-    auto test = [this](RigidbodyVolume* a, RigidbodyVolume* b) {
+    auto test = [this](std::size_t i, std::size_t j) {
         if (resultCount == results.size()) results.emplace_back();
         CollisionPair& slot = results[resultCount];
-        FindCollisionFeatures(*a, *b, &slot.manifold);
+        FindCollisionFeatures(*volumes[i], *volumes[j], &slot.manifold);
         if (!slot.manifold.colliding || slot.manifold.contacts.empty()) return;
-        slot.a = a;
-        slot.b = b;
+        slot.a = volumes[i];
+        slot.b = volumes[j];
+        slot.indexA = static_cast<int>(i);
+        slot.indexB = static_cast<int>(j);
         ++resultCount;
     };
 
@@ -32,12 +34,13 @@ void PhysicsSystem::FindCollisions() {
     if (n < BroadphaseMinVolumes) {
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t j = i + 1; j < n; ++j)
-                if (CanInteract(*volumes[i], *volumes[j])) test(volumes[i], volumes[j]);
+                if (CanInteract(*volumes[i], *volumes[j])) test(i, j);
         return;
     }
     broadphase.FindPairs(volumes, &candidatePairs);
     for (const std::pair<int, int>& p : candidatePairs)
-        if (CanInteract(*volumes[p.first], *volumes[p.second])) test(volumes[p.first], volumes[p.second]);
+        if (CanInteract(*volumes[p.first], *volumes[p.second]))
+            test(static_cast<std::size_t>(p.first), static_cast<std::size_t>(p.second));
 }
 
 void PhysicsSystem::ApplyVolumeForces(float dt) {
@@ -48,6 +51,7 @@ void PhysicsSystem::ApplyVolumeForces(float dt) {
     // order is kept (forces, impulses, integration), but the forces stage already turns this step's forces
     // into velocity (semi-implicit Euler's first half), so the impulses act on the velocity that will move
     // the body.
+    volumeStepDt = dt;
     for (RigidbodyVolume* body : volumes) {
         body->ApplyForces();
         body->IntegrateVelocity(dt);
@@ -55,6 +59,13 @@ void PhysicsSystem::ApplyVolumeForces(float dt) {
 }
 
 void PhysicsSystem::ApplyImpulses() {
+    if (contactSolver == ContactSolver::Accumulated) {
+        // Sequential impulses with an arbiter (ContactSolver.h); results are in increasing (indexA, indexB)
+        // order, which the arbiter's lookup relies on.
+        accumulatedSolver.Solve(volumes, results.data(), resultCount, ImpulseIteration, volumeStepDt, PenetrationSlack,
+                                stepCount, accumulated);
+        return;
+    }
     for (int k = 0; k < ImpulseIteration; ++k) {
         for (std::size_t i = 0; i < resultCount; ++i) {
             const CollisionPair& pair = results[i];

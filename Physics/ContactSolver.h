@@ -1,0 +1,102 @@
+#pragma once
+// Contact solvers for rigid volumes, chosen at run time per PhysicsSystem (PhysicsSystem::contactSolver).
+//
+//   Book         the book's per-contact impulses (ApplyImpulse: j / contact count, each contact solved on its own,
+//                nothing kept between steps; erratum 5.2-15). The default: every book demo behaves as printed.
+//   Accumulated  sequential impulses with an arbiter (the "proper arbiter system" the book's README lists as
+//                future work, book.md 6): each colliding pair keeps its contacts across steps; per contact a
+//                normal and two tangent impulses are accumulated over the ImpulseIteration passes and the
+//                running totals are clamped (normal >= 0, friction inside the Coulomb cone mu*jn), not the
+//                increments; impulses are warm-started from the previous step's matched contacts. Stacks stand.
+// docs/ch15.md has the design notes and the measured figures.
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "matrices.h"
+#include "vectors.h"
+
+class RigidbodyVolume;
+struct CollisionPair;
+
+enum class ContactSolver {
+    Book,         ///< per-contact impulses divided by the contact count, no memory (the book's solver)
+    Accumulated,  ///< sequential impulses, accumulated and clamped, warm-started from persistent contacts
+};
+
+/// Stable id used on the command line and in CSV files: "book", "accumulated".
+const char* ToString(ContactSolver solver);
+/// Parses an id from ToString; false (output untouched) for anything else.
+bool ParseContactSolver(const std::string& text, ContactSolver* out);
+/// Comma-separated list of every valid id, for error messages.
+std::string ContactSolverIds();
+/// Every solver, in enum order.
+constexpr ContactSolver kAllContactSolvers[] = {ContactSolver::Book, ContactSolver::Accumulated};
+
+/// Settings of the Accumulated solver. Iterations and slop come from PhysicsSystem (ImpulseIteration,
+/// PenetrationSlack); linear projection still runs after integration when PhysicsSystem::DoLinearProjection is on.
+struct AccumulatedSolverSettings {
+    /// Fraction of last step's matched impulse applied before the first pass (0 = no warm start).
+    float warmStartFactor = 1.0f;
+    /// Baumgarte factor: a contact deeper than the slop gets a target separating speed of
+    /// baumgarte * (depth - slop) / dt. 0 leaves position error to linear projection alone.
+    float baumgarte = 0.0f;
+    /// Restitution is applied only when the closing speed exceeds this (m/s); slower contacts are inelastic, so
+    /// resting bodies do not bounce on gravity's g*dt.
+    float restitutionThreshold = 1.0f;
+    /// A new contact inherits the impulse of last step's nearest contact of the same pair within this distance
+    /// (m, world space); a contact without one starts from zero.
+    float matchDistance = 0.05f;
+};
+
+/// The Accumulated solver's state: last step's contacts and impulses per colliding pair (the arbiter). Pairs are
+/// keyed by the bodies' indices in PhysicsSystem::Volumes() (and the body addresses, compared for equality only,
+/// so a changed body list never inherits impulses); contacts are matched by proximity. Storage is reused from step
+/// to step (two buffers swapped), so the steady state allocates nothing.
+class AccumulatedContactSolver {
+public:
+    /// Solves the velocities of `volumes` for pairs[0..count), which must be sorted by (indexA, indexB) as
+    /// PhysicsSystem::FindCollisions writes them. `step` is PhysicsSystem::StepCount(): impulses are carried over
+    /// only from the step just before. dt is the step (s), used by the Baumgarte bias.
+    void Solve(const std::vector<RigidbodyVolume*>& volumes, const CollisionPair* pairs, std::size_t count,
+               int iterations, float dt, float slop, long long step, const AccumulatedSolverSettings& settings);
+    /// Forgets every kept contact (the next Solve starts cold).
+    void Clear();
+
+    /// Pairs solved in the last Solve.
+    std::size_t ArbiterCount() const { return arbiters.size(); }
+    /// Contacts solved in the last Solve, and how many of them were warm-started from a matched contact.
+    std::size_t ContactCount() const { return contacts.size(); }
+    std::size_t WarmStartedCount() const { return warmStarted; }
+    /// Accumulated normal impulse (N s) summed over every contact of the last Solve.
+    float TotalNormalImpulse() const;
+
+    struct Contact {
+        vec3 point;                   // world, at the start of the step (for matching)
+        vec3 rA, rB;                  // from the body centres, world
+        float massN, massT1, massT2;  // 1 / effective inverse mass along n, t1, t2
+        float bias;                   // target separating speed along n (restitution or Baumgarte), m/s
+        float jn, jt1, jt2;           // accumulated impulses, N s
+    };
+    struct Arbiter {
+        int indexA, indexB;
+        const RigidbodyVolume* a;  // identity check only, never ordered
+        const RigidbodyVolume* b;
+        vec3 n, t1, t2;            // normal from a to b, tangent basis
+        float mu;                  // sqrt(muA * muB)
+        std::size_t first, count;  // contacts[first, first + count)
+    };
+
+private:
+    void Prepare(const std::vector<RigidbodyVolume*>& volumes, const CollisionPair* pairs, std::size_t count, float dt,
+                 float slop, bool carryOver, const AccumulatedSolverSettings& settings);
+
+    std::vector<Arbiter> arbiters, previousArbiters;
+    std::vector<Contact> contacts, previousContacts;
+    std::vector<float> invMass;                 // per volume index, this step
+    std::vector<mat3> invInertia;               // per volume index: world R^T I^-1 R, this step
+    std::vector<unsigned char> matchedScratch;  // per previous contact of one pair
+    std::size_t warmStarted = 0;
+    long long lastStep = -2;
+};
