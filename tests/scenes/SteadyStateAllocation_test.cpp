@@ -76,6 +76,17 @@ TEST(SteadyStateAllocation, Ch15BoxesWithContacts) {
               0);
 }
 
+TEST(SteadyStateAllocation, Ch15BoxesAccumulatedSolver) {
+    Ch15Scene scene;
+    scene.System().contactSolver = ContactSolver::Accumulated;  // arbiter buffers must be reused, not regrown
+    for (int i = 0; i < kWarmup; ++i) scene.Step(0.03f);
+    ASSERT_GT(scene.System().AccumulatedSolver().ContactCount(), 0u) << "the boxes should be in contact";
+    EXPECT_EQ(AllocationsDuring([&] {
+                  for (int i = 0; i < kMeasured; ++i) scene.Step(0.03f);
+              }),
+              0);
+}
+
 TEST(SteadyStateAllocation, MomentumSpheres) {
     MomentumScene scene;
     for (int i = 0; i < kWarmup; ++i) scene.Step(0.03f);
