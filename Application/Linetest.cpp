@@ -14,7 +14,7 @@ namespace {
 constexpr float kPointSegmentSq = 1e-7f;
 
 /// Segment against a solid box through its raycast. An origin inside (or on) the box touches it even when the
-/// exit lies beyond the end, which the book's "t <= length" rule misses (see docs/errata/raycast.md R-1).
+/// exit lies beyond the end, which the book's "t <= length" rule misses (see docs/ERRATA.md, Raycasts R-1).
 template <typename Box>
 bool SegmentTouchesBox(const Box& box, const Line& line, bool (*pointInside)(const Point&, const Box&)) {
     const float lenSq = LengthSq(line);
@@ -88,7 +88,7 @@ bool Linetest(const Plane& plane, const Line& line) {
 
 /// Two-sided: the segment crosses (or touches) the triangle's plane inside the triangle. A degenerate
 /// triangle is never touched. (The book raycasts the one-sided triangle, so a segment crossing from behind
-/// misses; see docs/errata/raycast.md R-2.)
+/// misses; see docs/ERRATA.md, Raycasts R-2.)
 bool Linetest(const Triangle& triangle, const Line& line) {
     const Plane plane = FromTriangle(triangle);
     if (MagnitudeSq(plane.normal) == 0.0f) return false;

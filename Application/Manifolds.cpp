@@ -159,7 +159,7 @@ void FindCollisionFeatures(const OBB& A, const OBB& B, CollisionManifold* out) {
     std::vector<vec3>& contacts = out->contacts;
     ClipEdgesToOBB(GetEdges(B), A, &contacts);
     ClipEdgesToOBB(GetEdges(A), B, &contacts);
-    // Fallbacks so a colliding pair always has a contact (documented in docs/errata/manifolds.md): a box
+    // Fallbacks so a colliding pair always has a contact (documented in docs/ERRATA.md, Manifolds): a box
     // inside the other box has no edge crossing any face, so use the corners inside the other box; if the
     // boxes only overlap on every tested axis without touching (skipped near-parallel edge axes), B's corner
     // deepest toward A, clamped into A.

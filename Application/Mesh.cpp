@@ -115,7 +115,7 @@ void AccelerateMesh(Mesh& mesh, int maxDepth) {
 }
 
 /// Nearest hit distance t >= 0 over all triangles (one-sided, as Raycast(Triangle)), -1 on a miss.
-/// (The book returns the first hit found in traversal order, not the nearest: docs/errata/raycast.md R-3.)
+/// (The book returns the first hit found in traversal order, not the nearest: docs/ERRATA.md, Raycasts R-3.)
 float MeshRay(const Mesh& mesh, const Ray& ray) {
     RaycastResult r;
     return NearestHit(mesh, ray, &r) ? r.t : -1.0f;

@@ -44,7 +44,7 @@ void PhysicsSystem::FindCollisions() {
 }
 
 void PhysicsSystem::ApplyVolumeForces(float dt) {
-    // ch15 note N1 (docs/errata/ch15.md): the book applies the impulses to the velocity of the previous step
+    // ch15 note N1 (docs/ERRATA.md, Chapter 15): the book applies the impulses to the velocity of the previous step
     // and only then adds this step's gravity and moves the body, so the tangential part of g dt always
     // reaches the position before friction can see it: a box creeps down any incline at about g sin(theta) dt
     // (0.056 m/s at 20 degrees, 60 Hz) however large mu is, and a resting box is never at rest. The stage

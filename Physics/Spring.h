@@ -5,7 +5,7 @@
 // Units: here k is a force constant (N/m, |k| is the physical stiffness) and b a damping coefficient
 // (N s/m); the force is added to the particles' `forces` and integrated over the step. The book applied
 // its k and b as velocity changes per 0.03 s step; FromBookSpringConstant converts its numbers
-// (docs/errata/ch16.md).
+// (docs/ERRATA.md, Chapter 16).
 
 class Particle;
 

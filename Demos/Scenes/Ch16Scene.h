@@ -13,7 +13,7 @@
 #include "StabilityMonitor.h"
 
 /// The demo's panel values. k and damping are the BOOK's numbers (velocity change per 0.03 s step); the
-/// scene converts them with FromBookSpringConstant so the cloth looks as in the book (docs/errata/ch16.md).
+/// scene converts them with FromBookSpringConstant so the cloth looks as in the book (docs/ERRATA.md, Chapter 16).
 struct Ch16Params {
     int count = 15;         ///< particles per side, 5..30 on the panel (the cloth clamps to >= 3)
     float distance = 0.2f;  ///< m between neighbours, 0.1..1

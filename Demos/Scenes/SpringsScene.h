@@ -14,7 +14,7 @@
 #include "StabilityMonitor.h"
 
 /// The demo's panel values. k and b are the BOOK's numbers (velocity change per 0.03 s step); the scene
-/// converts them with FromBookSpringConstant so the motion matches the book at any dt (docs/errata/ch16.md).
+/// converts them with FromBookSpringConstant so the motion matches the book at any dt (docs/ERRATA.md, Chapter 16).
 struct SpringsParams {
     float k = -2.0f;          ///< book k, -5..0 (negative attracts)
     float b = 0.5f;           ///< book damping, 0..1

@@ -23,7 +23,7 @@ TEST(LinetestOBB, ZeroLengthSegmentTestsItsPoint) {
 }
 
 TEST(LinetestOBB, SegmentWhollyInsideTouches) {
-    // erratum R-1 (docs/errata/raycast.md): the book raycasts from start and compares the exit t = 1.9 with
+    // erratum R-1 (docs/ERRATA.md, Raycasts): the book raycasts from start and compares the exit t = 1.9 with
     // the length 0.2, returning false for a segment wholly inside the box.
     OBB box(vec3(0, 0, 0), vec3(2, 2, 2));
     EXPECT_TRUE(Linetest(box, Line(vec3(0.1f, 0, 0), vec3(0.3f, 0, 0))));
