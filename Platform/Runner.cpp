@@ -6,6 +6,7 @@
 #include <imgui.h>
 #include <backends/imgui_impl_opengl2.h>
 // clang-format on
+#include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -34,6 +35,12 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double Since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+double CpuSeconds(clockid_t which) {
+    timespec t{};
+    clock_gettime(which, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
 
 std::string FrameName(int frame) {
     char name[32];
@@ -128,6 +135,7 @@ struct Session {
 
 int RunSandbox(const Options& o, RunStats* stats) {
     const Clock::time_point wallStart = Clock::now();
+    const double processCpuStart = CpuSeconds(CLOCK_PROCESS_CPUTIME_ID);
     // ---- Validation: nothing is written until every argument has been checked (exit 2).
     if (!FindDemo(o.demo)) {
         std::string ids;
@@ -225,6 +233,7 @@ int RunSandbox(const Options& o, RunStats* stats) {
     std::mutex resultsMutex;
     std::vector<FrameComparison> comparisons;
     double encodeSeconds = 0.0;  // written by the encode thread only, read after Finish
+    double encodeCpuSeconds = 0.0;
     EncodeQueue queue(3, o.encodeThread);
 
     FrameClock clock(o.frameTime, o.step);
@@ -237,6 +246,8 @@ int RunSandbox(const Options& o, RunStats* stats) {
     ProgressLine progress(o);
     std::size_t nextOnly = 0;
     int exitCode = kExitOk;
+    const double renderCpuStart = CpuSeconds(CLOCK_THREAD_CPUTIME_ID);
+    double queueCpu = 0.0;  // main-thread CPU spent inside Push (serial mode: the encode itself)
 
     for (int frame = 0; frame < o.frames; ++frame) {
         const Clock::time_point renderStart = Clock::now();
@@ -304,9 +315,10 @@ int RunSandbox(const Options& o, RunStats* stats) {
             const std::string outDir = o.outDir;
             const std::string compareDir = comparing ? o.compareDir : std::string();
             // The job owns its image; everything it does depends only on the image and these strings.
-            EncodeQueue::Job job = [=, &png, &thresholds, &comparisons, &resultsMutex,
-                                    &encodeSeconds](std::string* err) {
+            EncodeQueue::Job job = [=, &png, &thresholds, &comparisons, &resultsMutex, &encodeSeconds,
+                                    &encodeCpuSeconds](std::string* err) {
                 const Clock::time_point start = Clock::now();
+                const double cpuStart = CpuSeconds(CLOCK_THREAD_CPUTIME_ID);
                 std::vector<std::uint8_t> bytes;
                 if (!EncodePng(image, png, &bytes, err)) return false;
                 if (!frameDir.empty() && !WriteFileAtomic(JoinPath(frameDir, name), bytes, err)) return false;
@@ -340,13 +352,18 @@ int RunSandbox(const Options& o, RunStats* stats) {
                     comparisons.push_back(c);
                 }
                 encodeSeconds += Since(start);
+                encodeCpuSeconds += CpuSeconds(CLOCK_THREAD_CPUTIME_ID) - cpuStart;
                 return true;
             };
-            if (!queue.Push(std::move(job))) break;  // the failure is reported by Finish below
+            const double pushCpu = CpuSeconds(CLOCK_THREAD_CPUTIME_ID);
+            const bool queued = queue.Push(std::move(job));
+            queueCpu += CpuSeconds(CLOCK_THREAD_CPUTIME_ID) - pushCpu;
+            if (!queued) break;  // the failure is reported by Finish below
         }
         progress.Frame(frame + 1, time, Since(wallStart));
     }
     progress.End();
+    stats->renderCpuSeconds = CpuSeconds(CLOCK_THREAD_CPUTIME_ID) - renderCpuStart - queueCpu;
 
     if (!queue.Finish(&error)) {
         std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
@@ -366,6 +383,8 @@ int RunSandbox(const Options& o, RunStats* stats) {
     stats->steps = clock.Steps();
     stats->simulatedSeconds = clock.FrameSeconds();
     stats->encodeSeconds = encodeSeconds;
+    stats->encodeCpuSeconds = encodeCpuSeconds;
+    stats->processCpuSeconds = CpuSeconds(CLOCK_PROCESS_CPUTIME_ID) - processCpuStart;
     stats->waitSeconds = queue.ProducerWaitSeconds();
     stats->wallSeconds = Since(wallStart);
 

@@ -17,7 +17,13 @@ struct RunStats {
     double readbackSeconds = 0.0;  ///< glReadPixels and the row flip
     double encodeSeconds = 0.0;    ///< PNG encode + write (+ compare), summed over jobs
     double waitSeconds = 0.0;      ///< main thread blocked on a full encode queue
-    std::string renderer;          ///< glGetString(GL_RENDERER)
+    // CPU time (CLOCK_THREAD_CPUTIME_ID / CLOCK_PROCESS_CPUTIME_ID): unlike the wall clock, it does not grow
+    // when other processes take the cores, so it measures the work itself on a shared machine.
+    double renderCpuSeconds = 0.0;   ///< main thread: update, fixed steps, render, readback (llvmpipe
+                                     ///< rasterises on this thread with LP_NUM_THREADS=0)
+    double encodeCpuSeconds = 0.0;   ///< the thread running the encode jobs
+    double processCpuSeconds = 0.0;  ///< whole process over the run
+    std::string renderer;            ///< glGetString(GL_RENDERER)
 };
 
 /// Exit codes of physics-sandbox.
