@@ -3,17 +3,20 @@
 #include "CH14Demo.h"
 #include "CH15Demo.h"
 #include "CH16Demo.h"
+#include "CollisionFeature.h"
 #include "ConservationOfMomentum.h"
-#include "JointDemo.h"
 #include "DemoBase.h"
+#include "JointDemo.h"
 #include "LinearImpulse.h"
+#include "RaycastDemo.h"
 #include "SimpleSprings.h"
 // Each demo adds its include and one row below, in the book's list order.
 
 const std::vector<DemoInfo>& AllDemos() {
     static const std::vector<DemoInfo> demos = {
-        // {"raycast", "Raycast Demo", [] { return std::make_unique<RaycastDemo>(); }},
+        {"raycast", "Raycast Demo", [] { return std::make_unique<RaycastDemo>(); }},
         {"ch14", "Chapter 14", [] { return std::make_unique<CH14Demo>(); }},
+        {"collision-features", "Collision Features", [] { return std::make_unique<CollisionFeature>(); }},
         {"linear-impulse", "Linear Impulse", [] { return std::make_unique<LinearImpulse>(); }},
         {"momentum", "Conservation Of Momentum", [] { return std::make_unique<ConservationOfMomentum>(); }},
         {"ch15", "Chapter 15", [] { return std::make_unique<CH15Demo>(); }},
