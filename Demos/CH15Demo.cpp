@@ -33,7 +33,9 @@ void CH15Demo::Update(float dt) {
 void CH15Demo::ImGUI() {
     // book.md 2.5; the book's PushItemWidth calls are popped here (erratum 5.2-26).
     Ch15Params& p = scene.Params();
-    BeginPanel("Chapter 15 Demo", 75.0f);
+    // The book's panel is 75 high; a non-book contact solver adds a row so the panel shows the model in effect.
+    const bool bookSolver = p.solver == 0;
+    BeginPanel("Chapter 15 Demo", bookSolver ? 75.0f : 95.0f);
     ImGui::PushItemWidth(55.0f);
     ImGui::SliderFloat("Porjection", &p.projection, 0.2f, 0.8f);
     ImGui::PopItemWidth();
@@ -50,6 +52,7 @@ void CH15Demo::ImGUI() {
     ImGui::Checkbox("Debug Render", &p.debug);
     ImGui::SameLine();
     ImGui::Checkbox("Linear Projection", &p.linearProjection);
+    if (!bookSolver) ImGui::Text("Contact solver: %s", ToString(ContactSolver::Accumulated));
     ImGui::End();
     DemoBase::ImGUI();
 }

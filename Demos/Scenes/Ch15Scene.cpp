@@ -36,6 +36,7 @@ void Ch15Scene::ApplySettings() {
     system->ImpulseIteration = params.iterations;
     system->DoLinearProjection = params.linearProjection;
     system->DebugRender = params.debug;
+    system->contactSolver = params.solver == 0 ? ContactSolver::Book : ContactSolver::Accumulated;
 }
 
 void Ch15Scene::Step(float dt) {
@@ -54,6 +55,9 @@ void Ch15Scene::AddParameters(ParameterSet* set) {
     set->AddBool("linear-projection", &params.linearProjection, "DoLinearProjection: positional correction",
                  [this] { ApplySettings(); });
     set->AddBool("debug", &params.debug, "DebugRender: box edges and collision manifolds", [this] { ApplySettings(); });
+    set->AddChoice("solver", &params.solver, {ToString(ContactSolver::Book), ToString(ContactSolver::Accumulated)},
+                   "contact solver: the book's per-contact impulses, or accumulated impulses (stacks stand)",
+                   [this] { ApplySettings(); });
     set->AddAction(
         "reset", [this] { Reset(); }, "rebuild the scene");
 }

@@ -16,6 +16,8 @@ struct Ch15Params {
     int iterations = 8;        ///< ImpulseIteration, 1..20
     bool linearProjection = true;
     bool debug = false;  ///< DebugRender: edges and manifolds
+    /// Not a book widget: 0 = the book's per-contact solver, 1 = accumulated impulses (ContactSolver.h).
+    int solver = 0;
 };
 
 class Ch15Scene {

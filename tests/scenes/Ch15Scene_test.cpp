@@ -93,3 +93,18 @@ TEST(Ch15Scene, TwoRunsAreBitwiseIdentical) {
         EXPECT_EQ(std::memcmp(&a.Bodies()[i].angVel, &b.Bodies()[i].angVel, sizeof(vec3)), 0);
     }
 }
+
+// The "solver" parameter switches the system's contact solver (not a book widget; --set solver=...).
+TEST(Ch15Scene, SolverParameterSelectsTheContactSolver) {
+    Ch15Scene scene;
+    ParameterSet set;
+    scene.AddParameters(&set);
+    EXPECT_EQ(scene.System().contactSolver, ContactSolver::Book);
+    std::string error;
+    ASSERT_TRUE(set.Set("solver", "accumulated", &error)) << error;
+    EXPECT_EQ(scene.System().contactSolver, ContactSolver::Accumulated);
+    EXPECT_FALSE(set.Set("solver", "sequential", &error));
+    EXPECT_NE(error.find("book|accumulated"), std::string::npos) << error;
+    ASSERT_TRUE(set.Set("solver", "book", &error)) << error;
+    EXPECT_EQ(scene.System().contactSolver, ContactSolver::Book);
+}
