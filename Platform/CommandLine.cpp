@@ -87,8 +87,10 @@ ParseStatus ParseCommandLine(int argc, const char* const* argv, Options* o, std:
         } else if (flag == "--list") {
             if (!noValue()) return bad("takes no value");
             o->mode = Options::Mode::List;
-        } else if (flag == "--no-ui" || flag == "--quiet" || flag == "--update-golden" || flag == "--serial-encode") {
+        } else if (flag == "--no-ui" || flag == "--quiet" || flag == "--update-golden" || flag == "--serial-encode" ||
+                   flag == "--params") {
             if (!noValue()) return bad("takes no value");
+            if (flag == "--params") o->showParams = true;
             if (flag == "--no-ui") o->noUi = true;
             if (flag == "--quiet") o->quiet = true;
             if (flag == "--update-golden") o->updateGolden = true;
@@ -223,6 +225,7 @@ Renders a demo of the Game Physics Cookbook (ch. 14-16) off-screen (OSMesa, llvm
   --out DIR              write DIR/frame_00000.png ... (DIR is created); without it nothing is written
   --size WxH             frame size (default 800x600)
   --set KEY=VALUE        set a demo parameter (repeatable, applied in order); the panel shows the value
+  --params               print the demo's parameters (keys, ranges, values after --set) and exit
   --state FILE           write CSV: frame,time,body,kind,x,y,z,vx,vy,vz (one row per body per frame)
   --no-ui                hide the ImGui panels
   --camera-yaw DEG       orbit camera yaw (rotation.x), replaces the demo's preset

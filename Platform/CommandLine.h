@@ -20,6 +20,7 @@ struct Options {
     int height = 600;
     std::vector<std::pair<std::string, std::string>> sets;  ///< --set key=value, in order
     bool noUi = false;
+    bool showParams = false;  ///< --params: print the demo's parameters (after --set) and exit
     std::string stateFile;
 
     // Camera (the orbit camera's yaw = rotation.x, pitch = rotation.y, in degrees; zoom = distance).

@@ -191,6 +191,11 @@ int RunSandbox(const Options& o, RunStats* stats) {
         }
     }
 
+    if (o.showParams) {
+        std::printf("parameters of %s (--set KEY=VALUE):\n%s", o.demo.c_str(), demo.Parameters().Describe().c_str());
+        return kExitOk;
+    }
+
     // Camera overrides, then one camera update so the view is valid on frame 0 (book.md 1.2).
     vec2 rotation = demo.camera.GetRotation();
     if (o.hasYaw) rotation.x = o.yaw;

@@ -82,6 +82,16 @@ TEST(Cli, UnknownParameterListsTheValidOnes) {
     EXPECT_FALSE(fs::exists(out + ".csv"));
 }
 
+TEST(Cli, ParamsPrintsTheTableWithValuesAfterSet) {
+    const std::string out = ScratchDir("params") + "/frames";
+    const SandboxResult r = RunSandboxExe({"--demo", "ch16", "--set", "count=20", "--params", "--out", out});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("parameters of ch16"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("count = 20"), std::string::npos) << r.out;  // the value in effect after --set
+    EXPECT_NE(r.out.find("integrator"), std::string::npos) << r.out;  // every key is listed
+    EXPECT_FALSE(fs::exists(out)) << "--params renders nothing";
+}
+
 TEST(Cli, BadParameterValueIsRejected) {
     // Find a demo with a numeric or boolean parameter from the listing --set prints, then give it junk.
     for (const std::string& id : ListDemoIds()) {
