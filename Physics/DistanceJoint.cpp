@@ -13,15 +13,29 @@ void DistanceJoint::Initialize(Particle* _p1, Particle* _p2, float len) {
 
 void DistanceJoint::SolveConstraints(const std::vector<OBB>& constraints) {
     if (p1 == nullptr || p2 == nullptr) return;
+    const float w1 = p1->InvMass(), w2 = p2->InvMass();
+    const float w = w1 + w2;
+    if (w <= 0.0f) return;  // two immovable ends: nothing can move
     const vec3 delta = p2->GetPosition() - p1->GetPosition();
     const float distance = Magnitude(delta);
     // erratum 5.2-6: the book divides by the distance unguarded; coincident particles gave NaN positions.
     if (distance > kMinAxisLength) {
-        // Book.md 3.8: move both ends half of the error each along the pair axis. SetPosition also resets
-        // oldPosition, so the following constraint pass sees a zero-length travelled segment.
+        // Position projection (PBD distance constraint, Mueller et al. 2007): dx_i = -+ w_i / (w1 + w2) * error * n.
+        // The book (book.md 3.8) uses 1/2 for both ends whatever the masses; for equal masses w1 / w = 1/2 exactly,
+        // so this is the book's correction bit for bit. SetPosition also resets oldPosition, so the following
+        // constraint pass sees a zero-length travelled segment (as the book).
         const float correction = (distance - length) / distance;
-        p1->SetPosition(p1->GetPosition() + delta * (0.5f * correction));
-        p2->SetPosition(p2->GetPosition() - delta * (0.5f * correction));
+        const float share1 = w1 / w, share2 = w2 / w;
+        p1->SetPosition(p1->GetPosition() + delta * (share1 * correction));
+        p2->SetPosition(p2->GetPosition() - delta * (share2 * correction));
+        // Velocity along the joint: the book keeps it, so a bob keeps the radial speed gravity adds each step and
+        // falls while its position is projected. Remove the relative velocity along the axis with the same weights
+        // (the impulse of a rigid rod); tangential velocity and momentum are kept and kinetic energy can only drop.
+        const vec3 axis = delta * (1.0f / distance);
+        const vec3 v1 = p1->GetVelocity(), v2 = p2->GetVelocity();
+        const float closing = Dot(v2 - v1, axis);
+        p1->SetVelocity(v1 + axis * (share1 * closing));
+        p2->SetVelocity(v2 - axis * (share2 * closing));
     }
     p1->SolveConstraints(constraints);
     p2->SolveConstraints(constraints);
