@@ -6,7 +6,8 @@
 # Per problem: error against CPU cost (s per simulated s) on log-log axes, one line per integrator or solver
 # setting, the Pareto front (no cheaper run is as accurate) as a black dashed line. For spring-stiffness,
 # cloth (+ cloth-stiffness) and stack-mass-ratio: a stability map, step size against stiffness or mass ratio,
-# one panel per integrator (or per solver iteration count), each run coloured stable / inaccurate / unstable.
+# one panel per integrator (or per contact solver and iteration count), each run coloured stable / inaccurate /
+# unstable.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -32,16 +33,16 @@ trap 'rm -rf "$work"' EXIT
 # Merge: keep one header, sort rows by run index so shards give the same file as one process.
 { head -n 1 "${inputs[0]}"; for f in "${inputs[@]}"; do tail -n +2 "$f"; done | sort -t, -k1,1n; } > "$work/all.csv"
 
-# Columns: 1 run, 2 problem, 3 integrator, 4 dt, 5 substeps, 6 iterations, 7 projection, 8 param, 9 error,
-# 10 cpu_per_sim_s, 11 stable, 12 steps, 13 sim_s, 14 note.
+# Columns: 1 run, 2 problem, 3 integrator, 4 dt, 5 substeps, 6 iterations, 7 projection, 8 solver, 9 param,
+# 10 error, 11 cpu_per_sim_s, 12 stable, 13 steps, 14 sim_s, 15 note.
 series_name() {  # awk snippet: the legend of a row
   cat <<'AWK'
 function series(   s) {
-  if ($3 != "-") s = $3; else s = "volumes";
+  if ($3 != "-") s = $3; else if ($8 != "-") s = $8; else s = "volumes";
   if ($6 != "-") s = s " it=" $6;
   if ($7 != "-") s = s " proj=" ($7 == "1" ? "on" : "off");
   if ($5 != "1") s = s " sub=" $5;
-  if ($8 != "-" && multi) s = s " " pname "=" $8;
+  if ($9 != "-" && multi) s = s " " pname "=" $9;
   return s;
 }
 AWK
@@ -54,17 +55,17 @@ maps="spring-stiffness cloth-stiffness stack-mass-ratio"
 # front then compare settings on the same physics.
 for p in $problems; do
   case " $maps " in *" $p "*) continue ;; esac
-  for v in $(awk -F, -v p="$p" 'NR > 1 && $2 == p { print $8 }' "$work/all.csv" | awk '!seen[$0]++'); do
-  name="$p"; [ "$v" = "-" ] || [ "$(awk -F, -v p="$p" 'NR > 1 && $2 == p { c[$8] = 1 } END { print length(c) }' "$work/all.csv")" = 1 ] || name="$p-$v"
+  for v in $(awk -F, -v p="$p" 'NR > 1 && $2 == p { print $9 }' "$work/all.csv" | awk '!seen[$0]++'); do
+  name="$p"; [ "$v" = "-" ] || [ "$(awk -F, -v p="$p" 'NR > 1 && $2 == p { c[$9] = 1 } END { print length(c) }' "$work/all.csv")" = 1 ] || name="$p-$v"
   dir="$work/$name"
   mkdir -p "$dir"
   # One file per series: "cost error", stable runs only, floors so log axes accept exact answers.
   awk -F, -v p="$p" -v v="$v" -v dir="$dir" -v multi=0 -v pname="" \
     "$(series_name)"'
-    NR > 1 && $2 == p && $8 == v && $11 == 1 && $9 != "inf" && $9 != "nan" {
+    NR > 1 && $2 == p && $9 == v && $12 == 1 && $10 != "inf" && $10 != "nan" {
       s = series(); f = dir "/" s ".dat"; gsub(/ /, "_", f);
       if (!(f in files)) { files[f] = s; order[++n] = f }
-      e = $9 + 0; if (e < 1e-9) e = 1e-9; c = $10 + 0; if (c < 1e-8) c = 1e-8;
+      e = $10 + 0; if (e < 1e-9) e = 1e-9; c = $11 + 0; if (c < 1e-8) c = 1e-8;
       print c, e > f
     }
     END { for (i = 1; i <= n; i++) print order[i] "\t" files[order[i]] > (dir "/index") }' "$work/all.csv"
@@ -99,16 +100,16 @@ GP
 done
 
 # Stability maps. tol: largest error still called "stable" (accurate).
-stability_map() {  # problem(s) regex, output name, y label, tolerance, panel column (3 integrator, 6 iterations)
+stability_map() {  # problem(s) regex, output name, y label, tolerance, panel (3 = integrator, si = solver + iterations)
   local regex="$1" name="$2" ylabel="$3" tol="$4" col="$5"
   local dir="$work/map-$name"
   mkdir -p "$dir"
   awk -F, -v re="$regex" -v dir="$dir" -v tol="$tol" -v col="$col" '
     NR > 1 && $2 ~ re {
-      panel = $col; f = dir "/" panel;
+      panel = (col == "si") ? $8 "-" $6 : $col; f = dir "/" panel;
       if (!(panel in seen)) { seen[panel] = 1; order[++n] = panel }
-      y = $8 + 0; if (y < 0) y = -y;
-      cls = ($11 != 1 || $9 == "inf" || $9 == "nan") ? 2 : (($9 + 0) > tol ? 1 : 0);
+      y = $9 + 0; if (y < 0) y = -y;
+      cls = ($12 != 1 || $10 == "inf" || $10 == "nan") ? 2 : (($10 + 0) > tol ? 1 : 0);
       print $4, y, cls > f
     }
     END { for (i = 1; i <= n; i++) print order[i] > (dir "/panels") }' "$work/all.csv"
@@ -123,7 +124,7 @@ stability_map() {  # problem(s) regex, output name, y label, tolerance, panel co
     echo "set xlabel 'dt (s)'; set ylabel '$ylabel'; set xrange [5e-5:0.2]; set offsets 0,0,graph 0.05, graph 0.05"
     echo "set palette defined (0 '#2ca02c', 1 '#ff9f1a', 2 '#d62728'); set cbrange [0:2]; unset colorbox"
     while read -r panel; do
-      local label="$panel"; [ "$col" = 6 ] && label="iterations $panel"
+      local label="$panel"; [ "$col" = si ] && label="${panel%-*} solver, ${panel##*-} iterations"
       echo "set title '$label'"
       echo "plot '$dir/$panel' using 1:2:3 with points pt 5 ps 2.2 palette"
     done < "$dir/panels"
@@ -134,20 +135,20 @@ stability_map() {  # problem(s) regex, output name, y label, tolerance, panel co
 
 stability_map '^spring-stiffness$' spring-stability 'stiffness K (N/m), 1 kg' 0.05 3
 stability_map '^cloth(-stiffness)?$' cloth-stability '|book k| (x 33.3 N/m)' 0.25 3
-stability_map '^stack-mass-ratio$' stack-stability 'top box mass ratio' 0.01 6
+stability_map '^stack-mass-ratio$' stack-stability 'top box mass ratio' 0.01 si
 
 # "For this error, use this setting; it costs this much": per problem and target error, the cheapest stable run
 # whose error is at or below the target (markdown, included by docs/sweep.md).
 awk -F, -v maps=" $maps " '
-  NR > 1 && $11 == 1 && $9 != "inf" && $9 != "nan" && index(maps, " " $2 " ") == 0 {
-    s = ($3 != "-" ? $3 : "volumes") " dt=" $4;
+  NR > 1 && $12 == 1 && $10 != "inf" && $10 != "nan" && index(maps, " " $2 " ") == 0 {
+    s = ($3 != "-" ? $3 : ($8 != "-" ? $8 " solver" : "volumes")) " dt=" $4;
     if ($5 != "1") s = s " substeps=" $5;
     if ($6 != "-") s = s " iterations=" $6;
     if ($7 != "-") s = s " projection=" ($7 == "1" ? "on" : "off");
-    label = $2; if ($8 != "-") label = label " (param " $8 ")";
+    label = $2; if ($9 != "-") label = label " (param " $9 ")";
     for (t = 1; t <= 3; t++) {
       target = 10 ^ -t; k = label SUBSEP target;
-      if ($9 + 0 <= target && (!(k in cost) || $10 + 0 < cost[k])) { cost[k] = $10 + 0; set[k] = s; err[k] = $9 }
+      if ($10 + 0 <= target && (!(k in cost) || $11 + 0 < cost[k])) { cost[k] = $11 + 0; set[k] = s; err[k] = $10 }
     }
     if (!(label in seen)) { seen[label] = 1; order[++n] = label }
   }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "ContactSolver.h"
 #include "PhysicsSystem.h"
 #include "RigidbodyVolume.h"
 #include "Sweep.h"
@@ -30,6 +31,7 @@ struct VolumeWorld {
         bodies.reserve(capacity);
         if (s.iterations >= 0) system.ImpulseIteration = s.iterations;
         if (s.projection >= 0) system.DoLinearProjection = s.projection != 0;
+        if (s.solver >= 0) system.contactSolver = ContactSolver(s.solver);
     }
     RigidbodyVolume& Add(RigidbodyType type, const vec3& position, float mass) {
         bodies.emplace_back(type);
@@ -86,6 +88,12 @@ Settings Base(double dt, int iterations, int projection, double param = 0.0, int
     s.projection = projection;
     s.param = param;
     s.substeps = substeps;
+    return s;
+}
+
+/// The same settings with a contact solver chosen (PhysicsSystem::contactSolver).
+Settings With(ContactSolver solver, Settings s) {
+    s.solver = int(solver);
     return s;
 }
 
@@ -257,14 +265,15 @@ Outcome RunStack(const Settings& s, int height, double topMass, double seconds) 
 std::vector<Settings> StackGrid(bool quick) {
     std::vector<Settings> g;
     const std::vector<int> iterations = quick ? std::vector<int>{5} : std::vector<int>{1, 5, 20};
-    for (int it : iterations)
-        for (int proj : {1, 0})
-            for (double dt : quick ? QuickStepSizes() : StepSizes()) g.push_back(Base(dt, it, proj));
+    for (ContactSolver solver : kAllContactSolvers)
+        for (int it : iterations)
+            for (int proj : {1, 0})
+                for (double dt : quick ? QuickStepSizes() : StepSizes()) g.push_back(With(solver, Base(dt, it, proj)));
     // Four substeps per frame at 5 iterations: the same cost and accuracy as a 4x smaller dt here, because
     // PhysicsSystem has no per-frame work; shown once to make that visible.
     if (!quick)
         for (double dt : StepSizes())
-            if (dt >= 2e-3) g.push_back(Base(dt, 5, 1, 0.0, 4));
+            if (dt >= 2e-3) g.push_back(With(ContactSolver::Book, Base(dt, 5, 1, 0.0, 4)));
     return g;
 }
 
@@ -277,9 +286,11 @@ void AddRigidProblems(std::vector<Problem>* out) {
                     "max relative apex error", "e",
                     [](bool q) {
                         std::vector<Settings> g;
-                        for (double e : {0.5, 0.9})
-                            for (int proj : {1, 0})
-                                for (double dt : q ? QuickStepSizes() : StepSizes()) g.push_back(Base(dt, 5, proj, e));
+                        for (ContactSolver solver : kAllContactSolvers)
+                            for (double e : {0.5, 0.9})
+                                for (int proj : {1, 0})
+                                    for (double dt : q ? QuickStepSizes() : StepSizes())
+                                        g.push_back(With(solver, Base(dt, 5, proj, e)));
                         return g;
                     },
                     RunBounceSphere});
@@ -297,9 +308,11 @@ void AddRigidProblems(std::vector<Problem>* out) {
                     "relative acceleration error", "",
                     [](bool q) {
                         std::vector<Settings> g;
-                        for (int it : q ? std::vector<int>{5} : std::vector<int>{1, 5, 20})
-                            for (int proj : {1, 0})
-                                for (double dt : q ? QuickStepSizes() : StepSizes()) g.push_back(Base(dt, it, proj));
+                        for (ContactSolver solver : kAllContactSolvers)
+                            for (int it : q ? std::vector<int>{5} : std::vector<int>{1, 5, 20})
+                                for (int proj : {1, 0})
+                                    for (double dt : q ? QuickStepSizes() : StepSizes())
+                                        g.push_back(With(solver, Base(dt, it, proj)));
                         return g;
                     },
                     RunIncline});
@@ -315,9 +328,11 @@ void AddRigidProblems(std::vector<Problem>* out) {
                         std::vector<Settings> g;
                         const std::vector<double> ratios =
                             q ? std::vector<double>{1e-3, 1e3} : std::vector<double>{1e-3, 1e-2, 0.1, 1, 10, 100, 1e3};
-                        for (int it : q ? std::vector<int>{5} : std::vector<int>{5, 20})
-                            for (double r : ratios)
-                                for (double dt : q ? QuickStepSizes() : StepSizes()) g.push_back(Base(dt, it, 1, r));
+                        for (ContactSolver solver : kAllContactSolvers)
+                            for (int it : q ? std::vector<int>{5} : std::vector<int>{5, 20})
+                                for (double r : ratios)
+                                    for (double dt : q ? QuickStepSizes() : StepSizes())
+                                        g.push_back(With(solver, Base(dt, it, 1, r)));
                         return g;
                     },
                     [](const Settings& s) { return RunStack(s, 5, s.param, 5.0); }});

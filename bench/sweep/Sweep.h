@@ -20,6 +20,7 @@ struct Settings {
     int substeps = 1;     ///< PhysicsSystem::Update calls of dt / substeps per frame
     int iterations = -1;  ///< PhysicsSystem::ImpulseIteration; -1 = not used
     int projection = -1;  ///< PhysicsSystem::DoLinearProjection as 0/1; -1 = not used
+    int solver = -1;      ///< PhysicsSystem::contactSolver as int(ContactSolver); -1 = not used
     double param = 0.0;   ///< the problem's swept physical parameter (stiffness, mass ratio, e); 0 = none
 };
 
