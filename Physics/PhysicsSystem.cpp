@@ -1,6 +1,7 @@
 #include "PhysicsSystem.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "Cloth.h"
 #include "DistanceJoint.h"
@@ -18,14 +19,24 @@ void PhysicsSystem::Update(float deltaTime) {
     // Book order (book.md 3.4): collisions, forces, impulses, integrate, linear projection, constraints.
     // Spring forces are evaluated inside particle integration (erratum 5.2-20: a force over the step, not
     // a dt-free impulse after it), so every integrator sees them at its own intermediate states.
+    // Volumes step in n equal substeps when one step would carry a volume through another (VolumeSubsteps);
+    // n = 1 is the book's single step, with dt passed through unchanged.
     if (hasVolumes) {
-        FindCollisions();
-        ApplyVolumeForces(deltaTime);
-        if (resultCount > 0) ApplyImpulses();
-        IntegrateVolumes(deltaTime);
-        if (DoLinearProjection && resultCount > 0) ApplyLinearProjection();
+        const int n = VolumeSubsteps(deltaTime);
+        const float h = n == 1 ? deltaTime : deltaTime / static_cast<float>(n);
+        lastVolumeSubsteps = n;
+        for (int s = 0; s < n; ++s) {
+            FindCollisions();
+            ApplyVolumeForces(h);
+            if (resultCount > 0) ApplyImpulses();
+            IntegrateVolumes(h);
+            if (DoLinearProjection && resultCount > 0) ApplyLinearProjection();
+            ++volumeSubstepCount;
+        }
     } else {
         resultCount = 0;
+        lastVolumeSubsteps = 1;
+        ++volumeSubstepCount;
     }
     for (Rigidbody* body : others) body->ApplyForces();
     for (Rigidbody* body : others) body->Update(deltaTime);
@@ -35,8 +46,57 @@ void PhysicsSystem::Update(float deltaTime) {
     ++stepCount;
 }
 
-void PhysicsSystem::AddRigidbody(Rigidbody* body) {
-    if (body == nullptr) return;
+namespace {
+
+/// Particle check for AddRigidbody: finite position and velocity, finite mass >= 0 (0 = immovable).
+bool ValidateParticle(const Particle& p, std::string* error) {
+    char text[160];
+    const vec3 x = p.GetPosition(), v = p.GetVelocity();
+    const float mass = p.GetMass();
+    if (!IsFinite(x)) {
+        std::snprintf(text, sizeof text, "position = (%g, %g, %g): must be finite", static_cast<double>(x.x),
+                      static_cast<double>(x.y), static_cast<double>(x.z));
+    } else if (!IsFinite(v)) {
+        std::snprintf(text, sizeof text, "velocity = (%g, %g, %g): must be finite", static_cast<double>(v.x),
+                      static_cast<double>(v.y), static_cast<double>(v.z));
+    } else if (!std::isfinite(mass) || mass < 0.0f) {
+        std::snprintf(text, sizeof text, "mass = %g: must be finite and >= 0 (0 = immovable)",
+                      static_cast<double>(mass));
+    } else {
+        return true;
+    }
+    *error = text;
+    return false;
+}
+
+}  // namespace
+
+bool PhysicsSystem::AddRigidbody(Rigidbody* body) {
+    // Validate at the boundary (docs/STYLE.md, issue 7 item 4): a degenerate body is refused with a message
+    // naming the value instead of being simulated into NaN or through the ground.
+    if (body == nullptr) {
+        lastError = "AddRigidbody: refused a null body";
+        return false;
+    }
+    std::string why;
+    bool valid = true;
+    const char* kind = "body";
+    if (body->type == RigidbodyType::Particle) {
+        kind = "particle";
+        valid = ValidateParticle(*static_cast<const Particle*>(body), &why);
+    } else if (body->HasVolume()) {
+        kind = body->type == RigidbodyType::Sphere ? "sphere" : "box";
+        valid = ValidateVolume(*static_cast<const RigidbodyVolume*>(body), &why);
+    }
+    if (!valid) {
+        lastError = "AddRigidbody: refused ";
+        lastError += kind;
+        lastError += " (would have been body ";
+        lastError += std::to_string(bodies.size());
+        lastError += "): ";
+        lastError += why;
+        return false;
+    }
     bodies.push_back(body);
     switch (body->type) {
         case RigidbodyType::Particle:
@@ -61,6 +121,7 @@ void PhysicsSystem::AddRigidbody(Rigidbody* body) {
             }
             break;
     }
+    return true;
 }
 
 void PhysicsSystem::AddCloth(Cloth* cloth) {

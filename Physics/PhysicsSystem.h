@@ -11,6 +11,7 @@
 //   PhysicsSystemSoft.cpp      (ch16)  spring and cloth forces, distance joints
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "Broadphase.h"
@@ -52,6 +53,12 @@ public:
     ContactSolver contactSolver = ContactSolver::Book;
     /// Settings of the Accumulated solver (iterations and slop are ImpulseIteration and PenetrationSlack).
     AccumulatedSolverSettings accumulated;
+    /// Volumes have no continuous collision, so a step in which a dynamic volume would travel (|v| dt + |g| dt^2 / 2)
+    /// more than SubstepTravelFraction * (its smallest half extent + the smallest in the world) is split into n
+    /// equal volume substeps, n <= MaxVolumeSubsteps (beyond, clamped with a LastError() warning; docs/ch15.md,
+    /// "Extremes"). 1 turns it off. At the book's 0.03 s and its demos' speeds n is 1.
+    int MaxVolumeSubsteps = 64;
+    float SubstepTravelFraction = 0.75f;
 
     PhysicsSystem();
     ~PhysicsSystem();
@@ -63,7 +70,11 @@ public:
 
     /// Adds a body by pointer (not owned). Particles, volumes (sphere/box), distance joints and other
     /// Rigidbody subclasses are kept in separate lists so each stage touches only its own kind.
-    void AddRigidbody(Rigidbody* body);
+    /// Returns false and skips the body (LastError() names the bad value) for a null pointer, a volume that fails
+    /// ValidateVolume (zero, negative or non-finite size or mass, non-finite state), or a particle with a
+    /// non-finite position or velocity or a negative or non-finite mass. The book returns void; callers that ignore
+    /// the result still compile.
+    bool AddRigidbody(Rigidbody* body);
     void AddCloth(Cloth* cloth);
     /// Stores a copy, as the book does.
     void AddSpring(const Spring& spring);
@@ -88,6 +99,12 @@ public:
     const AccumulatedContactSolver& AccumulatedSolver() const { return accumulatedSolver; }
     /// Number of Update calls that advanced the world.
     long long StepCount() const { return stepCount; }
+    /// Volume substeps the last Update took (1 unless it had to subdivide; see MaxVolumeSubsteps).
+    int LastVolumeSubsteps() const { return lastVolumeSubsteps; }
+    /// The last refusal (AddRigidbody) or warning (a step that needed more than MaxVolumeSubsteps substeps),
+    /// naming the bad value; empty if none since construction or ClearError().
+    const std::string& LastError() const { return lastError; }
+    void ClearError() { lastError.clear(); }
 
 private:
     // ---- ch14: PhysicsSystemParticles.cpp
@@ -106,6 +123,8 @@ private:
     void ApplyImpulses();
     void IntegrateVolumes(float dt);
     void ApplyLinearProjection();
+    /// Number of equal volume substeps for a step of dt (1..MaxVolumeSubsteps); records a warning when clamped.
+    int VolumeSubsteps(float dt);
 
     // ---- ch16: PhysicsSystemSoft.cpp
     /// Adds the force of every spring (system and cloth) to its particles' `forces`.
@@ -134,4 +153,7 @@ private:
     long long stepCount = 0;
     AccumulatedContactSolver accumulatedSolver;  // ch15: arbiter state of ContactSolver::Accumulated
     float volumeStepDt = 0.0f;                   // this step's dt, kept by ApplyVolumeForces for the solver
+    long long volumeSubstepCount = 0;  // one per volume substep (one per Update without volumes): solver carry-over
+    int lastVolumeSubsteps = 1;
+    std::string lastError;
 };

@@ -1,6 +1,7 @@
 #include "RigidbodyVolume.h"
 
 #include <cmath>
+#include <cstdio>
 
 namespace {
 
@@ -32,18 +33,40 @@ void RigidbodyVolume::Update(float dt) {
     IntegratePosition(dt);
 }
 
+float RigidbodyVolume::StepDamping(float dt) const {
+    if (!(referenceStep > 0.0f) || dt >= referenceStep) return damping;
+    if (dampingKey[0] != damping || dampingKey[1] != referenceStep || dampingKey[2] != dt) {
+        dampingKey[0] = damping;
+        dampingKey[1] = referenceStep;
+        dampingKey[2] = dt;
+        dampingValue = std::pow(damping, dt / referenceStep);
+    }
+    return dampingValue;
+}
+
+float RigidbodyVolume::StepVelocityEpsilon(float dt) const {
+    if (!(referenceStep > 0.0f) || dt >= referenceStep) return velocityEpsilon;
+    return velocityEpsilon * (dt / referenceStep);
+}
+
 void RigidbodyVolume::IntegrateVelocity(float dt) {
-    // Book order (book.md 3.3): accelerate, damp per step, zero tiny components.
+    // Book order (book.md 3.3): accelerate, damp, zero tiny components. The book's damping (0.98) and threshold
+    // (0.001 m/s) are per step; applied per step at tiny dt they stop free motion: at dt = 1e-5 the threshold
+    // exceeds g dt and zeroes a body released from rest every step (it hangs in the air), and 0.98 per step caps
+    // free fall at 49 g dt = 5 mm/s. Below referenceStep (1/60 s) both are converted to the step in use; at and
+    // above it they are the book's values bit for bit (docs/ch15.md, "Extremes").
+    const float stepDamping = StepDamping(dt);
+    const float epsilon = StepVelocityEpsilon(dt);
     velocity += forces * InvMass() * dt;
-    velocity *= damping;
-    ZeroSmall(velocity, velocityEpsilon);
+    velocity *= stepDamping;
+    ZeroSmall(velocity, epsilon);
 
     // erratum 5.2-13: the book integrates and damps angular velocity for boxes only, so a sphere keeps
     // whatever spin contacts gave it forever. Both shapes are treated alike here.
     if (HasVolume()) {
         angVel += MultiplyVector(torques, InvTensor()) * dt;
-        angVel *= damping;
-        ZeroSmall(angVel, velocityEpsilon);
+        angVel *= stepDamping;
+        ZeroSmall(angVel, epsilon);
     }
 }
 
@@ -115,6 +138,70 @@ void RigidbodyVolume::AddRotationalImpulse(const vec3& point, const vec3& impuls
 void RigidbodyVolume::SetEulerOrientation(const vec3& radians) {
     orientation = FromEuler(RAD2DEG(radians.x), RAD2DEG(radians.y), RAD2DEG(radians.z));
     SynchCollisionVolumes();
+}
+
+namespace {
+
+bool Refuse(std::string* error, const char* what, float value, const char* rule) {
+    if (error != nullptr) {
+        char text[160];
+        std::snprintf(text, sizeof text, "%s = %g: %s", what, static_cast<double>(value), rule);
+        *error = text;
+    }
+    return false;
+}
+
+bool CheckVector(std::string* error, const char* name, const vec3& v) {
+    static const char* const kAxis[3] = {"x", "y", "z"};
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(v[i])) {
+            char what[64];
+            std::snprintf(what, sizeof what, "%s.%s", name, kAxis[i]);
+            return Refuse(error, what, v[i], "must be finite");
+        }
+    return true;
+}
+
+}  // namespace
+
+// Validate at the boundary (docs/STYLE.md): a degenerate body is refused where it enters the world, with the bad
+// value named, instead of being simulated into a wrong answer (a zero-size or flat box has no face the box-box
+// manifold can report, so it falls through the ground for ever; a non-finite number spreads to every body it
+// touches).
+bool ValidateVolume(const RigidbodyVolume& body, std::string* error) {
+    if (!body.HasVolume()) return Refuse(error, "type", static_cast<float>(body.type), "must be Sphere (2) or Box (3)");
+    if (!std::isfinite(body.mass) || body.mass < 0.0f)
+        return Refuse(error, "mass", body.mass, "must be finite and >= 0 (0 = static)");
+    if (!CheckVector(error, "position", body.position) || !CheckVector(error, "velocity", body.velocity) ||
+        !CheckVector(error, "angVel", body.angVel) || !CheckVector(error, "gravity", body.gravity) ||
+        !CheckVector(error, "forces", body.forces) || !CheckVector(error, "torques", body.torques))
+        return false;
+    const quat& q = body.orientation;
+    const float qc[4] = {q.x, q.y, q.z, q.w};
+    static const char* const kQuat[4] = {"orientation.x", "orientation.y", "orientation.z", "orientation.w"};
+    for (int i = 0; i < 4; ++i)
+        if (!std::isfinite(qc[i])) return Refuse(error, kQuat[i], qc[i], "must be finite");
+    const float qSq = q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w;
+    if (!(qSq > 0.0f)) return Refuse(error, "|orientation|^2", qSq, "must be > 0 (a rotation)");
+    if (body.type == RigidbodyType::Sphere) {
+        if (!std::isfinite(body.sphere.radius) || !(body.sphere.radius > 0.0f))
+            return Refuse(error, "sphere.radius", body.sphere.radius, "must be finite and > 0");
+    } else {
+        static const char* const kSize[3] = {"box.size.x", "box.size.y", "box.size.z"};
+        for (int i = 0; i < 3; ++i)
+            if (!std::isfinite(body.box.size[i]) || !(body.box.size[i] > 0.0f))
+                return Refuse(error, kSize[i], body.box.size[i], "half size must be finite and > 0");
+    }
+    if (!std::isfinite(body.cor) || body.cor < 0.0f) return Refuse(error, "cor", body.cor, "must be finite and >= 0");
+    if (!std::isfinite(body.friction) || body.friction < 0.0f)
+        return Refuse(error, "friction", body.friction, "must be finite and >= 0");
+    if (!(body.damping >= 0.0f && body.damping <= 1.0f))
+        return Refuse(error, "damping", body.damping, "must be in [0, 1]");
+    if (!std::isfinite(body.velocityEpsilon) || body.velocityEpsilon < 0.0f)
+        return Refuse(error, "velocityEpsilon", body.velocityEpsilon, "must be finite and >= 0");
+    if (!std::isfinite(body.referenceStep) || body.referenceStep < 0.0f)
+        return Refuse(error, "referenceStep", body.referenceStep, "must be finite and >= 0 (0 = per step)");
+    return true;
 }
 
 void FindCollisionFeatures(RigidbodyVolume& ra, RigidbodyVolume& rb, CollisionManifold* out) {

@@ -3,12 +3,18 @@
 // integrated from angular velocity (erratum 5.2-12: the book adds angular velocity to Euler angles); the
 // inverse inertia tensor is rotated into world space, R^T I^-1 R in row-vector form (erratum 5.2-11).
 
+#include <string>
+
 #include "Geometry3D.h"
 #include "Rigidbody.h"
 #include "quaternion.h"
 
 /// The book's GRAVITY_CONST, m/s^2.
 constexpr vec3 kVolumeGravity{0.0f, -9.82f, 0.0f};
+/// Shortest step (s) at which the book's per-step damping and velocity threshold are used as they are (60 Hz, the
+/// step of every ch15 test and benchmark; the book's demos step 0.03 s). Shorter steps convert them (see
+/// RigidbodyVolume::referenceStep).
+constexpr float kPerStepDampingMinDt = 1.0f / 60.0f;
 
 class RigidbodyVolume : public Rigidbody {
 public:
@@ -24,10 +30,17 @@ public:
     OBB box;
     Sphere sphere;
     vec3 gravity = kVolumeGravity;  ///< ApplyForces sets forces = gravity * mass
-    /// The book's per-STEP velocity damping factor (not per second); 1 disables damping.
+    /// The book's per-step velocity damping factor (not per second; see referenceStep); 1 disables damping.
     float damping = 0.98f;
-    /// Velocity components (linear and angular) below this magnitude are zeroed after damping (book: 0.001).
+    /// Velocity components (linear and angular) below this magnitude are zeroed after damping (book: 0.001 m/s;
+    /// see referenceStep).
     float velocityEpsilon = 0.001f;
+    /// Steps dt >= referenceStep apply `damping` and `velocityEpsilon` per step, as the book does. A shorter step
+    /// uses damping^(dt/referenceStep) and velocityEpsilon * dt/referenceStep, i.e. the per-second rates of a
+    /// referenceStep step, so the body does not freeze as dt -> 0: per step, the threshold exceeds g dt below
+    /// dt = 1.02e-4 s (a body released from rest never falls) and 0.98 caps free fall at 49 g dt (5 mm/s at
+    /// 1e-5 s). 0 applies them per step at every dt (the book).
+    float referenceStep = kPerStepDampingMinDt;
 
     RigidbodyVolume() = default;
     explicit RigidbodyVolume(RigidbodyType bodyType) : Rigidbody(bodyType) {}
@@ -57,10 +70,27 @@ public:
     void AddLinearImpulse(const vec3& impulse);
     /// angVel += I^-1_world ((point - position) x impulse); point in world space.
     void AddRotationalImpulse(const vec3& point, const vec3& impulse);
+    /// Damping factor for a step of dt seconds: damping itself when dt >= referenceStep or referenceStep <= 0,
+    /// else damping^(dt/referenceStep).
+    float StepDamping(float dt) const;
+    /// Velocity threshold for a step of dt seconds (m/s, rad/s): velocityEpsilon itself when dt >= referenceStep
+    /// or referenceStep <= 0, else velocityEpsilon * dt/referenceStep.
+    float StepVelocityEpsilon(float dt) const;
     /// Sets the orientation from the book's Euler angles in radians (x pitch, y yaw, z roll), converted as the
     /// book does (RAD2DEG then Rotation3x3), and syncs the volumes.
     void SetEulerOrientation(const vec3& radians);
+
+private:
+    // StepDamping's last (damping, referenceStep, dt) and result: pow once per body per distinct step, not per step.
+    mutable float dampingKey[3] = {-1.0f, -1.0f, -1.0f};
+    mutable float dampingValue = 1.0f;
 };
+
+/// True when `body` can be simulated: a sphere or box with finite, non-negative mass (0 = static); finite
+/// position, velocity, angular velocity, gravity, forces and torques; a finite, non-zero orientation; finite,
+/// strictly positive half sizes (box) or radius (sphere); finite cor, friction >= 0, damping in [0, 1], finite
+/// velocityEpsilon >= 0 and referenceStep >= 0. Otherwise false, with *error (if given) naming the field and value.
+bool ValidateVolume(const RigidbodyVolume& body, std::string* error);
 
 /// Manifold for any sphere/box pair, normal from a to b. Depth is the FULL penetration for every pair type
 /// (the geometry layer's sphere manifolds report half of it, erratum 5.2-32; doubled here so that linear

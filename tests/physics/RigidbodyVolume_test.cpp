@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "Approx.h"
 
@@ -101,12 +102,97 @@ TEST(RigidbodyVolume, UpdateAppliesGravityDampingAndThresholds) {
     EXPECT_TRUE(VecNear(b.box.position, b.position, tol::kExact));
 }
 
+// The book's damping (0.98) and threshold (0.001) are per step. From kPerStepDampingMinDt (1/60 s) up they are
+// used exactly as the book does; below it they are converted to the step (damping^(dt/ref), eps dt/ref), so the
+// per-second damping stays that of a 60 Hz step and the threshold never exceeds the velocity g dt gives a body.
+TEST(RigidbodyVolume, DampingAndThresholdArePerStepFrom60HzUpAndConvertedBelow) {
+    RigidbodyVolume b = MakeBox(vec3(), vec3(1, 1, 1), 1.0f);
+    for (float dt : {1.0f / 60.0f, 0.03f, 0.5f}) {
+        EXPECT_EQ(b.StepDamping(dt), 0.98f) << dt;
+        EXPECT_EQ(b.StepVelocityEpsilon(dt), 0.001f) << dt;
+    }
+    const float ref = kPerStepDampingMinDt;
+    EXPECT_NEAR(b.StepDamping(1e-3f), std::pow(0.98f, 1e-3f / ref), 1e-7f);
+    EXPECT_NEAR(b.StepVelocityEpsilon(1e-5f), 0.001f * 1e-5f / ref, 1e-12f);
+    EXPECT_LT(b.StepVelocityEpsilon(1e-5f), 9.82f * 1e-5f);  // below g dt: free fall is never zeroed
+    // Ten steps of ref/10 damp like one step of ref.
+    float tenth = 1.0f;
+    for (int i = 0; i < 10; ++i) tenth *= b.StepDamping(ref / 10.0f);
+    EXPECT_NEAR(tenth, 0.98f, 1e-6f);
+    // referenceStep 0: the book's per-step values at every dt.
+    b.referenceStep = 0.0f;
+    EXPECT_EQ(b.StepDamping(1e-5f), 0.98f);
+    EXPECT_EQ(b.StepVelocityEpsilon(1e-5f), 0.001f);
+}
+
+// A body released from rest at dt = 1e-5 s falls (the book's per-step threshold would zero g dt = 9.8e-5 m/s
+// every step) close to free fall: 1 - exp(-k t) damping at k = -ln(0.98) * 60 = 1.21 / s costs 4% over 0.1 s.
+TEST(RigidbodyVolume, TinyStepReleasedFromRestFallsNearlyFreely) {
+    RigidbodyVolume b = MakeBox(vec3(0, 10, 0), vec3(1, 1, 1), 1.0f);
+    for (int i = 0; i < 10000; ++i) {
+        b.ApplyForces();
+        b.Update(1e-5f);
+    }
+    const float freeFall = 0.5f * 9.82f * 0.1f * 0.1f;
+    EXPECT_LT(10.0f - b.position.y, freeFall);
+    EXPECT_GT(10.0f - b.position.y, 0.95f * freeFall);
+    RigidbodyVolume book = MakeBox(vec3(0, 10, 0), vec3(1, 1, 1), 1.0f);
+    book.referenceStep = 0.0f;  // the book's per-step values: hangs in the air
+    for (int i = 0; i < 100; ++i) {
+        book.ApplyForces();
+        book.Update(1e-5f);
+    }
+    EXPECT_EQ(book.position.y, 10.0f);
+}
+
+TEST(RigidbodyVolume, ValidateVolumeNamesTheBadValue) {
+    std::string error;
+    EXPECT_TRUE(ValidateVolume(MakeBox(vec3(), vec3(1, 1, 1), 1.0f), &error)) << error;
+    EXPECT_TRUE(ValidateVolume(MakeBox(vec3(), vec3(1e6f, 1e6f, 1e6f), 0.0f), &error)) << error;  // huge, static
+    EXPECT_TRUE(ValidateVolume(MakeSphere(vec3(), 0.5f, 2.0f), &error)) << error;
+    struct Case {
+        RigidbodyVolume body;
+        const char* named;
+    };
+    const float nan = std::nanf("");
+    RigidbodyVolume flat = MakeBox(vec3(), vec3(1, 0, 1), 1.0f);
+    RigidbodyVolume negative = MakeBox(vec3(), vec3(1, 1, -1), 1.0f);
+    RigidbodyVolume infSize = MakeBox(vec3(), vec3(INFINITY, 1, 1), 1.0f);
+    RigidbodyVolume point = MakeSphere(vec3(), 0.0f, 1.0f);
+    RigidbodyVolume nanRadius = MakeSphere(vec3(), nan, 1.0f);
+    RigidbodyVolume negMass = MakeBox(vec3(), vec3(1, 1, 1), -1.0f);
+    RigidbodyVolume nanMass = MakeSphere(vec3(), 1.0f, nan);
+    RigidbodyVolume farAway = MakeBox(vec3(0, INFINITY, 0), vec3(1, 1, 1), 1.0f);
+    RigidbodyVolume nanSpin = MakeBox(vec3(), vec3(1, 1, 1), 1.0f);
+    nanSpin.angVel.z = nan;
+    RigidbodyVolume zeroQuat = MakeBox(vec3(), vec3(1, 1, 1), 1.0f);
+    zeroQuat.orientation = quat(0, 0, 0, 0);
+    RigidbodyVolume base;  // Base type: no volume
+    const Case cases[] = {{flat, "box.size.y = 0"},
+                          {negative, "box.size.z = -1"},
+                          {infSize, "box.size.x = inf"},
+                          {point, "sphere.radius = 0"},
+                          {nanRadius, "sphere.radius = nan"},
+                          {negMass, "mass = -1"},
+                          {nanMass, "mass = nan"},
+                          {farAway, "position.y = inf"},
+                          {nanSpin, "angVel.z = nan"},
+                          {zeroQuat, "|orientation|^2 = 0"},
+                          {base, "type = 0"}};
+    for (const Case& c : cases) {
+        error.clear();
+        EXPECT_FALSE(ValidateVolume(c.body, &error)) << c.named;
+        EXPECT_NE(error.find(c.named), std::string::npos) << "expected '" << c.named << "' in: " << error;
+    }
+    EXPECT_FALSE(ValidateVolume(flat, nullptr));  // error is optional
+}
+
 // erratum 5.2-13: the book never integrates or damps a sphere's angular velocity, so spin from a contact
 // persists forever (and keeps feeding the contact's relative velocity). Here spheres rotate and damp like boxes.
 TEST(RigidbodyVolume, Erratum5_2_13_SphereSpinIsIntegratedAndDamped) {
     RigidbodyVolume s = MakeSphere(vec3(), 1.0f, 1.0f);
     s.angVel = vec3(0, 0, 2.0f);
-    for (int i = 0; i < 10; ++i) s.Update(0.01f);
+    for (int i = 0; i < 10; ++i) s.Update(1.0f / 60.0f);            // the book's per-step damping applies from 60 Hz up
     EXPECT_NEAR(s.angVel.z, 2.0f * std::pow(0.98f, 10.0f), 1e-5f);  // book: stays 2
     EXPECT_GT(std::fabs(s.orientation.z), 0.05f);                   // book: never turns
 }
