@@ -79,7 +79,8 @@ for p in $problems; do
   plot=""
   while IFS=$'\t' read -r file title; do
     sort -g -k1,1 "$file" -o "$file"
-    plot+="'$file' using 1:2 with linespoints lw 2 pt 7 ps 0.8 title '$title', "
+    pt=7; case "$title" in accumulated*) pt=5 ;; esac  # squares for the accumulated solver, circles otherwise
+    plot+="'$file' using 1:2 with linespoints lw 2 pt $pt ps 0.8 title '$title', "
   done < "$dir/index"
   plot+="'$dir/pareto' using 1:2 with lines lw 2 dt 2 lc rgb 'black' title 'Pareto front'"
   gnuplot <<GP
