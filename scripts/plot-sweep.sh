@@ -82,7 +82,7 @@ for p in $problems; do
     pt=7; case "$title" in accumulated*) pt=5 ;; esac  # squares for the accumulated solver, circles otherwise
     plot+="'$file' using 1:2 with linespoints lw 2 pt $pt ps 0.8 title '$title', "
   done < "$dir/index"
-  plot+="'$dir/pareto' using 1:2 with lines lw 2 dt 2 lc rgb 'black' title 'Pareto front'"
+  plot+="'$dir/pareto' using 1:2 with linespoints lw 2 dt 2 pt 6 ps 1.6 lc rgb 'black' title 'Pareto front'"
   gnuplot <<GP
 set terminal pngcairo size 900,600 font ',10'
 set output '$out/$name.png'
@@ -116,7 +116,8 @@ stability_map() {  # problem(s) regex, output name, y label, tolerance, panel (3
     END { for (i = 1; i <= n; i++) print order[i] > (dir "/panels") }' "$work/all.csv"
   [ -s "$dir/panels" ] || return 0
   local count; count=$(wc -l < "$dir/panels")
-  local cols=$(( count < 3 ? count : 3 )); local rows=$(( (count + cols - 1) / cols ))
+  local cols=$(( count < 3 ? count : 3 )); [ "$count" = 4 ] && cols=2
+  local rows=$(( (count + cols - 1) / cols ))
   {
     echo "set terminal pngcairo size $((380 * cols)),$((330 * rows + 40)) font ',9'"
     echo "set output '$out/$name.png'"
