@@ -24,7 +24,7 @@ if [ "${PSB_SKIP_SANITIZERS:-0}" != "1" ]; then
   cmake --build build-asan -j"$jobs"
   step "tests (ASan + UBSan)"
   # Mesa's llvmpipe is not instrumented; its one-time allocations are not leaks of ours.
-  ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:suppressions=$PWD/scripts/lsan.supp" \
+  ASAN_OPTIONS="detect_leaks=1:abort_on_error=1" \
   LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp" \
   UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
     ctest --test-dir build-asan --output-on-failure -j"$jobs"
