@@ -241,7 +241,7 @@ Renders a demo of the Game Physics Cookbook (ch. 14-16) off-screen (OSMesa, llvm
   --update-golden        with --compare DIR: rewrite the goldens in DIR instead of comparing
   --tolerance N          per-channel difference a pixel may have and still match (default 8)
   --max-diff F           fraction of pixels allowed beyond the tolerance (default 0.002)
-  --png-level N          zlib level 0..9 (default 1)
+  --png-level N          zlib level 0..9 (default 3)
   --serial-encode        encode PNGs on the main thread (same files; for measurement)
   --progress N           progress line on stderr every N frames (default: automatic)
   --quiet                no progress line and no summary

@@ -37,7 +37,7 @@ struct Options {
     bool updateGolden = false;
     CompareThresholds thresholds;
 
-    int pngLevel = 1;
+    int pngLevel = 3;
     bool encodeThread = true;  ///< --serial-encode turns it off (same files, slower)
     int progressEvery = 0;     ///< 0 = automatic (see docs/app.md)
     bool quiet = false;

@@ -10,11 +10,11 @@
 /// Row filter: one fixed filter for every row, or libpng's per-row adaptive choice (much slower).
 enum class PngFilter { None, Sub, Up, Adaptive };
 
-/// Encoder settings, chosen by measurement on rendered 800x600 frames (docs/app.md): zlib level 1 with no
-/// row filter was the fastest (about 3.3 ms a frame against 4.0-4.4 ms for Up or Sub, 17-22 ms for libpng's
-/// adaptive choice and 20-34 ms for stb_image_write), for files about 14 % larger than with Up.
+/// Encoder settings, chosen by measurement on rendered 800x600 frames (docs/app.md): zlib level 3 with no
+/// row filter is as fast as level 1 (about 2.8 ms a frame against 3.2-3.9 ms for Up or Sub, 9 ms for libpng's
+/// adaptive choice and 16-22 ms for stb_image_write) and its files are 11 % smaller.
 struct PngOptions {
-    int level = 1;  ///< zlib level 0..9
+    int level = 3;  ///< zlib level 0..9
     PngFilter filter = PngFilter::None;
 };
 
