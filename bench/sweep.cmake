@@ -5,3 +5,10 @@ add_executable(psb-sweep ${CMAKE_CURRENT_LIST_DIR}/sweep/SweepMain.cpp ${CMAKE_C
                          ${CMAKE_CURRENT_LIST_DIR}/sweep/ProblemsCloth.cpp)
 target_include_directories(psb-sweep PRIVATE ${CMAKE_CURRENT_LIST_DIR}/sweep)
 target_link_libraries(psb-sweep PRIVATE psb_scenes psb_physics psb_options)
+
+# CI runs the small grid and checks what its numbers must show (tests/bench/sweep_quick_test.sh).
+if(PSB_BUILD_TESTS)
+  add_test(NAME sweep.quick COMMAND sh ${PROJECT_SOURCE_DIR}/tests/bench/sweep_quick_test.sh
+                                    $<TARGET_FILE:psb-sweep> ${CMAKE_CURRENT_BINARY_DIR}/sweep-quick)
+  set_tests_properties(sweep.quick PROPERTIES LABELS bench TIMEOUT 600)
+endif()
