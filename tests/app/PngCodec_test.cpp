@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -20,6 +23,7 @@ Image Pattern(int w, int h) {
 
 std::string TempDir() {
     const std::string dir = ::testing::TempDir() + "psb_png_" + std::to_string(getpid());
+    std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
 }
@@ -75,6 +79,11 @@ TEST(PngCodec, AtomicWriteLeavesWholeFileOrNothing) {
     EXPECT_FALSE(WriteFileAtomic(dir + "/blocked.png", bytes, &error));
     EXPECT_NE(error.find(dir + "/blocked.png"), std::string::npos) << error;
     EXPECT_FALSE(std::filesystem::exists(dir + "/.blocked.png.tmp"));
+    // Whatever the temporary is called: the directory holds exactly the written file and the blocking directory.
+    std::vector<std::string> entries;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) entries.push_back(e.path().filename().string());
+    std::sort(entries.begin(), entries.end());
+    EXPECT_EQ(entries, (std::vector<std::string>{"blocked.png", "frame.png"}));
 
     EXPECT_FALSE(WriteFileAtomic(dir + "/no/such/dir/frame.png", bytes, &error));
     EXPECT_NE(error.find("no/such/dir/frame.png"), std::string::npos) << error;

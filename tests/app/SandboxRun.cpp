@@ -50,10 +50,12 @@ SandboxResult RunSandboxExe(const std::vector<std::string>& args) {
 
 std::vector<std::string> ListDemoIds() {
     const SandboxResult r = RunSandboxExe({"--list"});
+    EXPECT_EQ(r.exitCode, 0) << "--list: " << r.err;
     std::vector<std::string> ids;
     std::istringstream lines(r.out);
     std::string line;
-    while (std::getline(lines, line)) ids.push_back(line.substr(0, line.find('\t')));
+    while (std::getline(lines, line))
+        if (!line.empty()) ids.push_back(line.substr(0, line.find('\t')));
     return ids;
 }
 

@@ -316,7 +316,9 @@ TEST(ClosestPointProperty, LineRayPlane) {
             const float s = U(rng, 0, 1);
             ASSERT_LE(Distance(q, cl), Distance(q, a + (b - a) * s) + kSlack) << "case " << n;
             ASSERT_LE(Distance(q, cr), Distance(q, a + (b - a) * (4 * s)) + kSlack) << "case " << n;
-            const Point onPlane = ClosestPoint(plane, RandomVec(rng, -6, 6));  // some point of the plane
+            // Some point of the plane, built independently of ClosestPoint: the foot n*d plus a tangent offset.
+            const vec3 r = RandomVec(rng, -6, 6);
+            const Point onPlane = plane.normal * plane.distance + (r - plane.normal * Dot(r, plane.normal));
             ASSERT_LE(Distance(q, cp), Distance(q, onPlane) + kSlack) << "case " << n;
         }
     }

@@ -148,10 +148,21 @@ TEST(DistanceJoint, ZeroLengthJointMergesThenStaysFinite) {
     EXPECT_TRUE(IsFinite(b.GetPosition()));
 }
 
-TEST(DistanceJoint, WithoutParticlesDoesNothing) {
-    DistanceJoint joint;
-    joint.SolveConstraints(kNoConstraints);  // must not crash
-    SUCCEED();
+TEST(DistanceJoint, WithoutBothParticlesDoesNothing) {
+    DistanceJoint empty;
+    empty.SolveConstraints(kNoConstraints);  // no ends at all: must not crash
+    EXPECT_EQ(empty.p1, nullptr);
+    // One end missing: the other, stretched far beyond the length, is neither moved nor slowed.
+    Particle a;
+    a.SetPosition(vec3(3, 0, 0));
+    a.SetVelocity(vec3(1, 0, 0));
+    for (bool first : {true, false}) {
+        DistanceJoint joint;
+        joint.Initialize(first ? &a : nullptr, first ? nullptr : &a, 1.0f);
+        joint.SolveConstraints(kNoConstraints);
+        EXPECT_TRUE(VecNear(a.GetPosition(), vec3(3, 0, 0), 0.0f)) << first;
+        EXPECT_TRUE(VecNear(a.GetVelocity(), vec3(1, 0, 0), 0.0f)) << first;
+    }
 }
 
 // ---- Pendulum: pivot of mass 0 (immovable), 1 kg bob on a joint of length L, no per-step damping (friction 1).

@@ -178,7 +178,7 @@ TEST(ExtremesTest, HugeStepVolumeStackStaysOnTheGround) {
 // from where the stack stood, none faster than 20 m/s), step by step.
 TEST(ExtremesTest, HugeStepVolumeStackIsSubdividedAndBounded) {
     Volumes w;
-    HugeStepStack(1.0f, 1, &w);  // builds and runs 40 steps; re-run step by step below
+    ASSERT_TRUE(HugeStepStack(1.0f, 1, &w));  // builds and runs 40 steps; re-run step by step below
     for (int i = 0; i < 40; ++i) {
         w.system.Update(0.5f);
         EXPECT_GE(w.system.LastVolumeSubsteps(), 2) << "step " << i;
@@ -338,32 +338,54 @@ TEST(ExtremesTest, VolumeRestsOnGroundTenKilometresOut) {
 // ---------------------------------------------------------------------------------------------------------
 // Zero and huge sizes.
 
-/// Ground, a radius-0 sphere, a half-size-0 box and a flat box (half-height 0) dropped 1 m, 120 steps.
-bool DropZeroSizeVolumes(Volumes* w) {
-    AddGround(w, 0.0f);
-    w->Add(RigidbodyType::Sphere, vec3(0.0f, 1.0f, 0.0f), 1.0f, 0.0f);
-    w->Add(RigidbodyType::Box, vec3(0.0f, 1.0f, 0.0f), 1.0f, 0.0f);  // coincident with the sphere
-    w->Add(RigidbodyType::Box, vec3(3.0f, 1.0f, 0.0f), 1.0f, 0.5f).box.size.y = 0.0f;
-    w->Finish();
-    w->bodies[2].angVel = vec3(1.0f, 2.0f, 3.0f);  // spin with a zero inertia tensor
-    return w->Run(1.0f / 60.0f, 120);
+// Zero-size volumes (a radius-0 sphere, a half-size-0 box, a flat box of half-height 0) used to be accepted and
+// then fell through the ground for ever (finite, unbounded). PhysicsSystem::AddRigidbody now refuses them
+// (ValidateVolume): each is refused with its value named, the world holds only the ground, and stepping it never
+// touches the refused bodies (the system keeps no pointer to them).
+TEST(ExtremesTest, ZeroSizeVolumesAreRefusedAndNeverStepped) {
+    Volumes w;
+    AddGround(&w, 0.0f);
+    w.Add(RigidbodyType::Sphere, vec3(0.0f, 1.0f, 0.0f), 1.0f, 0.0f);
+    w.Add(RigidbodyType::Box, vec3(0.0f, 1.0f, 0.0f), 1.0f, 0.0f);  // coincident with the sphere
+    w.Add(RigidbodyType::Box, vec3(3.0f, 1.0f, 0.0f), 1.0f, 0.5f).box.size.y = 0.0f;
+    const char* named[] = {nullptr, "sphere.radius = 0", "box.size.x = 0", "box.size.y = 0"};
+    for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+        w.bodies[i].SynchCollisionVolumes();
+        const bool added = w.system.AddRigidbody(&w.bodies[i]);
+        if (named[i] == nullptr) {
+            EXPECT_TRUE(added) << w.system.LastError();
+        } else {
+            EXPECT_FALSE(added) << named[i];
+            EXPECT_NE(w.system.LastError().find(named[i]), std::string::npos) << w.system.LastError();
+        }
+    }
+    ASSERT_EQ(w.system.Volumes().size(), 1u);
+    w.bodies[2].angVel = vec3(1.0f, 2.0f, 3.0f);  // spin with a zero inertia tensor
+    ASSERT_TRUE(w.Run(1.0f / 60.0f, 600));
+    for (std::size_t i = 1; i < w.bodies.size(); ++i) {
+        EXPECT_EQ(w.bodies[i].position.y, 1.0f) << "refused body " << i << " was stepped";
+        EXPECT_EQ(w.bodies[i].velocity.y, 0.0f) << "refused body " << i << " was stepped";
+    }
 }
 
-TEST(ExtremesTest, ZeroSizeVolumesStayFinite) {
+// Small accepted sizes do collide: a 1 mm sphere, a 1 cm box and a 1 cm thin plate dropped 1 m land on the ground
+// (top y = 0) and stay on it, neither tunnelling through the 1 m slab nor bouncing away. (Boxes of half-size 1-3 mm
+// still fall through at 60 Hz: their tiny inertia turns the first asymmetric contact impulse into a tumble that
+// carries them wholly inside the slab, where every face axis ties and the normal is sideways. Reported, not
+// asserted here.)
+TEST(ExtremesTest, SmallVolumesLandOnTheGround) {
     Volumes w;
-    ASSERT_TRUE(DropZeroSizeVolumes(&w));
-    for (int i = 0; i < 480; ++i) w.system.Update(1.0f / 60.0f);
-    ASSERT_TRUE(Finite(w.bodies[1]));
-    // A radius-0 sphere is a point: it sinks into the slab by what projection leaves, but never through it.
-    EXPECT_GT(w.bodies[1].position.y, -0.5f);
-}
-
-// Zero-size boxes (all half-sizes 0, or a flat box with half-height 0) used to be accepted and then fell through
-// the ground for ever (finite, unbounded). PhysicsSystem::AddRigidbody now refuses them (ValidateVolume).
-TEST(ExtremesTest, ZeroSizeBoxesAreRefusedOrCollide) {
-    Volumes w;
-    ASSERT_TRUE(DropZeroSizeVolumes(&w));
-    for (std::size_t i = 2; i < w.bodies.size(); ++i) EXPECT_GT(w.bodies[i].position.y, -0.01f) << "body " << i;
+    AddGround(&w, 0.0f);
+    w.Add(RigidbodyType::Sphere, vec3(0.0f, 1.0f, 0.0f), 1.0f, 1e-3f);
+    w.Add(RigidbodyType::Box, vec3(1.5f, 1.0f, 0.0f), 1.0f, 1e-2f);
+    w.Add(RigidbodyType::Box, vec3(3.0f, 1.0f, 0.0f), 1.0f, 0.5f).box.size.y = 1e-2f;
+    w.Finish();
+    ASSERT_EQ(w.system.Volumes().size(), 4u) << w.system.LastError();
+    ASSERT_TRUE(w.Run(1.0f / 60.0f, 600));
+    for (std::size_t i = 1; i < w.bodies.size(); ++i) {
+        EXPECT_GT(w.bodies[i].position.y, -0.01f) << "body " << i << " sank into the ground";
+        EXPECT_LT(w.bodies[i].position.y, 0.05f) << "body " << i << " is not on the ground";
+    }
 }
 
 // Refusal at the API: AddRigidbody returns false, skips the body and names the bad value in LastError().

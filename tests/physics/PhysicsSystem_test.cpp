@@ -175,6 +175,8 @@ TEST(PhysicsSystem, TwoRunsAreBitwiseIdentical) {
             a.Step();
             b.Step();
         }
+        ASSERT_EQ(a.Particles().size(), 120u);
+        ASSERT_EQ(b.Particles().size(), 120u);
         for (std::size_t k = 0; k < a.Particles().size(); ++k) {
             const vec3 pa = a.Particles()[k].GetPosition(), pb = b.Particles()[k].GetPosition();
             const vec3 va = a.Particles()[k].GetVelocity(), vb = b.Particles()[k].GetVelocity();

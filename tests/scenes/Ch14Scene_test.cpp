@@ -39,6 +39,7 @@ TEST(Ch14Scene, SpawnsStayInTheBooksBoxAndSeedChangesThem) {
     Ch14Params params;
     params.particles = 300;
     Ch14Scene scene(params);
+    ASSERT_EQ(scene.Particles().size(), 300u);
     for (const Particle& p : scene.Particles()) {
         const vec3 x = p.GetPosition();
         EXPECT_LE(std::fabs(x.x - Ch14Scene::kSpawnCenter.x), Ch14Scene::kSpawnHalfSize.x + 1e-5f);
@@ -75,6 +76,7 @@ TEST(Ch14Scene, LongRunKeepsEveryParticleFiniteAndAboveTheGround) {
         params.integrator = i;
         Ch14Scene scene(params);
         for (int s = 0; s < 1000; ++s) scene.Step();
+        ASSERT_EQ(scene.Particles().size(), 300u);
         for (const Particle& p : scene.Particles()) {
             const vec3 x = p.GetPosition();
             ASSERT_TRUE(std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z)) << ToString(i);

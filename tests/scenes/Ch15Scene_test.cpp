@@ -87,8 +87,11 @@ TEST(Ch15Scene, TwoRunsAreBitwiseIdentical) {
         a.Step(kBookDt);
         b.Step(kBookDt);
     }
+    ASSERT_EQ(a.Bodies().size(), 3u);
+    ASSERT_EQ(b.Bodies().size(), 3u);
     for (std::size_t i = 0; i < a.Bodies().size(); ++i) {
         EXPECT_EQ(std::memcmp(&a.Bodies()[i].position, &b.Bodies()[i].position, sizeof(vec3)), 0);
+        EXPECT_EQ(std::memcmp(&a.Bodies()[i].velocity, &b.Bodies()[i].velocity, sizeof(vec3)), 0);
         EXPECT_EQ(std::memcmp(&a.Bodies()[i].orientation, &b.Bodies()[i].orientation, sizeof(quat)), 0);
         EXPECT_EQ(std::memcmp(&a.Bodies()[i].angVel, &b.Bodies()[i].angVel, sizeof(vec3)), 0);
     }

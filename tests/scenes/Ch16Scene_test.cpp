@@ -136,11 +136,13 @@ TEST(Ch16Scene, DeterministicBitForBit) {
         b.Step();
     }
     const std::vector<float> sa = Snapshot(a), sb = Snapshot(b);
+    ASSERT_EQ(sa.size(), 225u * 6u);
     ASSERT_EQ(sa.size(), sb.size());
     EXPECT_EQ(std::memcmp(sa.data(), sb.data(), sa.size() * sizeof(float)), 0);
     // A reset replays the same run.
     a.Reset();
     for (int i = 0; i < 300; ++i) a.Step();
     const std::vector<float> sr = Snapshot(a);
+    ASSERT_EQ(sr.size(), sa.size());
     EXPECT_EQ(std::memcmp(sa.data(), sr.data(), sa.size() * sizeof(float)), 0);
 }

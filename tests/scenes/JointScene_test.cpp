@@ -116,5 +116,7 @@ TEST(JointScene, DeterministicBitForBit) {
         b.Step();
     }
     const std::vector<float> sa = Snapshot(a), sb = Snapshot(b);
+    ASSERT_EQ(sa.size(), 50u * 6u);
+    ASSERT_EQ(sa.size(), sb.size());
     EXPECT_EQ(std::memcmp(sa.data(), sb.data(), sa.size() * sizeof(float)), 0);
 }

@@ -98,8 +98,12 @@ TEST(SpringsScene, DeterministicBitForBit) {
         a.Step();
         b.Step();
     }
+    ASSERT_EQ(a.Particles().size(), 2u);
+    ASSERT_EQ(b.Particles().size(), 2u);
     for (int i = 0; i < 2; ++i) {
         const vec3 pa = a.Particles()[i].GetPosition(), pb = b.Particles()[i].GetPosition();
+        const vec3 va = a.Particles()[i].GetVelocity(), vb = b.Particles()[i].GetVelocity();
         EXPECT_EQ(std::memcmp(&pa, &pb, sizeof(vec3)), 0);
+        EXPECT_EQ(std::memcmp(&va, &vb, sizeof(vec3)), 0);
     }
 }
