@@ -23,27 +23,21 @@ OBB Ch16Scene::PostVisual(int i) {
 
 void Ch16Scene::Reset(const Ch16Params& p) {
     params = p;
-    integratorIndex = IntegratorIndex(params.integrator);
+    stepping.Select(params.integrator);
     Build();
 }
 
 void Ch16Scene::Reset() {
-    params.integrator = IntegratorAt(integratorIndex);
+    params.integrator = stepping.Chosen();
     Build();
 }
 
 int Ch16Scene::Advance(float elapsed) {
-    const int due = accumulator.Advance(elapsed, params.dt);
-    int run = 0;
-    while (run < due && monitor.Stable()) {
-        Step();
-        ++run;
-    }
-    return run;
+    return stepping.Advance(elapsed, params.dt, monitor, [this] { Step(); });
 }
 
 void Ch16Scene::Build() {
-    accumulator.Clear();
+    stepping.Clear();
     system = std::make_unique<PhysicsSystem>();
     system->integrator = params.integrator;
     cloth = std::make_unique<Cloth>();
@@ -72,5 +66,5 @@ void Ch16Scene::AddParameters(ParameterSet* set) {
     set->AddFloat("k", &params.k, -5.0f, 0.0f, "book spring k of every cloth spring; applied on reset", reset);
     set->AddFloat("damping", &params.damping, 0.0f, 1.0f, "book spring damping d (no widget in the book)", reset);
     set->AddAction("reset", reset, "rebuild the scene with the panel values");
-    AddStepParameters(set, &integratorIndex, &params.dt, reset);
+    stepping.AddParameters(set, &params.dt, reset);
 }

@@ -66,8 +66,7 @@ private:
     void Build();
 
     Ch16Params params;
-    int integratorIndex = 0;
-    StepAccumulator accumulator;
+    SoftSceneStepping stepping;
     std::unique_ptr<PhysicsSystem> system;
     std::unique_ptr<Cloth> cloth;
     StabilityMonitor monitor;

@@ -14,27 +14,21 @@ std::vector<OBB> JointScene::Constraints() {
 
 void JointScene::Reset(const JointParams& p) {
     params = p;
-    integratorIndex = IntegratorIndex(params.integrator);
+    stepping.Select(params.integrator);
     Build();
 }
 
 void JointScene::Reset() {
-    params.integrator = IntegratorAt(integratorIndex);
+    params.integrator = stepping.Chosen();
     Build();
 }
 
 int JointScene::Advance(float elapsed) {
-    const int due = accumulator.Advance(elapsed, params.dt);
-    int run = 0;
-    while (run < due && monitor.Stable()) {
-        Step();
-        ++run;
-    }
-    return run;
+    return stepping.Advance(elapsed, params.dt, monitor, [this] { Step(); });
 }
 
 void JointScene::Build() {
-    accumulator.Clear();
+    stepping.Clear();
     system = std::make_unique<PhysicsSystem>();
     system->integrator = params.integrator;
     for (const OBB& c : Constraints()) system->AddConstraint(c);
@@ -67,10 +61,7 @@ void JointScene::Build() {
 
 bool JointScene::Step() {
     system->Update(params.dt);
-    for (Particle& particle : particles) {
-        const vec3 pos = particle.GetPosition();
-        if (pos.y < kFloorY) particle.SetPosition(vec3(pos.x, kFloorY, pos.z));
-    }
+    ClampAboveFloor(&particles, kFloorY);
     return monitor.Check(*system);
 }
 
@@ -78,5 +69,5 @@ void JointScene::AddParameters(ParameterSet* set) {
     auto reset = [this] { Reset(); };
     set->AddInt("count", &params.numParticles, 2, 100, "particle count (odd rounds up); applied on reset", reset);
     set->AddAction("reset", reset, "rebuild the scene with the panel values (new random spawn)");
-    AddStepParameters(set, &integratorIndex, &params.dt, reset);
+    stepping.AddParameters(set, &params.dt, reset);
 }

@@ -60,8 +60,7 @@ private:
     void Build();
 
     JointParams params;
-    int integratorIndex = 0;
-    StepAccumulator accumulator;
+    SoftSceneStepping stepping;
     MsvcRand ownRng;
     MsvcRand* rng;
     std::unique_ptr<PhysicsSystem> system;

@@ -43,3 +43,10 @@ int StepAccumulator::Advance(double elapsed, double dt) {
     if (accumulated < 0.0) accumulated = 0.0;
     return steps;
 }
+
+void ClampAboveFloor(std::vector<Particle>* particles, float floorY) {
+    for (Particle& particle : *particles) {
+        const vec3 pos = particle.GetPosition();
+        if (pos.y < floorY) particle.SetPosition(vec3(pos.x, floorY, pos.z));
+    }
+}

@@ -8,6 +8,8 @@
 
 #include "Integrator.h"
 #include "Parameters.h"
+#include "Particle.h"
+#include "StabilityMonitor.h"
 
 /// Integrator ids in IntegratorIds() order ("explicit-euler", "euler", ...): the "integrator" choice list.
 std::vector<std::string> IntegratorChoices();
@@ -35,3 +37,38 @@ public:
 private:
     double accumulated = 0.0;
 };
+
+/// The step plumbing every chapter 16 scene keeps: the "integrator" choice behind its panel and the
+/// accumulator that runs its dt inside host time. The scene owns its params; this holds the rest.
+class SoftSceneStepping {
+public:
+    /// Points the "integrator" choice at `integrator` (Reset(params)).
+    void Select(Integrator integrator) { integratorIndex = IntegratorIndex(integrator); }
+    /// The integrator the "integrator" choice names (Reset() from the panel values).
+    Integrator Chosen() const { return IntegratorAt(integratorIndex); }
+    /// Drops the host time carried over from before a rebuild.
+    void Clear() { accumulator.Clear(); }
+    /// AddStepParameters bound to this choice and to *dt.
+    void AddParameters(ParameterSet* set, float* dt, const std::function<void()>& onChange) {
+        AddStepParameters(set, &integratorIndex, dt, onChange);
+    }
+    /// Calls step() for each step of dt due after `elapsed` host seconds, stopping once monitor reports
+    /// unstable. Returns the number of steps run.
+    template <typename StepFn>
+    int Advance(float elapsed, float dt, const StabilityMonitor& monitor, StepFn step) {
+        const int due = accumulator.Advance(elapsed, dt);
+        int run = 0;
+        while (run < due && monitor.Stable()) {
+            step();
+            ++run;
+        }
+        return run;
+    }
+
+private:
+    int integratorIndex = 0;
+    StepAccumulator accumulator;
+};
+
+/// Raises every particle below floorY to it (the book's Update clamp y >= -5 in springs and joints).
+void ClampAboveFloor(std::vector<Particle>* particles, float floorY);

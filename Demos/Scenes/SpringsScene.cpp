@@ -6,27 +6,21 @@ OBB SpringsScene::Ground() { return OBB(vec3(0.0f, 0.0f, 0.0f), vec3(10.0f, 0.15
 
 void SpringsScene::Reset(const SpringsParams& p) {
     params = p;
-    integratorIndex = IntegratorIndex(params.integrator);
+    stepping.Select(params.integrator);
     Build();
 }
 
 void SpringsScene::Reset() {
-    params.integrator = IntegratorAt(integratorIndex);
+    params.integrator = stepping.Chosen();
     Build();
 }
 
 int SpringsScene::Advance(float elapsed) {
-    const int due = accumulator.Advance(elapsed, params.dt);
-    int run = 0;
-    while (run < due && monitor.Stable()) {
-        Step();
-        ++run;
-    }
-    return run;
+    return stepping.Advance(elapsed, params.dt, monitor, [this] { Step(); });
 }
 
 void SpringsScene::Build() {
-    accumulator.Clear();
+    stepping.Clear();
     system = std::make_unique<PhysicsSystem>();
     system->integrator = params.integrator;
     system->AddConstraint(Ground());
@@ -47,10 +41,7 @@ void SpringsScene::Build() {
 
 bool SpringsScene::Step() {
     system->Update(params.dt);
-    for (Particle& particle : particles) {
-        const vec3 pos = particle.GetPosition();
-        if (pos.y < kFloorY) particle.SetPosition(vec3(pos.x, kFloorY, pos.z));
-    }
+    ClampAboveFloor(&particles, kFloorY);
     return monitor.Check(*system);
 }
 
@@ -60,5 +51,5 @@ void SpringsScene::AddParameters(ParameterSet* set) {
     set->AddFloat("b", &params.b, 0.0f, 1.0f, "book spring damping; applied on reset", reset);
     set->AddFloat("l", &params.restLength, 0.0f, 5.0f, "spring rest length in m; applied on reset", reset);
     set->AddAction("reset", reset, "rebuild the scene with the panel values");
-    AddStepParameters(set, &integratorIndex, &params.dt, reset);
+    stepping.AddParameters(set, &params.dt, reset);
 }

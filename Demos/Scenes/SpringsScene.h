@@ -57,8 +57,7 @@ private:
     void Build();
 
     SpringsParams params;
-    int integratorIndex = 0;
-    StepAccumulator accumulator;
+    SoftSceneStepping stepping;
     std::unique_ptr<PhysicsSystem> system;
     std::vector<Particle> particles;
     StabilityMonitor monitor;
