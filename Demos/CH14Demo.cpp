@@ -1,6 +1,5 @@
 #include "CH14Demo.h"
 
-#include <glad/gl.h>
 #include <imgui.h>
 
 #include <string>
@@ -10,8 +9,7 @@
 #include "FixedFunctionPrimitives.h"
 
 namespace {
-const vec3 kInitialLight{0.5f, 1.0f, -1.5f};  // every demo's Initialize (book.md 1.5)
-const vec3 kLight{0.0f, 1.0f, 0.0f};          // CH14's Render: straight down
+const vec3 kLight{0.0f, 1.0f, 0.0f};  // CH14's Render: straight down
 constexpr std::size_t kDeltaHistory = 120;
 }  // namespace
 
@@ -42,12 +40,7 @@ void CH14Demo::ResetDemo() {
 
 void CH14Demo::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
-    glEnable(GL_LIGHTING);
-    glEnable(GL_LIGHT0);
-    SetLightDirection(kInitialLight);
-    camera.SetTarget(vec3(3.75622f, 2.98255f, 0.0f));
-    camera.SetZoom(9.0f);
-    camera.SetRotation(vec2(-67.9312f, 19.8f));
+    InitializeBookView();
     ResetDemo();
 }
 

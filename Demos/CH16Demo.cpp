@@ -10,7 +10,7 @@ CH16Demo::CH16Demo() { scene.AddParameters(&params); }
 
 void CH16Demo::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
-    InitializeSoftDemoView(this);
+    InitializeBookView();
     scene.Reset();
     reported = false;
 }

@@ -11,12 +11,9 @@ ConservationOfMomentum::ConservationOfMomentum() { scene.AddParameters(&params);
 void ConservationOfMomentum::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
     // book.md 2.4 gives only the zoom; target and rotation are the CH14 preset the other ch15 demos use.
-    camera.SetTarget(vec3(3.75622f, 2.98255f, 0.0f));
-    camera.SetZoom(12.0f);
-    camera.SetRotation(vec2(-67.9312f, 19.8f));
+    UseBookCamera(12.0f);
     glPointSize(5.0f);
-    glEnable(GL_LIGHTING);
-    glEnable(GL_LIGHT0);
+    EnableBookLighting();
     scene.Reset();
 }
 

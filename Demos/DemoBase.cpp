@@ -1,5 +1,6 @@
 #include "DemoBase.h"
 
+#include <glad/gl.h>
 #include <imgui.h>
 
 #include <cmath>
@@ -50,6 +51,23 @@ void DemoBase::BeginPanel(const char* title, float height) {
     ImGui::SetNextWindowPos(ImVec2(400.0f, 10.0f), ImGuiCond_Once);
     ImGui::SetNextWindowSize(ImVec2(370.0f, height), ImGuiCond_Always);
     ImGui::Begin(title, nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoScrollbar);
+}
+
+void DemoBase::UseBookCamera(float zoom) {
+    camera.SetTarget(vec3(3.75622f, 2.98255f, 0.0f));
+    camera.SetZoom(zoom);
+    camera.SetRotation(vec2(-67.9312f, 19.8f));
+}
+
+void DemoBase::EnableBookLighting() {
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+}
+
+void DemoBase::InitializeBookView() {
+    EnableBookLighting();
+    SetLightDirection(vec3(0.5f, 1.0f, -1.5f));
+    UseBookCamera(9.0f);
 }
 
 void DemoBase::SetMouseState(bool left, bool middle, bool right, const vec2& delta, const vec2& mouse) {

@@ -56,6 +56,14 @@ protected:
     /// tall every frame, not resizable, and without the scrollbar ImGui 1.86 would add when the rows fill
     /// the book's 75-pixel height (1.50 showed none). Always pair with ImGui::End().
     static void BeginPanel(const char* title, float height = 75.0f);
+    /// The book's chapter 14-16 camera preset (book.md 1.4): target (3.75622, 2.98255, 0), rotation
+    /// (-67.9312, 19.8) degrees, and `zoom` (9 in most demos; 12 in CH15 and Conservation Of Momentum).
+    void UseBookCamera(float zoom);
+    /// Turns on GL_LIGHTING and GL_LIGHT0, as each demo's Initialize does (book.md 1.5).
+    static void EnableBookLighting();
+    /// CH14's and the chapter 16 demos' Initialize view: EnableBookLighting, the light (0.5, 1, -1.5, 0) until
+    /// the first Render (book.md 1.5), and UseBookCamera(9).
+    void InitializeBookView();
 
     bool show_help = false;
     bool mouseLeftDown = false;

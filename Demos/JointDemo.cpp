@@ -10,7 +10,7 @@ JointDemo::JointDemo() : scene(JointParams(), &rng) { scene.AddParameters(&param
 
 void JointDemo::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
-    InitializeSoftDemoView(this);
+    InitializeBookView();
     // The scene was built in the constructor with the book's first spawn; rebuilding here would draw the
     // next random numbers, so only a later Initialize rebuilds.
     if (initialized) scene.Reset();

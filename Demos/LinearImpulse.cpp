@@ -10,12 +10,9 @@ LinearImpulse::LinearImpulse() { scene.AddParameters(&params); }
 
 void LinearImpulse::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
-    camera.SetTarget(vec3(3.75622f, 2.98255f, 0.0f));
-    camera.SetZoom(9.0f);
-    camera.SetRotation(vec2(-67.9312f, 19.8f));
+    UseBookCamera(9.0f);
     glPointSize(5.0f);
-    glEnable(GL_LIGHTING);
-    glEnable(GL_LIGHT0);
+    EnableBookLighting();
     scene.Reset();
 }
 

@@ -2,7 +2,6 @@
 
 #include <imgui.h>
 
-
 #include "FixedFunctionPhysics.h"
 #include "FixedFunctionPrimitives.h"
 #include "SoftDemoPanel.h"
@@ -11,7 +10,7 @@ SimpleSprings::SimpleSprings() { scene.AddParameters(&params); }
 
 void SimpleSprings::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
-    InitializeSoftDemoView(this);
+    InitializeBookView();
     scene.Reset();
     reported = false;
 }

@@ -1,6 +1,5 @@
 #include "SoftDemoPanel.h"
 
-#include <glad/gl.h>
 #include <imgui.h>
 
 #include <cstdio>
@@ -15,15 +14,6 @@ bool StepIsBook(Integrator integrator, float dt) {
     return integrator == Integrator::SemiImplicitEuler && dt == kBookDt;
 }
 }  // namespace
-
-void InitializeSoftDemoView(DemoBase* demo) {
-    glEnable(GL_LIGHTING);
-    glEnable(GL_LIGHT0);
-    SetLightDirection(vec3(0.5f, 1.0f, -1.5f));
-    demo->camera.SetTarget(vec3(3.75622f, 2.98255f, 0.0f));
-    demo->camera.SetZoom(9.0f);
-    demo->camera.SetRotation(vec2(-67.9312f, 19.8f));
-}
 
 void BeginSoftPanel(const char* title, Integrator integrator, float dt, const StabilityMonitor& monitor) {
     float height = 75.0f;

@@ -1,5 +1,5 @@
 #pragma once
-// Shared by the chapter 16 demos (SimpleSprings, CH16Demo, JointDemo): view set-up, the panel frame with the
+// Shared by the chapter 16 demos (SimpleSprings, CH16Demo, JointDemo): the light, the panel frame with the
 // book's size, and the stability report in place of garbage.
 
 #include <vector>
@@ -12,8 +12,6 @@
 /// Light of the chapter 16 demos' Render: (0, 1, 0, 0), straight down (book.md 1.5).
 constexpr vec3 kSoftDemoLight{0.0f, 1.0f, 0.0f};
 
-/// Lighting on, light (0.5, 1, -1.5, 0) until the first Render, CH14's camera preset (book.md 1.4).
-void InitializeSoftDemoView(DemoBase* demo);
 /// Opens the demo panel at (400,10), width 370, height 75 as the book; one text row taller for each of:
 /// a non-book integrator or dt, an instability report.
 void BeginSoftPanel(const char* title, Integrator integrator, float dt, const StabilityMonitor& monitor);
