@@ -162,28 +162,23 @@ void IntegrateParticleStates(Integrator method, Particle* const* particles, std:
                 p.position = Mad(s.x0, s.v0, halfDt);
                 p.velocity = Mad(s.v0, kv, halfDt);
             }
+            // k2 and k3: add 2 k to the sums and predict the next evaluation point x0 + k h, v0 + k h.
+            auto addMiddleStage = [&](float h) {
+                for (std::size_t i = 0; i < count; ++i) {
+                    Particle& p = *particles[i];
+                    IntegratorScratch& s = scratch[i];
+                    const vec3 kx = p.velocity;
+                    const vec3 kv = Scale(p.forces, InvMassOf(p));
+                    s.sumX = Mad(s.sumX, kx, 2.0f);
+                    s.sumV = Mad(s.sumV, kv, 2.0f);
+                    p.position = Mad(s.x0, kx, h);
+                    p.velocity = Mad(s.v0, kv, h);
+                }
+            };
             evaluate(context);  // k2 at the midpoint predicted by k1
-            for (std::size_t i = 0; i < count; ++i) {
-                Particle& p = *particles[i];
-                IntegratorScratch& s = scratch[i];
-                const vec3 kx = p.velocity;
-                const vec3 kv = Scale(p.forces, InvMassOf(p));
-                s.sumX = Mad(s.sumX, kx, 2.0f);
-                s.sumV = Mad(s.sumV, kv, 2.0f);
-                p.position = Mad(s.x0, kx, halfDt);
-                p.velocity = Mad(s.v0, kv, halfDt);
-            }
+            addMiddleStage(halfDt);
             evaluate(context);  // k3 at the midpoint predicted by k2
-            for (std::size_t i = 0; i < count; ++i) {
-                Particle& p = *particles[i];
-                IntegratorScratch& s = scratch[i];
-                const vec3 kx = p.velocity;
-                const vec3 kv = Scale(p.forces, InvMassOf(p));
-                s.sumX = Mad(s.sumX, kx, 2.0f);
-                s.sumV = Mad(s.sumV, kv, 2.0f);
-                p.position = Mad(s.x0, kx, dt);
-                p.velocity = Mad(s.v0, kv, dt);
-            }
+            addMiddleStage(dt);
             evaluate(context);  // k4 at the end predicted by k3
             for (std::size_t i = 0; i < count; ++i) {
                 Particle& p = *particles[i];
