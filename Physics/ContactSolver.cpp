@@ -36,20 +36,6 @@ float EffectiveMass(float invSum, const mat3& iA, const mat3& iB, const vec3& rA
     return k > 0.0f ? 1.0f / k : 0.0f;
 }
 
-/// Velocity of B's contact point relative to A's.
-vec3 RelativeVelocity(const RigidbodyVolume& A, const RigidbodyVolume& B, const vec3& rA, const vec3& rB) {
-    return (B.velocity + Cross(B.angVel, rB)) - (A.velocity + Cross(A.angVel, rA));
-}
-
-/// Equal and opposite impulse P (on B; -P on A) at the contact.
-void Apply(RigidbodyVolume& A, RigidbodyVolume& B, float invA, float invB, const mat3& iA, const mat3& iB,
-           const vec3& rA, const vec3& rB, const vec3& P) {
-    A.velocity -= P * invA;
-    B.velocity += P * invB;
-    A.angVel -= MultiplyVector(Cross(rA, P), iA);
-    B.angVel += MultiplyVector(Cross(rB, P), iB);
-}
-
 /// Clamps the friction pair (jt1, jt2) into the Coulomb cone |jt| <= limit.
 void ClampToCone(float limit, float* jt1, float* jt2) {
     const float sq = *jt1 * *jt1 + *jt2 * *jt2;
@@ -223,8 +209,8 @@ void AccumulatedContactSolver::Solve(const std::vector<RigidbodyVolume*>& volume
         for (std::size_t k = arb.first; k < arb.first + arb.count; ++k) {
             const Contact& c = contacts[k];
             if (c.jn == 0.0f && c.jt1 == 0.0f && c.jt2 == 0.0f) continue;
-            Apply(A, B, invMass[arb.indexA], invMass[arb.indexB], invInertia[arb.indexA], invInertia[arb.indexB], c.rA,
-                  c.rB, arb.n * c.jn + arb.t1 * c.jt1 + arb.t2 * c.jt2);
+            ApplyPairImpulse(A, B, invMass[arb.indexA], invMass[arb.indexB], invInertia[arb.indexA],
+                             invInertia[arb.indexB], c.rA, c.rB, arb.n * c.jn + arb.t1 * c.jt1 + arb.t2 * c.jt2);
         }
     }
 
@@ -242,7 +228,7 @@ void AccumulatedContactSolver::Solve(const std::vector<RigidbodyVolume*>& volume
                 const float jn = std::fmax(c.jn + c.massN * (c.bias - vn), 0.0f);
                 const float dn = jn - c.jn;
                 c.jn = jn;
-                if (dn != 0.0f) Apply(A, B, invA, invB, iA, iB, c.rA, c.rB, arb.n * dn);
+                if (dn != 0.0f) ApplyPairImpulse(A, B, invA, invB, iA, iB, c.rA, c.rB, arb.n * dn);
 
                 // Friction: stop the tangential motion; the TOTAL stays inside the Coulomb cone mu * jn.
                 const vec3 vr = RelativeVelocity(A, B, c.rA, c.rB);
@@ -252,7 +238,8 @@ void AccumulatedContactSolver::Solve(const std::vector<RigidbodyVolume*>& volume
                 const float d1 = jt1 - c.jt1, d2 = jt2 - c.jt2;
                 c.jt1 = jt1;
                 c.jt2 = jt2;
-                if (d1 != 0.0f || d2 != 0.0f) Apply(A, B, invA, invB, iA, iB, c.rA, c.rB, arb.t1 * d1 + arb.t2 * d2);
+                if (d1 != 0.0f || d2 != 0.0f)
+                    ApplyPairImpulse(A, B, invA, invB, iA, iB, c.rA, c.rB, arb.t1 * d1 + arb.t2 * d2);
             }
         }
     }

@@ -241,18 +241,6 @@ float EffectiveInvMass(float invSum, const mat3& iA, const mat3& iB, const vec3&
     return invSum + Dot(d, termA + termB);
 }
 
-void ApplyPairImpulse(RigidbodyVolume& A, RigidbodyVolume& B, float invA, float invB, const mat3& iA, const mat3& iB,
-                      const vec3& rA, const vec3& rB, const vec3& impulse) {
-    A.velocity -= impulse * invA;
-    B.velocity += impulse * invB;
-    A.angVel -= MultiplyVector(Cross(rA, impulse), iA);
-    B.angVel += MultiplyVector(Cross(rB, impulse), iB);
-}
-
-vec3 RelativeVelocity(const RigidbodyVolume& A, const RigidbodyVolume& B, const vec3& rA, const vec3& rB) {
-    return (B.velocity + Cross(B.angVel, rB)) - (A.velocity + Cross(A.angVel, rA));
-}
-
 }  // namespace
 
 void ApplyImpulse(RigidbodyVolume& A, RigidbodyVolume& B, const CollisionManifold& M, int c) {

@@ -101,3 +101,17 @@ void FindCollisionFeatures(RigidbodyVolume& ra, RigidbodyVolume& rb, CollisionMa
 /// Normal and Coulomb friction impulse for contact c of manifold M (book.md 3.3, errata 5.2-14 fixed).
 /// Velocities change in place; a pair of static bodies or a separating contact is left alone.
 void ApplyImpulse(RigidbodyVolume& A, RigidbodyVolume& B, const CollisionManifold& M, int c);
+
+/// Velocity of B's contact point relative to A's (world, m/s): (vB + wB x rB) - (vA + wA x rA), with rA and rB
+/// the contact point relative to each centre of mass. Shared by the book's solver and the Accumulated one.
+inline vec3 RelativeVelocity(const RigidbodyVolume& A, const RigidbodyVolume& B, const vec3& rA, const vec3& rB) {
+    return (B.velocity + Cross(B.angVel, rB)) - (A.velocity + Cross(A.angVel, rA));
+}
+/// Applies the world impulse P to B and -P to A at rA, rB, given inverse masses and world inverse inertias.
+inline void ApplyPairImpulse(RigidbodyVolume& A, RigidbodyVolume& B, float invA, float invB, const mat3& iA,
+                             const mat3& iB, const vec3& rA, const vec3& rB, const vec3& P) {
+    A.velocity -= P * invA;
+    B.velocity += P * invB;
+    A.angVel -= MultiplyVector(Cross(rA, P), iA);
+    B.angVel += MultiplyVector(Cross(rB, P), iB);
+}
