@@ -89,10 +89,20 @@ float PenetrationDepth(const OBB& o1, const OBB& o2, const vec3& axis, bool* out
     const Interval i1 = GetInterval(o1, n);
     const Interval i2 = GetInterval(o2, n);
     if (!(i2.min <= i1.max && i1.min <= i2.max)) return 0.0f;  // separated on this axis
-    const float len1 = i1.max - i1.min;
-    const float len2 = i2.max - i2.min;
-    const float span = std::max(i1.max, i2.max) - std::min(i1.min, i2.min);
-    if (outShouldFlip != nullptr) *outShouldFlip = i2.min < i1.min;
-    // Book: sum of the lengths minus the combined span = width of the overlap (also when one contains the other).
-    return (len1 + len2) - span;
+    const bool strictlyContained = (i2.min > i1.min && i2.max < i1.max) || (i1.min > i2.min && i1.max < i2.max);
+    if (!strictlyContained) {
+        // Book: sum of the lengths minus the combined span = width of the overlap; flip when B starts first.
+        const float len1 = i1.max - i1.min;
+        const float len2 = i2.max - i2.min;
+        const float span = std::max(i1.max, i2.max) - std::min(i1.min, i2.min);
+        if (outShouldFlip != nullptr) *outShouldFlip = i2.min < i1.min;
+        return (len1 + len2) - span;
+    }
+    // One interval strictly inside the other: the book returns the inner width and a side that can point the
+    // long way out, so a small box sunk into a slab gets a sideways normal and falls through it. Use the
+    // minimum translation instead: the distance B must move along +n or -n to separate, and that side.
+    const float pushPlus = i1.max - i2.min;
+    const float pushMinus = i2.max - i1.min;
+    if (outShouldFlip != nullptr) *outShouldFlip = pushMinus < pushPlus;
+    return std::min(pushPlus, pushMinus);
 }

@@ -235,11 +235,18 @@ TEST(BoxFeaturesPenetrationDepth, HandCases) {
     // Touching (depth exactly 0) and separated.
     EXPECT_EQ(PenetrationDepth(a, OBB(vec3(2, 0, 0), vec3(1, 1, 1)), vec3(1, 0, 0), &flip), 0.0f);
     EXPECT_EQ(PenetrationDepth(a, OBB(vec3(3, 0, 0), vec3(1, 1, 1)), vec3(1, 0, 0), &flip), 0.0f);
-    // Containment: B = [0.5, 1.5] inside A = [-3, 3]: the book's overlap is B's length, 1.
+    // Containment: B = [0.5, 1.5] strictly inside A = [-3, 3]. The book returns B's length 1 (the overlap), which
+    // is not how far B must move to get out; the depth is the minimum translation: 3 - 0.5 = 2.5 along +X
+    // (the other way is 1.5 + 3 = 4.5), so no flip.
     EXPECT_NEAR(PenetrationDepth(OBB(vec3(0, 0, 0), vec3(3, 3, 3)), OBB(vec3(1, 0, 0), vec3(0.5f, 0.5f, 0.5f)),
                                  vec3(1, 0, 0), &flip),
-                1.0f, tol::kExact);
+                2.5f, tol::kExact);
     EXPECT_FALSE(flip);
+    // B = [-2.5, -1.5] inside A: out through -X is shorter, -1.5 + 3 = 1.5 (vs 3 + 2.5 = 5.5): flip.
+    EXPECT_NEAR(PenetrationDepth(OBB(vec3(0, 0, 0), vec3(3, 3, 3)), OBB(vec3(-2, 0, 0), vec3(0.5f, 0.5f, 0.5f)),
+                                 vec3(1, 0, 0), &flip),
+                1.5f, tol::kExact);
+    EXPECT_TRUE(flip);
     // A 45-degree (yaw) box on X: half length sqrt(2); B at x = 2 gives overlap sqrt(2) + 1 - 2.
     const OBB rotated(vec3(0, 0, 0), vec3(1, 1, 1), Rotation3x3(0, 45, 0));
     EXPECT_NEAR(PenetrationDepth(rotated, OBB(vec3(2, 0, 0), vec3(1, 1, 1)), vec3(1, 0, 0), nullptr),
@@ -260,10 +267,13 @@ TEST(BoxFeaturesPenetrationDepth, SymmetricUnderSwapWithOppositeFlip) {
         const float d2 = PenetrationDepth(b, a, axis, &f2);
         EXPECT_NEAR(d1, d2, tol::kTight);
         EXPECT_GE(d1, 0.0f);
-        // Overlap width is at most the shorter projection.
+        // The depth is the minimum translation that separates the projections (for partly overlapping
+        // intervals this is the book's overlap width; for containment the distance out through the nearer side).
         const vec3 n = Normalized(axis);
         const Interval ia = GetInterval(a, n), ib = GetInterval(b, n);
-        EXPECT_LE(d1, std::min(ia.max - ia.min, ib.max - ib.min) + tol::kTight);
+        if (d1 > 0) {
+            EXPECT_NEAR(d1, std::min(ia.max - ib.min, ib.max - ia.min), tol::kTight);
+        }
         if (d1 > 0 && ia.min != ib.min) {
             EXPECT_NE(f1, f2);
         }

@@ -421,17 +421,17 @@ TEST(ManifoldOBBOBB, CoincidentCentresDifferentBoxesAreFinite) {
 
 TEST(ManifoldOBBOBB, SmallBoxInsideABigBoxUsesItsCorners) {
     // No edge of either box crosses a face of the other, so clipping finds nothing; the fallback takes B's
-    // corners inside A. Every face axis overlaps by B's width 1 (a tie; the normal is one of A's face axes),
-    // and the corners are projected onto the middle of B on that axis: 4 contacts, B's mid cross-section.
-    // (The book's plane A.pos + axis*(3 - 0.5) would put them 2 units outside B.)
+    // corners inside A, projected onto the middle of B on the normal: 4 contacts, B's mid cross-section.
+    // (The book's plane A.pos + axis*(3 - 0.5) would put them 2 units outside B.) B leaves A fastest through
+    // A's -Y face: it spans y in [-1.5, -0.5], so 2.5 down, against x 3 (B in [0, 1]) and z 3.25 (B in
+    // [-0.25, 0.75]). The book's depth is B's width 1 on every axis, a tie that can pick a sideways normal.
     const OBB a(vec3(0, 0, 0), vec3(3, 3, 3));
     const OBB b(vec3(0.5f, -1, 0.25f), vec3(0.5f, 0.5f, 0.5f));
     const CollisionManifold m = FindCollisionFeatures(a, b);
     ASSERT_TRUE(m.colliding);
     EXPECT_TRUE(AllFinite(m));
-    EXPECT_NEAR(m.depth, 1.0f, tol::kExact);
-    const float largest = std::max({std::fabs(m.normal.x), std::fabs(m.normal.y), std::fabs(m.normal.z)});
-    EXPECT_NEAR(largest, 1.0f, tol::kExact);
+    EXPECT_NEAR(m.depth, 2.5f, tol::kExact);
+    EXPECT_TRUE(VecNear(m.normal, vec3(0, -1, 0), tol::kExact));
     ASSERT_EQ(m.contacts.size(), 4u);
     for (const vec3& c : m.contacts) {
         EXPECT_LE(OutsideBy(b, c), 1e-5f);
