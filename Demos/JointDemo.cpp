@@ -27,11 +27,7 @@ void JointDemo::Update(float dt) {
 void JointDemo::Render() {
     DemoBase::Render();
     SetLightDirection(kSoftDemoLight);
-    if (scene.Monitor().Stable()) {
-        ::Render(scene.System());
-    } else {
-        RenderConstraintsOnly(scene.System().Constraints());
-    }
+    RenderSystemOrConstraints(scene.System(), scene.Monitor());
 }
 
 void JointDemo::ImGUI() {

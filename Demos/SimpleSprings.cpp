@@ -24,11 +24,7 @@ void SimpleSprings::Update(float dt) {
 void SimpleSprings::Render() {
     DemoBase::Render();
     SetLightDirection(kSoftDemoLight);
-    if (scene.Monitor().Stable()) {
-        ::Render(scene.System());
-    } else {
-        RenderConstraintsOnly(scene.System().Constraints());  // no garbage: the report is on the panel
-    }
+    RenderSystemOrConstraints(scene.System(), scene.Monitor());
 }
 
 void SimpleSprings::ImGUI() {

@@ -39,7 +39,12 @@ void ReportOnce(const StabilityMonitor& monitor, const char* demo, bool* reporte
     *reported = true;
 }
 
-void RenderConstraintsOnly(const std::vector<OBB>& constraints) {
+void RenderSystemOrConstraints(const PhysicsSystem& system, const StabilityMonitor& monitor) {
+    if (monitor.Stable()) {
+        Render(system);
+        return;
+    }
+    const std::vector<OBB>& constraints = system.Constraints();
     for (std::size_t i = 0; i < constraints.size(); ++i) {
         if (i == 0)
             SetLightColors(BookColors::kGroundAmbient, BookColors::kGroundDiffuse);

@@ -7,6 +7,7 @@
 #include "DemoBase.h"
 #include "Geometry3D.h"
 #include "Integrator.h"
+#include "PhysicsSystem.h"
 #include "StabilityMonitor.h"
 
 /// Light of the chapter 16 demos' Render: (0, 1, 0, 0), straight down (book.md 1.5).
@@ -19,5 +20,6 @@ void BeginSoftPanel(const char* title, Integrator integrator, float dt, const St
 void EndSoftPanel(const ParameterSet& params, const StabilityMonitor& monitor);
 /// Prints the monitor's report to stderr the first time it fails (*reported latches).
 void ReportOnce(const StabilityMonitor& monitor, const char* demo, bool* reported);
-/// Constraint 0 blue, the rest green: what is left to draw once a scene has blown up.
-void RenderConstraintsOnly(const std::vector<OBB>& constraints);
+/// Draws the whole system while monitor is stable; once the scene has blown up, only its constraints
+/// (constraint 0 blue, the rest green): no garbage, the report is on the panel.
+void RenderSystemOrConstraints(const PhysicsSystem& system, const StabilityMonitor& monitor);
