@@ -233,8 +233,8 @@ bool Raycast(const Model& model, const Ray& ray, RaycastResult* outResult);
 
 // ---- Picking (Picking.cpp) ----------------------------------------------------------------------------
 /// Screen point (pixels, y down) with depth in [0,1] (0 near) back to world space.
-vec3 Unproject(const vec3& viewportPoint, const vec2& viewportOrigin, const vec2& viewportSize,
-               const mat4& view, const mat4& projection);
+vec3 Unproject(const vec3& viewportPoint, const vec2& viewportOrigin, const vec2& viewportSize, const mat4& view,
+               const mat4& projection);
 /// Ray from the near plane through the far plane under the screen point.
-Ray GetPickRay(const vec2& viewportPoint, const vec2& viewportOrigin, const vec2& viewportSize,
-               const mat4& view, const mat4& projection);
+Ray GetPickRay(const vec2& viewportPoint, const vec2& viewportOrigin, const vec2& viewportSize, const mat4& view,
+               const mat4& projection);

@@ -1,6 +1,6 @@
-#include <gtest/gtest.h>
-
 #include "Random.h"
+
+#include <gtest/gtest.h>
 
 // book.md section 0: MSVC rand() with the default seed 1 yields these first outputs.
 TEST(MsvcRand, FirstOutputsMatchMsvc) {
