@@ -13,27 +13,11 @@
 
 #include "PhysicsSystem.h"
 #include "RigidbodyVolume.h"
+#include "Volumes.h"
 
 namespace {
 
 constexpr float kDt = 1.0f / 60.0f;
-
-RigidbodyVolume Box(const vec3& position, float mass = 1.0f) {
-    RigidbodyVolume b(RigidbodyType::Box);
-    b.position = position;
-    b.mass = mass;
-    b.SynchCollisionVolumes();
-    return b;
-}
-
-RigidbodyVolume Ground() {
-    RigidbodyVolume g(RigidbodyType::Box);
-    g.position = vec3(0, -0.5f, 0);
-    g.box.size = vec3(20, 0.5f, 20);
-    g.mass = 0;
-    g.SynchCollisionVolumes();
-    return g;
-}
 
 /// Ground at [0], then the scene's boxes; `bodies` must not reallocate after the system holds pointers.
 struct Scene {
@@ -83,18 +67,18 @@ struct Scene {
 /// A 2-D pyramid of unit boxes with `base` boxes in the bottom row, 0.01 m gaps between neighbours.
 void BuildPyramid(Scene* s, int base) {
     s->bodies.reserve(base * (base + 1) / 2 + 1);
-    s->bodies.push_back(Ground());
+    s->bodies.push_back(MakeGroundSlab());
     for (int row = 0; row < base; ++row)
         for (int i = 0; i < base - row; ++i)
-            s->bodies.push_back(Box(vec3((i - 0.5f * (base - row - 1)) * 2.01f, 1.0f + 2.0f * row, 0)));
+            s->bodies.push_back(MakeBox(vec3((i - 0.5f * (base - row - 1)) * 2.01f, 1.0f + 2.0f * row, 0)));
     s->Add();
 }
 
 /// A column of `height` unit boxes resting face on face, bottom on the ground.
 void BuildTower(Scene* s, int height) {
     s->bodies.reserve(height + 1);
-    s->bodies.push_back(Ground());
-    for (int k = 0; k < height; ++k) s->bodies.push_back(Box(vec3(0, 1.0f + 2.0f * k, 0)));
+    s->bodies.push_back(MakeGroundSlab());
+    for (int k = 0; k < height; ++k) s->bodies.push_back(MakeBox(vec3(0, 1.0f + 2.0f * k, 0)));
     s->Add();
 }
 
@@ -236,26 +220,13 @@ TEST(ContactSolver, AccumulatedSphereCollisionConservesMomentum) {
 
 namespace {
 
-/// Position, velocity, spin and orientation of every body, as raw bytes.
-std::vector<unsigned char> Snapshot(const std::vector<RigidbodyVolume>& bodies) {
-    std::vector<unsigned char> out;
-    for (const RigidbodyVolume& b : bodies) {
-        const float f[13] = {b.position.x,    b.position.y,    b.position.z,   b.velocity.x, b.velocity.y,
-                             b.velocity.z,    b.angVel.x,      b.angVel.y,     b.angVel.z,   b.orientation.x,
-                             b.orientation.y, b.orientation.z, b.orientation.w};
-        const unsigned char* p = reinterpret_cast<const unsigned char*>(f);
-        out.insert(out.end(), p, p + sizeof f);
-    }
-    return out;
-}
-
 /// A tilted, offset stack dropped with a sphere on top, then 300 steps with the Accumulated solver.
 std::vector<unsigned char> RunDrop() {
     Scene s(ContactSolver::Accumulated, 10);
     s.bodies.reserve(7);
-    s.bodies.push_back(Ground());
+    s.bodies.push_back(MakeGroundSlab());
     for (int i = 0; i < 5; ++i) {
-        s.bodies.push_back(Box(vec3(0.1f * i, 1.0f + 2.2f * i, 0.05f * i)));
+        s.bodies.push_back(MakeBox(vec3(0.1f * i, 1.0f + 2.2f * i, 0.05f * i)));
         s.bodies.back().SetEulerOrientation(vec3(0.1f * i, 0.2f, 0.05f));
     }
     RigidbodyVolume ball(RigidbodyType::Sphere);

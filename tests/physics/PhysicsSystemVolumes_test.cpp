@@ -10,31 +10,12 @@
 #include "Approx.h"
 #include "PhysicsSystem.h"
 #include "RigidbodyVolume.h"
+#include "Volumes.h"
 
 namespace {
 
 constexpr float kDt = 1.0f / 60.0f;
 constexpr float kPi = 3.14159265f;
-
-RigidbodyVolume Box(const vec3& position, const vec3& halfSize, float mass) {
-    RigidbodyVolume b(RigidbodyType::Box);
-    b.position = position;
-    b.box.size = halfSize;
-    b.mass = mass;
-    b.SynchCollisionVolumes();
-    return b;
-}
-
-RigidbodyVolume Ball(const vec3& position, float mass) {
-    RigidbodyVolume s(RigidbodyType::Sphere);
-    s.position = position;
-    s.mass = mass;
-    s.SynchCollisionVolumes();
-    return s;
-}
-
-/// Static slab whose top face is y = 0.
-RigidbodyVolume Ground() { return Box(vec3(0, -0.5f, 0), vec3(20, 0.5f, 20), 0.0f); }
 
 /// World up component of the body's local axis most aligned with +y.
 float BestUpAlignment(const RigidbodyVolume& b) {
@@ -54,8 +35,8 @@ float BestUpAlignment(const RigidbodyVolume& b) {
 // sideways a little: less than 5 cm in 10 s (measured 2 cm).
 TEST(PhysicsSystemVolumes, RestingBoxDoesNotSink) {
     PhysicsSystem system;
-    RigidbodyVolume ground = Ground();
-    RigidbodyVolume box = Box(vec3(0, 1, 0), vec3(1, 1, 1), 1.0f);
+    RigidbodyVolume ground = MakeGroundSlab();
+    RigidbodyVolume box = MakeBox(vec3(0, 1, 0), vec3(1, 1, 1), 1.0f);
     system.AddRigidbody(&ground);
     system.AddRigidbody(&box);
     float lowest = 1.0f, lastSpeed = 0.0f, maxLateSpeed = 0.0f;
@@ -77,8 +58,8 @@ TEST(PhysicsSystemVolumes, RestingBoxDoesNotSink) {
 // within 1 degree, centre at y = 1 within slack + margin, slow.
 TEST(PhysicsSystemVolumes, BoxDroppedOnACornerSettlesOnAFace) {
     PhysicsSystem system;
-    RigidbodyVolume ground = Ground();
-    RigidbodyVolume box = Box(vec3(0, 2.8f, 0), vec3(1, 1, 1), 1.0f);
+    RigidbodyVolume ground = MakeGroundSlab();
+    RigidbodyVolume box = MakeBox(vec3(0, 2.8f, 0), vec3(1, 1, 1), 1.0f);
     box.SetEulerOrientation(vec3(DEG2RAD(45.0f), 0.05f, DEG2RAD(35.26f)));
     ASSERT_LT(BestUpAlignment(box), 0.75f);  // starts far from any face-down pose
     system.AddRigidbody(&ground);
@@ -105,11 +86,11 @@ struct InclineRun {
 InclineRun RunIncline(float degrees, float seconds) {
     const float theta = DEG2RAD(degrees);
     PhysicsSystem system;
-    RigidbodyVolume slab = Box(vec3(0, -0.5f, 0), vec3(40, 0.5f, 5), 0.0f);
+    RigidbodyVolume slab = MakeBox(vec3(0, -0.5f, 0), vec3(40, 0.5f, 5), 0.0f);
     slab.SetEulerOrientation(vec3(0, 0, theta));
     const vec3 up = GetRow(ToMat3(slab.orientation), 1);
     const vec3 down = -GetRow(ToMat3(slab.orientation), 0) * (std::sin(theta) > 0 ? 1.0f : -1.0f);
-    RigidbodyVolume box = Box(slab.position + up * 1.5f, vec3(1, 1, 1), 1.0f);
+    RigidbodyVolume box = MakeBox(slab.position + up * 1.5f, vec3(1, 1, 1), 1.0f);
     box.orientation = slab.orientation;
     box.damping = 1.0f;
     box.SynchCollisionVolumes();
@@ -158,10 +139,10 @@ TEST(PhysicsSystemVolumes, InclineFrictionHoldsBelowTheAngleOfReposeAndSlidesAbo
 // g sin(20) dt = 0.056 m/s and travels well over the 0.1 m bound above (measured 0.23 m in 3 s).
 TEST(PhysicsSystemVolumes, NoteN1_BookStageOrderCreepsDownAnIncline) {
     const float theta = DEG2RAD(20.0f);
-    RigidbodyVolume slab = Box(vec3(0, -0.5f, 0), vec3(40, 0.5f, 5), 0.0f);
+    RigidbodyVolume slab = MakeBox(vec3(0, -0.5f, 0), vec3(40, 0.5f, 5), 0.0f);
     slab.SetEulerOrientation(vec3(0, 0, theta));
     const vec3 up = GetRow(ToMat3(slab.orientation), 1);
-    RigidbodyVolume box = Box(slab.position + up * 1.5f, vec3(1, 1, 1), 1.0f);
+    RigidbodyVolume box = MakeBox(slab.position + up * 1.5f, vec3(1, 1, 1), 1.0f);
     box.orientation = slab.orientation;
     box.damping = 1.0f;
     box.SynchCollisionVolumes();
@@ -189,8 +170,8 @@ TEST(PhysicsSystemVolumes, NoteN1_BookStageOrderCreepsDownAnIncline) {
 // damping off: linear momentum is conserved to 1e-5 relative and the relative speed after is e times before.
 TEST(PhysicsSystemVolumes, SphereCollisionThroughTheSystemConservesMomentum) {
     PhysicsSystem system;
-    RigidbodyVolume a = Ball(vec3(0, 0, 0), 1.0f);
-    RigidbodyVolume b = Ball(vec3(2.05f, 0, 0), 2.0f);
+    RigidbodyVolume a = MakeSphere(vec3(0, 0, 0), 1.0f, 1.0f);
+    RigidbodyVolume b = MakeSphere(vec3(2.05f, 0, 0), 1.0f, 2.0f);
     for (RigidbodyVolume* s : {&a, &b}) {
         s->gravity = vec3();
         s->damping = 1.0f;
@@ -217,9 +198,9 @@ TEST(PhysicsSystemVolumes, SphereCollisionThroughTheSystemConservesMomentum) {
 TEST(PhysicsSystemVolumes, LinearProjectionUsesFullPenetrationForEveryShape) {
     for (RigidbodyType kind : {RigidbodyType::Sphere, RigidbodyType::Box}) {
         PhysicsSystem system;
-        RigidbodyVolume ground = Ground();
-        RigidbodyVolume body =
-            kind == RigidbodyType::Sphere ? Ball(vec3(0, 0.8f, 0), 1.0f) : Box(vec3(0, 0.8f, 0), vec3(1, 1, 1), 1.0f);
+        RigidbodyVolume ground = MakeGroundSlab();
+        RigidbodyVolume body = kind == RigidbodyType::Sphere ? MakeSphere(vec3(0, 0.8f, 0), 1.0f, 1.0f)
+                                                             : MakeBox(vec3(0, 0.8f, 0), vec3(1, 1, 1), 1.0f);
         body.gravity = vec3();
         system.AddRigidbody(&ground);
         system.AddRigidbody(&body);
@@ -235,8 +216,8 @@ TEST(PhysicsSystemVolumes, LinearProjectionUsesFullPenetrationForEveryShape) {
 
 TEST(PhysicsSystemVolumes, StaticPairsAreNeverTested) {
     PhysicsSystem system;
-    RigidbodyVolume a = Box(vec3(), vec3(1, 1, 1), 0.0f);
-    RigidbodyVolume b = Box(vec3(0.5f, 0, 0), vec3(1, 1, 1), 0.0f);
+    RigidbodyVolume a = MakeBox(vec3(), vec3(1, 1, 1), 0.0f);
+    RigidbodyVolume b = MakeBox(vec3(0.5f, 0, 0), vec3(1, 1, 1), 0.0f);
     system.AddRigidbody(&a);
     system.AddRigidbody(&b);
     system.Update(kDt);
@@ -249,27 +230,14 @@ TEST(PhysicsSystemVolumes, StaticPairsAreNeverTested) {
 
 namespace {
 
-/// Raw bytes of every body's state, for bitwise comparison.
-std::vector<unsigned char> Snapshot(const std::vector<RigidbodyVolume>& bodies) {
-    std::vector<unsigned char> out;
-    for (const RigidbodyVolume& b : bodies) {
-        const float f[13] = {b.position.x,    b.position.y,    b.position.z,   b.velocity.x, b.velocity.y,
-                             b.velocity.z,    b.angVel.x,      b.angVel.y,     b.angVel.z,   b.orientation.x,
-                             b.orientation.y, b.orientation.z, b.orientation.w};
-        const unsigned char* p = reinterpret_cast<const unsigned char*>(f);
-        out.insert(out.end(), p, p + sizeof f);
-    }
-    return out;
-}
-
 std::vector<unsigned char> RunStack(int steps, bool guards = true) {
     std::vector<RigidbodyVolume> bodies;
-    bodies.push_back(Ground());
+    bodies.push_back(MakeGroundSlab());
     for (int i = 0; i < 4; ++i) {
-        bodies.push_back(Box(vec3(0.1f * i, 1.0f + 2.2f * i, 0.05f * i), vec3(1, 1, 1), 1.0f));
+        bodies.push_back(MakeBox(vec3(0.1f * i, 1.0f + 2.2f * i, 0.05f * i), vec3(1, 1, 1), 1.0f));
         bodies.back().SetEulerOrientation(vec3(0.1f * i, 0.2f, 0.05f));
     }
-    bodies.push_back(Ball(vec3(0.5f, 12, 0.2f), 1.0f));
+    bodies.push_back(MakeSphere(vec3(0.5f, 12, 0.2f), 1.0f, 1.0f));
     PhysicsSystem system;
     if (!guards) {
         system.MaxVolumeSubsteps = 1;

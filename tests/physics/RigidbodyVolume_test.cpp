@@ -9,26 +9,9 @@
 #include <string>
 
 #include "Approx.h"
+#include "Volumes.h"
 
 namespace {
-
-RigidbodyVolume MakeBox(const vec3& position, const vec3& halfSize, float mass) {
-    RigidbodyVolume b(RigidbodyType::Box);
-    b.position = position;
-    b.box.size = halfSize;
-    b.mass = mass;
-    b.SynchCollisionVolumes();
-    return b;
-}
-
-RigidbodyVolume MakeSphere(const vec3& position, float radius, float mass) {
-    RigidbodyVolume s(RigidbodyType::Sphere);
-    s.position = position;
-    s.sphere.radius = radius;
-    s.mass = mass;
-    s.SynchCollisionVolumes();
-    return s;
-}
 
 CollisionManifold OneContact(const vec3& normal, const vec3& contact, float depth) {
     CollisionManifold m;
