@@ -1,12 +1,12 @@
-#include "CH14Demo.h"
+#include "Demos/CH14Demo.h"
 
 #include <imgui.h>
 
 #include <string>
 #include <vector>
 
-#include "FixedFunctionPhysics.h"
-#include "FixedFunctionPrimitives.h"
+#include "Application/Render/FixedFunctionPhysics.h"
+#include "Application/Render/FixedFunctionPrimitives.h"
 
 namespace {
 const vec3 kLight{0.0f, 1.0f, 0.0f};  // CH14's Render: straight down

@@ -4,8 +4,8 @@
 
 #include <deque>
 
-#include "Ch14Scene.h"
-#include "DemoBase.h"
+#include "Demos/DemoBase.h"
+#include "Demos/Scenes/Ch14Scene.h"
 
 class CH14Demo : public DemoBase {
 public:

@@ -1,10 +1,10 @@
-#include "CH15Demo.h"
+#include "Demos/CH15Demo.h"
 
 #include <glad/gl.h>
 #include <imgui.h>
 
-#include "FixedFunctionPhysics.h"
-#include "FixedFunctionPrimitives.h"
+#include "Application/Render/FixedFunctionPhysics.h"
+#include "Application/Render/FixedFunctionPrimitives.h"
 
 CH15Demo::CH15Demo() { scene.AddParameters(&params); }
 

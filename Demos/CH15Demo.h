@@ -1,8 +1,8 @@
 #pragma once
 // Chapter 15 (book.md 2.5): two boxes stacking on a ground slab, with the solver panel.
 
-#include "Ch15Scene.h"
-#include "DemoBase.h"
+#include "Demos/DemoBase.h"
+#include "Demos/Scenes/Ch15Scene.h"
 
 class CH15Demo : public DemoBase {
 public:

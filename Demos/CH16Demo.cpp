@@ -1,10 +1,10 @@
-#include "CH16Demo.h"
+#include "Demos/CH16Demo.h"
 
 #include <imgui.h>
 
-#include "FixedFunctionPhysics.h"
-#include "FixedFunctionPrimitives.h"
-#include "SoftDemoPanel.h"
+#include "Application/Render/FixedFunctionPhysics.h"
+#include "Application/Render/FixedFunctionPrimitives.h"
+#include "Demos/SoftDemoPanel.h"
 
 CH16Demo::CH16Demo() { scene.AddParameters(&params); }
 

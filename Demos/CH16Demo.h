@@ -2,8 +2,8 @@
 // Chapter 16 (book.md 2.7): a 15 x 15 cloth dropped onto four posts. The scene (Ch16Scene) is GL-free and
 // shared with the tests and bench/cloth_bench.cpp.
 
-#include "Ch16Scene.h"
-#include "DemoBase.h"
+#include "Demos/DemoBase.h"
+#include "Demos/Scenes/Ch16Scene.h"
 
 class CH16Demo : public DemoBase {
 public:

@@ -1,9 +1,9 @@
-#include "CollisionFeature.h"
+#include "Demos/CollisionFeature.h"
 
 #include <glad/gl.h>
 #include <imgui.h>
 
-#include "FixedFunctionPrimitives.h"
+#include "Application/Render/FixedFunctionPrimitives.h"
 
 namespace {
 const vec3 kLightDirection{0.5f, 1.0f, -1.5f};

@@ -2,8 +2,8 @@
 // Collision Features, "SAT Test Demo" (book.md 2.2): the contact manifolds of every pair of two boxes and
 // two spheres. Headless, a scripted motion replaces dragging the shapes with the gizmo.
 
-#include "CollisionFeatureScene.h"
-#include "DemoBase.h"
+#include "Demos/DemoBase.h"
+#include "Demos/Scenes/CollisionFeatureScene.h"
 
 class CollisionFeature : public DemoBase {
 public:

@@ -1,10 +1,10 @@
-#include "ConservationOfMomentum.h"
+#include "Demos/ConservationOfMomentum.h"
 
 #include <glad/gl.h>
 #include <imgui.h>
 
-#include "FixedFunctionPhysics.h"
-#include "FixedFunctionPrimitives.h"
+#include "Application/Render/FixedFunctionPhysics.h"
+#include "Application/Render/FixedFunctionPrimitives.h"
 
 ConservationOfMomentum::ConservationOfMomentum() { scene.AddParameters(&params); }
 

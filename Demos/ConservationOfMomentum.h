@@ -1,8 +1,8 @@
 #pragma once
 // Conservation Of Momentum (book.md 2.4): a sphere sent into a row of four at 20 m/s.
 
-#include "DemoBase.h"
-#include "MomentumScene.h"
+#include "Demos/DemoBase.h"
+#include "Demos/Scenes/MomentumScene.h"
 
 class ConservationOfMomentum : public DemoBase {
 public:

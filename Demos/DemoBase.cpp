@@ -1,4 +1,4 @@
-#include "DemoBase.h"
+#include "Demos/DemoBase.h"
 
 #include <glad/gl.h>
 #include <imgui.h>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "FixedFunctionPrimitives.h"
+#include "Application/Render/FixedFunctionPrimitives.h"
 
 DemoBase::DemoBase() = default;
 

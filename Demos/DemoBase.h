@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "Camera.h"
-#include "Parameters.h"
+#include "Application/View/Camera.h"
+#include "Demos/Scenes/Parameters.h"
 
 /// One row of the --state CSV.
 struct BodyState {

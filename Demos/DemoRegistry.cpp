@@ -1,15 +1,15 @@
-#include "DemoRegistry.h"
+#include "Demos/DemoRegistry.h"
 
-#include "CH14Demo.h"
-#include "CH15Demo.h"
-#include "CH16Demo.h"
-#include "CollisionFeature.h"
-#include "ConservationOfMomentum.h"
-#include "DemoBase.h"
-#include "JointDemo.h"
-#include "LinearImpulse.h"
-#include "RaycastDemo.h"
-#include "SimpleSprings.h"
+#include "Demos/CH14Demo.h"
+#include "Demos/CH15Demo.h"
+#include "Demos/CH16Demo.h"
+#include "Demos/CollisionFeature.h"
+#include "Demos/ConservationOfMomentum.h"
+#include "Demos/DemoBase.h"
+#include "Demos/JointDemo.h"
+#include "Demos/LinearImpulse.h"
+#include "Demos/RaycastDemo.h"
+#include "Demos/SimpleSprings.h"
 // Each demo adds its include and one row below, in the book's list order.
 
 const std::vector<DemoInfo>& AllDemos() {

@@ -1,10 +1,10 @@
-#include "JointDemo.h"
+#include "Demos/JointDemo.h"
 
 #include <imgui.h>
 
-#include "FixedFunctionPhysics.h"
-#include "FixedFunctionPrimitives.h"
-#include "SoftDemoPanel.h"
+#include "Application/Render/FixedFunctionPhysics.h"
+#include "Application/Render/FixedFunctionPrimitives.h"
+#include "Demos/SoftDemoPanel.h"
 
 JointDemo::JointDemo() : scene(JointParams(), &rng) { scene.AddParameters(&params); }
 

@@ -2,9 +2,9 @@
 // Joint Demo (book.md 2.8): CH14's particles in pairs held apart by distance joints. The scene (JointScene)
 // is GL-free and shared with the tests.
 
-#include "DemoBase.h"
-#include "JointScene.h"
-#include "Random.h"
+#include "Demos/DemoBase.h"
+#include "Demos/Scenes/JointScene.h"
+#include "Math/Random.h"
 
 class JointDemo : public DemoBase {
 public:

@@ -1,10 +1,10 @@
-#include "LinearImpulse.h"
+#include "Demos/LinearImpulse.h"
 
 #include <glad/gl.h>
 #include <imgui.h>
 
-#include "FixedFunctionPhysics.h"
-#include "FixedFunctionPrimitives.h"
+#include "Application/Render/FixedFunctionPhysics.h"
+#include "Application/Render/FixedFunctionPrimitives.h"
 
 LinearImpulse::LinearImpulse() { scene.AddParameters(&params); }
 

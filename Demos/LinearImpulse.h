@@ -2,8 +2,8 @@
 // Linear Impulse (book.md 2.3): two spheres or boxes thrown at (or dropped onto) each other, with pause and
 // single-step controls. Headless runs start unpaused (pause=1 gives the book's paused start).
 
-#include "DemoBase.h"
-#include "LinearImpulseScene.h"
+#include "Demos/DemoBase.h"
+#include "Demos/Scenes/LinearImpulseScene.h"
 
 class LinearImpulse : public DemoBase {
 public:

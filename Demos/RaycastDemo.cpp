@@ -1,11 +1,11 @@
-#include "RaycastDemo.h"
+#include "Demos/RaycastDemo.h"
 
 #include <glad/gl.h>
 #include <imgui.h>
 
 #include <cstdio>
 
-#include "FixedFunctionPrimitives.h"
+#include "Application/Render/FixedFunctionPrimitives.h"
 
 #ifndef PSB_DEMO_ASSET_DIR
 #define PSB_DEMO_ASSET_DIR "Demos/assets"

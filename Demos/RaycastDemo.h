@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "DemoBase.h"
-#include "RaycastScene.h"
+#include "Demos/DemoBase.h"
+#include "Demos/Scenes/RaycastScene.h"
 
 class RaycastDemo : public DemoBase {
 public:

@@ -1,10 +1,10 @@
-#include "SimpleSprings.h"
+#include "Demos/SimpleSprings.h"
 
 #include <imgui.h>
 
-#include "FixedFunctionPhysics.h"
-#include "FixedFunctionPrimitives.h"
-#include "SoftDemoPanel.h"
+#include "Application/Render/FixedFunctionPhysics.h"
+#include "Application/Render/FixedFunctionPrimitives.h"
+#include "Demos/SoftDemoPanel.h"
 
 SimpleSprings::SimpleSprings() { scene.AddParameters(&params); }
 

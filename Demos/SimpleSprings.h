@@ -2,8 +2,8 @@
 // Simple Springs (book.md 2.6): a 50 kg and a 1 kg particle joined by one spring fall onto the ground. The
 // scene (SpringsScene) is GL-free and shared with the tests.
 
-#include "DemoBase.h"
-#include "SpringsScene.h"
+#include "Demos/DemoBase.h"
+#include "Demos/Scenes/SpringsScene.h"
 
 class SimpleSprings : public DemoBase {
 public:

@@ -1,11 +1,11 @@
-#include "SoftDemoPanel.h"
+#include "Demos/SoftDemoPanel.h"
 
 #include <imgui.h>
 
 #include <cstdio>
 
-#include "FixedFunctionPhysics.h"
-#include "FixedFunctionPrimitives.h"
+#include "Application/Render/FixedFunctionPhysics.h"
+#include "Application/Render/FixedFunctionPrimitives.h"
 
 namespace {
 constexpr float kBookDt = 0.03f;

@@ -4,11 +4,11 @@
 
 #include <vector>
 
-#include "DemoBase.h"
-#include "Geometry3D.h"
-#include "Integrator.h"
-#include "PhysicsSystem.h"
-#include "StabilityMonitor.h"
+#include "Demos/DemoBase.h"
+#include "Physics/Geometry/Geometry3D.h"
+#include "Physics/Integrator.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/StabilityMonitor.h"
 
 /// Light of the chapter 16 demos' Render: (0, 1, 0, 0), straight down (book.md 1.5).
 constexpr vec3 kSoftDemoLight{0.0f, 1.0f, 0.0f};

@@ -1,8 +1,8 @@
-#include "matrices.h"
+#include "Math/matrices.h"
 
 #include <cmath>
 
-#include "Compare.h"
+#include "Math/Compare.h"
 
 namespace {
 

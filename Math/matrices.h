@@ -4,7 +4,7 @@
 // left-handed, rotation helpers in degrees. Element (row r, column c) is m[r][c] (the book's _rc, 1-based).
 // Default-constructed matrices are identity.
 
-#include "vectors.h"
+#include "Math/vectors.h"
 
 struct mat2 {
     float asArray[4] = {1, 0, 0, 1};

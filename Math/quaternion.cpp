@@ -1,4 +1,4 @@
-#include "quaternion.h"
+#include "Math/quaternion.h"
 
 #include <cmath>
 

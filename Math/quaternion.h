@@ -3,8 +3,8 @@
 // Convention: q = (x, y, z, w), w the scalar part. ToMat3 gives the book-style orientation matrix whose ROWS
 // are the rotated local axes, so MultiplyVector(v, ToMat3(q)) == Rotate(q, v).
 
-#include "matrices.h"
-#include "vectors.h"
+#include "Math/matrices.h"
+#include "Math/vectors.h"
 
 struct quat {
     float x = 0.0f, y = 0.0f, z = 0.0f, w = 1.0f;

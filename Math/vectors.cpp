@@ -1,8 +1,8 @@
-#include "vectors.h"
+#include "Math/vectors.h"
 
 #include <cmath>
 
-#include "Compare.h"
+#include "Math/Compare.h"
 
 namespace {
 constexpr float kPi = 3.14159265358979323846f;

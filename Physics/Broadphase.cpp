@@ -1,9 +1,9 @@
-#include "Broadphase.h"
+#include "Physics/Broadphase.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "RigidbodyVolume.h"
+#include "Physics/RigidbodyVolume.h"
 
 void VolumeBounds(const RigidbodyVolume& body, vec3* outMin, vec3* outMax) {
     vec3 extent;

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "Geometry3D.h"
+#include "Physics/Geometry/Geometry3D.h"
 
 class RigidbodyVolume;
 

@@ -1,4 +1,4 @@
-#include "Cloth.h"
+#include "Physics/Cloth.h"
 
 namespace {
 // Book defaults (book.md 3.7).

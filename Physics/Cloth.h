@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "Particle.h"
-#include "Spring.h"
+#include "Physics/Particle.h"
+#include "Physics/Spring.h"
 
 class Cloth {
 public:

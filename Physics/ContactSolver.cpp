@@ -2,13 +2,13 @@
 // GDC 2005; "Fast and Simple Physics using Sequential Impulses", GDC 2006) written from the published idea:
 // accumulated impulses clamped as totals, warm starting from persistent contacts, effective masses computed
 // once per step. The book's solver is ApplyImpulse in RigidbodyVolume.cpp.
-#include "ContactSolver.h"
+#include "Physics/ContactSolver.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "PhysicsSystem.h"
-#include "RigidbodyVolume.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/RigidbodyVolume.h"
 
 namespace {
 

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "matrices.h"
-#include "vectors.h"
+#include "Math/matrices.h"
+#include "Math/vectors.h"
 
 class RigidbodyVolume;
 struct CollisionPair;

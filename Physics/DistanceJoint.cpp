@@ -1,4 +1,4 @@
-#include "DistanceJoint.h"
+#include "Physics/DistanceJoint.h"
 
 namespace {
 // Below this separation (m) the pair has no axis to correct along (erratum 5.2-6).

@@ -6,8 +6,8 @@
 
 #include <vector>
 
-#include "Particle.h"
-#include "Rigidbody.h"
+#include "Physics/Particle.h"
+#include "Physics/Rigidbody.h"
 
 class DistanceJoint : public Rigidbody {
 public:

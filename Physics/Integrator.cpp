@@ -1,8 +1,8 @@
 // The five particle integrators (docs/ch14.md has the table). Hot loops use component arithmetic: the Math
 // library's vec3 operators are out-of-line calls.
-#include "Integrator.h"
+#include "Physics/Integrator.h"
 
-#include "Particle.h"
+#include "Physics/Particle.h"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <string>
 
-#include "vectors.h"
+#include "Math/vectors.h"
 
 class Particle;
 

@@ -1,6 +1,6 @@
 // Particle state, the book's single-particle step, and constraint solving against immovable OBBs
 // (book.md 3.2), with the book's failure modes fixed: see docs/ERRATA.md, Chapter 14.
-#include "Particle.h"
+#include "Physics/Particle.h"
 
 #include <cfloat>
 #include <cmath>

@@ -5,9 +5,9 @@
 #include <cstddef>
 #include <vector>
 
-#include "Geometry3D.h"
-#include "Integrator.h"
-#include "Rigidbody.h"
+#include "Physics/Geometry/Geometry3D.h"
+#include "Physics/Integrator.h"
+#include "Physics/Rigidbody.h"
 
 /// An OBB constraint prepared once per step for particle tests: its world AABB (a cheap reject) and the box.
 struct ParticleConstraint {

@@ -1,13 +1,13 @@
-#include "PhysicsSystem.h"
+#include "Physics/PhysicsSystem.h"
 
 #include <cmath>
 #include <cstdio>
 
-#include "Cloth.h"
-#include "DistanceJoint.h"
-#include "Particle.h"
-#include "RigidbodyVolume.h"
-#include "Spring.h"
+#include "Physics/Cloth.h"
+#include "Physics/DistanceJoint.h"
+#include "Physics/Particle.h"
+#include "Physics/RigidbodyVolume.h"
+#include "Physics/Spring.h"
 
 PhysicsSystem::PhysicsSystem() = default;
 PhysicsSystem::~PhysicsSystem() = default;

@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "Broadphase.h"
-#include "ContactSolver.h"
-#include "Geometry3D.h"
-#include "Integrator.h"
-#include "Rigidbody.h"
+#include "Physics/Broadphase.h"
+#include "Physics/ContactSolver.h"
+#include "Physics/Geometry/Geometry3D.h"
+#include "Physics/Integrator.h"
+#include "Physics/Rigidbody.h"
 
 class Particle;
 struct ParticleConstraint;

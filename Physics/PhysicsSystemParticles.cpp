@@ -1,9 +1,9 @@
 // Chapter 14 stages of PhysicsSystem: particle forces, integration (Integrator.cpp) and constraint solving.
 // A particle-only step touches each particle a fixed number of times and allocates nothing once the scratch
 // arrays have grown to the particle and constraint counts.
-#include "Cloth.h"
-#include "Particle.h"
-#include "PhysicsSystem.h"
+#include "Physics/Cloth.h"
+#include "Physics/Particle.h"
+#include "Physics/PhysicsSystem.h"
 
 void PhysicsSystem::AccumulateParticleForces() {
     // Gravity * mass (erratum 5.1-6), then springs (ch16) add to it.

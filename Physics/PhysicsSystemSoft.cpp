@@ -1,8 +1,8 @@
 // Chapter 16 stages of PhysicsSystem: spring and cloth forces, distance joints.
-#include "Cloth.h"
-#include "DistanceJoint.h"
-#include "PhysicsSystem.h"
-#include "Spring.h"
+#include "Physics/Cloth.h"
+#include "Physics/DistanceJoint.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/Spring.h"
 
 void PhysicsSystem::AccumulateSpringForces() {
     // Book order (book.md 3.4 step 6): system springs, then each cloth's structural, shear, bend springs.

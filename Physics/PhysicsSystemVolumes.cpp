@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <limits>
 
-#include "PhysicsSystem.h"
-#include "RigidbodyVolume.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/RigidbodyVolume.h"
 
 namespace {
 

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "Geometry3D.h"
+#include "Physics/Geometry/Geometry3D.h"
 
 enum class RigidbodyType { Base = 0, Particle = 1, Sphere = 2, Box = 3 };
 

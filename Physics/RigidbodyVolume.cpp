@@ -1,4 +1,4 @@
-#include "RigidbodyVolume.h"
+#include "Physics/RigidbodyVolume.h"
 
 #include <cmath>
 #include <cstdio>

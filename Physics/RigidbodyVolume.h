@@ -5,9 +5,9 @@
 
 #include <string>
 
-#include "Geometry3D.h"
-#include "Rigidbody.h"
-#include "quaternion.h"
+#include "Math/quaternion.h"
+#include "Physics/Geometry/Geometry3D.h"
+#include "Physics/Rigidbody.h"
 
 /// The book's GRAVITY_CONST, m/s^2.
 constexpr vec3 kVolumeGravity{0.0f, -9.82f, 0.0f};

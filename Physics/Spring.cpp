@@ -1,8 +1,8 @@
-#include "Spring.h"
+#include "Physics/Spring.h"
 
 #include <cmath>
 
-#include "Particle.h"
+#include "Physics/Particle.h"
 
 namespace {
 // Below this separation (m) the spring axis is undefined (erratum 5.2-6).

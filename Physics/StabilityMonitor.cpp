@@ -1,12 +1,12 @@
-#include "StabilityMonitor.h"
+#include "Physics/StabilityMonitor.h"
 
 #include <cmath>
 #include <sstream>
 
-#include "Cloth.h"
-#include "Particle.h"
-#include "PhysicsSystem.h"
-#include "Spring.h"
+#include "Physics/Cloth.h"
+#include "Physics/Particle.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/Spring.h"
 
 namespace {
 

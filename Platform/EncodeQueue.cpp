@@ -1,4 +1,4 @@
-#include "EncodeQueue.h"
+#include "Platform/EncodeQueue.h"
 
 #include <chrono>
 

@@ -1,10 +1,10 @@
-#include "HeadlessContext.h"
+#include "Platform/HeadlessContext.h"
 
 #include <glad/gl.h>
 
 #include <cstdlib>
 
-#include "OSMesaContext.h"
+#include "Platform/OSMesaContext.h"
 
 void PinSoftwareRasterizer() {
     // llvmpipe, not softpipe: the goldens were made with it.

@@ -1,4 +1,4 @@
-#include "ImageCompare.h"
+#include "Platform/ImageCompare.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "Image.h"
+#include "Platform/Image.h"
 
 struct CompareThresholds {
     /// A pixel differs when any channel differs by more than this (0..255).

@@ -1,4 +1,4 @@
-#include "OSMesaContext.h"
+#include "Platform/OSMesaContext.h"
 
 #include <GL/osmesa.h>
 

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "HeadlessContext.h"
+#include "Platform/HeadlessContext.h"
 
 /// An OSMesa context with its own RGBA colour buffer (rows bottom-up, as glReadPixels returns them).
 /// Returns nullptr and sets *error if OSMesa refuses the requested format or size.

@@ -1,4 +1,4 @@
-#include "PngCodec.h"
+#include "Platform/PngCodec.h"
 
 #include <png.h>
 #include <unistd.h>

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "Image.h"
+#include "Platform/Image.h"
 
 /// Row filter: one fixed filter for every row, or libpng's per-row adaptive choice (much slower).
 enum class PngFilter { None, Sub, Up, Adaptive };

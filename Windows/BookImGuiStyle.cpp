@@ -1,4 +1,4 @@
-#include "BookImGuiStyle.h"
+#include "Windows/BookImGuiStyle.h"
 
 #include <imgui.h>
 

@@ -1,4 +1,4 @@
-#include "DemoWindow.h"
+#include "Windows/DemoWindow.h"
 
 #include <glad/gl.h>
 #include <imgui.h>
@@ -6,8 +6,8 @@
 #include <cmath>
 #include <vector>
 
-#include "DemoBase.h"
-#include "DemoRegistry.h"
+#include "Demos/DemoBase.h"
+#include "Demos/DemoRegistry.h"
 
 namespace {
 /// The three chapter buttons of the default mode (book.md 1.7).

@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "GLWindow.h"
+#include "Windows/GLWindow.h"
 
 class DemoBase;
 

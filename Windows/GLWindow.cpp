@@ -1,4 +1,4 @@
-#include "GLWindow.h"
+#include "Windows/GLWindow.h"
 
 #include <glad/gl.h>
 

@@ -4,8 +4,8 @@
 
 #include <array>
 
-#include "IWindow.h"
-#include "vectors.h"
+#include "Math/vectors.h"
+#include "Windows/IWindow.h"
 
 class GLWindow : public IWindow {
 public:

@@ -1,4 +1,4 @@
-#include "IWindow.h"
+#include "Windows/IWindow.h"
 
 #include <algorithm>
 #include <utility>

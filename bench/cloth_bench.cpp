@@ -10,7 +10,7 @@
 #include <cstring>
 #include <vector>
 
-#include "Ch16Scene.h"
+#include "Demos/Scenes/Ch16Scene.h"
 
 namespace {
 

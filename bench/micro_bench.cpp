@@ -5,13 +5,13 @@
 
 #include <vector>
 
-#include "Geometry3D.h"
-#include "Integrator.h"
-#include "Particle.h"
-#include "RigidbodyVolume.h"
-#include "Spring.h"
-#include "Tessellation.h"
-#include "matrices.h"
+#include "Application/View/Tessellation.h"
+#include "Math/matrices.h"
+#include "Physics/Geometry/Geometry3D.h"
+#include "Physics/Integrator.h"
+#include "Physics/Particle.h"
+#include "Physics/RigidbodyVolume.h"
+#include "Physics/Spring.h"
 
 namespace {
 

@@ -5,11 +5,11 @@
 // part does real work (the forced broadphase), which shows what that part costs.
 #include <benchmark/benchmark.h>
 
-#include "Ch14Scene.h"
-#include "Ch15Scene.h"
-#include "Ch16Scene.h"
-#include "Cloth.h"
-#include "RigidbodyVolume.h"
+#include "Demos/Scenes/Ch14Scene.h"
+#include "Demos/Scenes/Ch15Scene.h"
+#include "Demos/Scenes/Ch16Scene.h"
+#include "Physics/Cloth.h"
+#include "Physics/RigidbodyVolume.h"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "Ch14Scene.h"
+#include "Demos/Scenes/Ch14Scene.h"
 
 namespace {
 

@@ -18,10 +18,10 @@
 #include <string>
 #include <vector>
 
-#include "DemoRegistry.h"
-#include "HeadlessContext.h"
-#include "PngCodec.h"
-#include "Runner.h"
+#include "Application/Runner.h"
+#include "Demos/DemoRegistry.h"
+#include "Platform/HeadlessContext.h"
+#include "Platform/PngCodec.h"
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STB_IMAGE_WRITE_STATIC

@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
-#include "ContactSolver.h"
-#include "PhysicsSystem.h"
-#include "RigidbodyVolume.h"
+#include "Physics/ContactSolver.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/RigidbodyVolume.h"
 
 namespace {
 

@@ -3,7 +3,6 @@ add_executable(psb-sweep ${CMAKE_CURRENT_LIST_DIR}/sweep/SweepMain.cpp ${CMAKE_C
                          ${CMAKE_CURRENT_LIST_DIR}/sweep/ProblemsParticle.cpp
                          ${CMAKE_CURRENT_LIST_DIR}/sweep/ProblemsRigid.cpp
                          ${CMAKE_CURRENT_LIST_DIR}/sweep/ProblemsCloth.cpp)
-target_include_directories(psb-sweep PRIVATE ${CMAKE_CURRENT_LIST_DIR}/sweep)
 target_link_libraries(psb-sweep PRIVATE psb_scenes psb_physics psb_options)
 
 # CI runs the small grid and checks what its numbers must show (tests/bench/sweep_quick_test.sh).

@@ -1,8 +1,8 @@
-#include "Ch14Scene.h"
+#include "Demos/Scenes/Ch14Scene.h"
 
 #include <cmath>
 
-#include "Random.h"
+#include "Math/Random.h"
 
 Ch14Scene::Ch14Scene(const Ch14Params& p) { Reset(p); }
 

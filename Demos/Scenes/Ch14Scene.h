@@ -7,9 +7,9 @@
 #include <memory>
 #include <vector>
 
-#include "Integrator.h"
-#include "Particle.h"
-#include "PhysicsSystem.h"
+#include "Physics/Integrator.h"
+#include "Physics/Particle.h"
+#include "Physics/PhysicsSystem.h"
 
 /// The demo's panel and model values (--set particles=, integrator=, dt=, seed=).
 struct Ch14Params {

@@ -1,4 +1,4 @@
-#include "Ch15Scene.h"
+#include "Demos/Scenes/Ch15Scene.h"
 
 Ch15Scene::Ch15Scene(const Ch15Params& p) : params(p) { Reset(); }
 

@@ -5,9 +5,9 @@
 #include <memory>
 #include <vector>
 
-#include "Parameters.h"
-#include "PhysicsSystem.h"
-#include "RigidbodyVolume.h"
+#include "Demos/Scenes/Parameters.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/RigidbodyVolume.h"
 
 /// The "Chapter 15 Demo" panel values (book defaults: 0.45 / 0.01 / 8, projection on, debug off).
 struct Ch15Params {

@@ -1,6 +1,6 @@
-#include "Ch16Scene.h"
+#include "Demos/Scenes/Ch16Scene.h"
 
-#include "Spring.h"
+#include "Physics/Spring.h"
 
 Ch16Scene::Ch16Scene(const Ch16Params& p) { Reset(p); }
 

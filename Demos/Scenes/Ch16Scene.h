@@ -5,12 +5,12 @@
 #include <array>
 #include <memory>
 
-#include "Cloth.h"
-#include "Integrator.h"
-#include "Parameters.h"
-#include "PhysicsSystem.h"
-#include "SoftSceneCommon.h"
-#include "StabilityMonitor.h"
+#include "Demos/Scenes/Parameters.h"
+#include "Demos/Scenes/SoftSceneCommon.h"
+#include "Physics/Cloth.h"
+#include "Physics/Integrator.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/StabilityMonitor.h"
 
 /// The demo's panel values. k and damping are the BOOK's numbers (velocity change per 0.03 s step); the
 /// scene converts them with FromBookSpringConstant so the cloth looks as in the book (docs/ERRATA.md, Chapter 16).

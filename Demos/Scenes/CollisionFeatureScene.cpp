@@ -1,4 +1,4 @@
-#include "CollisionFeatureScene.h"
+#include "Demos/Scenes/CollisionFeatureScene.h"
 
 #include <cmath>
 

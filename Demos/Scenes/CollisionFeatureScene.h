@@ -5,7 +5,7 @@
 
 #include <array>
 
-#include "Geometry3D.h"
+#include "Physics/Geometry/Geometry3D.h"
 
 /// --set keys of the demo: script=0|1, speed, gizmo, space.
 struct CollisionFeatureParams {

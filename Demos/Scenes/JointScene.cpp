@@ -1,4 +1,4 @@
-#include "JointScene.h"
+#include "Demos/Scenes/JointScene.h"
 
 JointScene::JointScene(const JointParams& p, MsvcRand* r) : rng(r != nullptr ? r : &ownRng) { Reset(p); }
 

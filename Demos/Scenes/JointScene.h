@@ -5,14 +5,14 @@
 #include <memory>
 #include <vector>
 
-#include "DistanceJoint.h"
-#include "Integrator.h"
-#include "Parameters.h"
-#include "Particle.h"
-#include "PhysicsSystem.h"
-#include "Random.h"
-#include "SoftSceneCommon.h"
-#include "StabilityMonitor.h"
+#include "Demos/Scenes/Parameters.h"
+#include "Demos/Scenes/SoftSceneCommon.h"
+#include "Math/Random.h"
+#include "Physics/DistanceJoint.h"
+#include "Physics/Integrator.h"
+#include "Physics/Particle.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/StabilityMonitor.h"
 
 struct JointParams {
     int numParticles = 50;  ///< 2..100 on the panel; takes effect on Reset

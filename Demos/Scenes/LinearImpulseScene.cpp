@@ -1,4 +1,4 @@
-#include "LinearImpulseScene.h"
+#include "Demos/Scenes/LinearImpulseScene.h"
 
 LinearImpulseScene::LinearImpulseScene(const LinearImpulseParams& p) : params(p) { Reset(); }
 

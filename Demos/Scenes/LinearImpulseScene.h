@@ -6,9 +6,9 @@
 #include <memory>
 #include <vector>
 
-#include "Parameters.h"
-#include "PhysicsSystem.h"
-#include "RigidbodyVolume.h"
+#include "Demos/Scenes/Parameters.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/RigidbodyVolume.h"
 
 /// The "Linear Impulse Demo" panel values. The book starts paused; headless runs start unpaused (pause=1
 /// restores the book's start).

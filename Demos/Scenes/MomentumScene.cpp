@@ -1,4 +1,4 @@
-#include "MomentumScene.h"
+#include "Demos/Scenes/MomentumScene.h"
 
 MomentumScene::MomentumScene(const MomentumParams& p) : params(p) { Reset(); }
 

@@ -5,9 +5,9 @@
 #include <memory>
 #include <vector>
 
-#include "Parameters.h"
-#include "PhysicsSystem.h"
-#include "RigidbodyVolume.h"
+#include "Demos/Scenes/Parameters.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/RigidbodyVolume.h"
 
 /// The demo has only a Reset button. damping and gravity are not panel values: tests use them to isolate
 /// the impulses from the book's per-step damping (0.98) and from ground contact.

@@ -1,4 +1,4 @@
-#include "Parameters.h"
+#include "Demos/Scenes/Parameters.h"
 
 #include <cerrno>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "RaycastScene.h"
+#include "Demos/Scenes/RaycastScene.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <system_error>
 #include <vector>
 
-#include "ObjLoader.h"
+#include "Physics/Geometry/ObjLoader.h"
 
 RaycastScene::RaycastScene()
     : obb({-4.0f, -2.0f, 0.0f}, {1.0f, 1.0f, 1.0f}, Rotation3x3(30.0f, 20.0f, 0.0f)),

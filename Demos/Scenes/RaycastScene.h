@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "Geometry3D.h"
+#include "Physics/Geometry/Geometry3D.h"
 
 /// --set keys of the demo: script=0|1, speed.
 struct RaycastParams {

@@ -1,4 +1,4 @@
-#include "SoftSceneCommon.h"
+#include "Demos/Scenes/SoftSceneCommon.h"
 
 #include <sstream>
 

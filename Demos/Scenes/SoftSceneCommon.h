@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "Integrator.h"
-#include "Parameters.h"
-#include "Particle.h"
-#include "StabilityMonitor.h"
+#include "Demos/Scenes/Parameters.h"
+#include "Physics/Integrator.h"
+#include "Physics/Particle.h"
+#include "Physics/StabilityMonitor.h"
 
 /// Integrator ids in IntegratorIds() order ("explicit-euler", "euler", ...): the "integrator" choice list.
 std::vector<std::string> IntegratorChoices();

@@ -1,4 +1,4 @@
-#include "SpringsScene.h"
+#include "Demos/Scenes/SpringsScene.h"
 
 SpringsScene::SpringsScene(const SpringsParams& p) { Reset(p); }
 

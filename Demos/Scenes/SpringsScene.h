@@ -5,13 +5,13 @@
 #include <memory>
 #include <vector>
 
-#include "Integrator.h"
-#include "Parameters.h"
-#include "Particle.h"
-#include "PhysicsSystem.h"
-#include "SoftSceneCommon.h"
-#include "Spring.h"
-#include "StabilityMonitor.h"
+#include "Demos/Scenes/Parameters.h"
+#include "Demos/Scenes/SoftSceneCommon.h"
+#include "Physics/Integrator.h"
+#include "Physics/Particle.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/Spring.h"
+#include "Physics/StabilityMonitor.h"
 
 /// The demo's panel values. k and b are the BOOK's numbers (velocity change per 0.03 s step); the scene
 /// converts them with FromBookSpringConstant so the motion matches the book at any dt (docs/ERRATA.md, Chapter 16).

@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "Ch16Scene.h"
-#include "Sweep.h"
+#include "Demos/Scenes/Ch16Scene.h"
+#include "bench/sweep/Sweep.h"
 
 namespace sweep {
 namespace {

@@ -7,12 +7,12 @@
 #include <memory>
 #include <vector>
 
-#include "DistanceJoint.h"
-#include "Particle.h"
-#include "PhysicsSystem.h"
-#include "Spring.h"
-#include "StabilityMonitor.h"
-#include "Sweep.h"
+#include "Physics/DistanceJoint.h"
+#include "Physics/Particle.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/Spring.h"
+#include "Physics/StabilityMonitor.h"
+#include "bench/sweep/Sweep.h"
 
 namespace sweep {
 namespace {

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "ContactSolver.h"
-#include "PhysicsSystem.h"
-#include "RigidbodyVolume.h"
-#include "Sweep.h"
+#include "Physics/ContactSolver.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/RigidbodyVolume.h"
+#include "bench/sweep/Sweep.h"
 
 namespace sweep {
 namespace {

@@ -1,5 +1,5 @@
 // Problem registry and the shared references of psb-sweep.
-#include "Sweep.h"
+#include "bench/sweep/Sweep.h"
 
 #include <time.h>
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "Integrator.h"
+#include "Physics/Integrator.h"
 
 namespace sweep {
 

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "ContactSolver.h"
-#include "Sweep.h"
+#include "Physics/ContactSolver.h"
+#include "bench/sweep/Sweep.h"
 
 namespace {
 

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "PngCodec.h"
-#include "SandboxRun.h"
+#include "Platform/PngCodec.h"
+#include "tests/app/SandboxRun.h"
 
 namespace fs = std::filesystem;
 

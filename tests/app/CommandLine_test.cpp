@@ -1,4 +1,4 @@
-#include "CommandLine.h"
+#include "Application/CommandLine.h"
 
 #include <gtest/gtest.h>
 

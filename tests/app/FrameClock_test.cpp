@@ -1,4 +1,4 @@
-#include "FrameClock.h"
+#include "Application/FrameClock.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "ImageCompare.h"
+#include "Platform/ImageCompare.h"
 
 #include <gtest/gtest.h>
 

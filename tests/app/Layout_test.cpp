@@ -6,8 +6,8 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "PngCodec.h"
-#include "SandboxRun.h"
+#include "Platform/PngCodec.h"
+#include "tests/app/SandboxRun.h"
 
 namespace fs = std::filesystem;
 

@@ -1,4 +1,4 @@
-#include "PngCodec.h"
+#include "Platform/PngCodec.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "SandboxRun.h"
+#include "tests/app/SandboxRun.h"
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>

@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "Approx.h"
-#include "Geometry3D.h"
-#include "Random.h"
+#include "Math/Random.h"
+#include "Physics/Geometry/Geometry3D.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

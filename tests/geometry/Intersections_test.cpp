@@ -1,11 +1,11 @@
-// Shape-pair intersection tests (Application/Intersections.cpp).
+// Shape-pair intersection tests (Physics/Geometry/Intersections.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "Approx.h"
-#include "Geometry3D.h"
+#include "Physics/Geometry/Geometry3D.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

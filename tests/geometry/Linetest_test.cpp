@@ -4,8 +4,8 @@
 #include <cmath>
 #include <random>
 
-#include "Approx.h"
-#include "Geometry3D.h"
+#include "Physics/Geometry/Geometry3D.h"
+#include "tests/support/Approx.h"
 
 TEST(LinetestOBB, HandComputedSegments) {
     OBB box(vec3(0, 0, 0), vec3(1, 1, 1), Rotation3x3(30, 20, 0));

@@ -6,9 +6,9 @@
 #include <random>
 #include <string>
 
-#include "Approx.h"
-#include "Geometry3D.h"
-#include "ObjLoader.h"
+#include "Physics/Geometry/Geometry3D.h"
+#include "Physics/Geometry/ObjLoader.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

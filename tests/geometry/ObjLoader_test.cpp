@@ -1,11 +1,11 @@
 // ObjLoader.cpp: fixtures in tests/geometry/data (hand-written OBJ files, including malformed ones).
-#include "ObjLoader.h"
+#include "Physics/Geometry/ObjLoader.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "Approx.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <random>
 
-#include "Approx.h"
-#include "Camera.h"
-#include "Geometry3D.h"
+#include "Application/View/Camera.h"
+#include "Physics/Geometry/Geometry3D.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

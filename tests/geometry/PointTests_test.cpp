@@ -1,11 +1,11 @@
-// Point containment and closest-point queries (Application/PointTests.cpp).
+// Point containment and closest-point queries (Physics/Geometry/PointTests.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "Approx.h"
-#include "Geometry3D.h"
+#include "Physics/Geometry/Geometry3D.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <random>
 
-#include "Approx.h"
-#include "Geometry3D.h"
+#include "Physics/Geometry/Geometry3D.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

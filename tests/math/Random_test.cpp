@@ -1,4 +1,4 @@
-#include "Random.h"
+#include "Math/Random.h"
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,12 @@
 // mat2 / mat3 / mat4 (Math/matrices.cpp): row-major, row vectors on the left, left-handed, degrees.
-#include "matrices.h"
+#include "Math/matrices.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "Approx.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

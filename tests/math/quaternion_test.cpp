@@ -1,12 +1,12 @@
 // Unit quaternions (Math/quaternion.cpp) against the book-convention rotation matrices.
-#include "quaternion.h"
+#include "Math/quaternion.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "Approx.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

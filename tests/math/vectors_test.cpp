@@ -1,11 +1,11 @@
 // vec2 / vec3 operations (Math/vectors.cpp). Expected values are worked out by hand in the comments.
-#include "vectors.h"
+#include "Math/vectors.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "Approx.h"
+#include "tests/support/Approx.h"
 
 namespace {
 constexpr float kPi = 3.14159265358979f;

@@ -1,5 +1,5 @@
 // Sweep-and-prune: same pairs as a brute-force AABB test, and the same simulation as the all-pairs loop.
-#include "Broadphase.h"
+#include "Physics/Broadphase.h"
 
 #include <gtest/gtest.h>
 
@@ -7,9 +7,9 @@
 #include <utility>
 #include <vector>
 
-#include "PhysicsSystem.h"
-#include "Random.h"
-#include "RigidbodyVolume.h"
+#include "Math/Random.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/RigidbodyVolume.h"
 
 namespace {
 

@@ -1,6 +1,6 @@
 // Cloth::Initialize (book.md 3.7): grid layout, spring counts and rest lengths, particle settings,
 // errata 5.2-21 (late size clamp, scaled offset).
-#include "Cloth.h"
+#include "Physics/Cloth.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <set>
 #include <utility>
 
-#include "Approx.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

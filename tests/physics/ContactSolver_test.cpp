@@ -2,7 +2,7 @@
 // Settings unless a test says otherwise: dt 1/60 s, ImpulseIteration 10, the book's damping (0.98 per step) and
 // velocity threshold, cor 0.5, friction 0.6, slack 0.01, linear projection on (0.45), unit boxes (half-size 1,
 // mass 1) on a static slab whose top face is y = 0.
-#include "ContactSolver.h"
+#include "Physics/ContactSolver.h"
 
 #include <gtest/gtest.h>
 
@@ -11,9 +11,9 @@
 #include <cstring>
 #include <vector>
 
-#include "PhysicsSystem.h"
-#include "RigidbodyVolume.h"
-#include "Volumes.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/RigidbodyVolume.h"
+#include "tests/support/Volumes.h"
 
 namespace {
 

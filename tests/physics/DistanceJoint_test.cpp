@@ -1,7 +1,7 @@
 // DistanceJoint (book.md 3.8): one projection of both ends onto the rest length, weighted by inverse mass, removal
 // of the relative velocity along the joint, then both particles re-solve their constraints; erratum 5.2-6
 // (coincident particles); a pendulum against 2 pi sqrt(L/g) and the elliptic-integral period.
-#include "DistanceJoint.h"
+#include "Physics/DistanceJoint.h"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <cstdio>
 #include <vector>
 
-#include "Approx.h"
-#include "PhysicsSystem.h"
+#include "Physics/PhysicsSystem.h"
+#include "tests/support/Approx.h"
 
 namespace {
 const std::vector<OBB> kNoConstraints;

@@ -10,15 +10,15 @@
 #include <string>
 #include <vector>
 
-#include "Ch14Scene.h"
-#include "Ch15Scene.h"
-#include "LinearImpulseScene.h"
-#include "MomentumScene.h"
-#include "Particle.h"
-#include "PhysicsSystem.h"
-#include "RigidbodyVolume.h"
-#include "Spring.h"
-#include "StabilityMonitor.h"
+#include "Demos/Scenes/Ch14Scene.h"
+#include "Demos/Scenes/Ch15Scene.h"
+#include "Demos/Scenes/LinearImpulseScene.h"
+#include "Demos/Scenes/MomentumScene.h"
+#include "Physics/Particle.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/RigidbodyVolume.h"
+#include "Physics/Spring.h"
+#include "Physics/StabilityMonitor.h"
 
 namespace {
 

@@ -1,15 +1,15 @@
 // Integrators against closed forms: the projectile (constant gravity) and the harmonic oscillator (a
 // position-dependent force, through the same IntegrateParticleStates that PhysicsSystem uses).
-#include "Integrator.h"
+#include "Physics/Integrator.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "Approx.h"
-#include "Particle.h"
-#include "PhysicsSystem.h"
+#include "Physics/Particle.h"
+#include "Physics/PhysicsSystem.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

@@ -1,12 +1,12 @@
 // Particle state, the book's single-particle step and constraint solving (hand-computed cases).
-#include "Particle.h"
+#include "Physics/Particle.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "Approx.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

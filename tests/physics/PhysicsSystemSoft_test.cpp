@@ -5,12 +5,12 @@
 #include <cmath>
 #include <vector>
 
-#include "Approx.h"
-#include "Cloth.h"
-#include "DistanceJoint.h"
-#include "Particle.h"
-#include "PhysicsSystem.h"
-#include "Spring.h"
+#include "Physics/Cloth.h"
+#include "Physics/DistanceJoint.h"
+#include "Physics/Particle.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/Spring.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

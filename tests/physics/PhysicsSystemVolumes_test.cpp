@@ -7,10 +7,10 @@
 #include <cstring>
 #include <vector>
 
-#include "Approx.h"
-#include "PhysicsSystem.h"
-#include "RigidbodyVolume.h"
-#include "Volumes.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/RigidbodyVolume.h"
+#include "tests/support/Approx.h"
+#include "tests/support/Volumes.h"
 
 namespace {
 

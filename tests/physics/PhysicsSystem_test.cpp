@@ -1,6 +1,6 @@
 // PhysicsSystem's particle stages (PhysicsSystemParticles.cpp): forces -> integrate -> constraints, with every
 // integrator: no tunnelling at any speed, bounce apex heights, resting on the CH14 boards, determinism.
-#include "PhysicsSystem.h"
+#include "Physics/PhysicsSystem.h"
 
 #include <gtest/gtest.h>
 
@@ -8,9 +8,9 @@
 #include <cstring>
 #include <vector>
 
-#include "Approx.h"
-#include "Ch14Scene.h"
-#include "Particle.h"
+#include "Demos/Scenes/Ch14Scene.h"
+#include "Physics/Particle.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

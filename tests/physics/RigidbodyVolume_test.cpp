@@ -1,6 +1,6 @@
 // RigidbodyVolume: inertia, integration and ApplyImpulse with hand-made manifolds (independent of the
 // geometry layer's manifold code).
-#include "RigidbodyVolume.h"
+#include "Physics/RigidbodyVolume.h"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <string>
 
-#include "Approx.h"
-#include "Volumes.h"
+#include "tests/support/Approx.h"
+#include "tests/support/Volumes.h"
 
 namespace {
 

@@ -1,13 +1,13 @@
 // Spring (book.md 3.6): Hooke force with the book's sign, damping along the axis (erratum 5.2-20), guard
 // for coincident particles (erratum 5.2-6). Hand-computed cases; dynamics are in PhysicsSystemSoft_test.
-#include "Spring.h"
+#include "Physics/Spring.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "Approx.h"
-#include "Particle.h"
+#include "Physics/Particle.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

@@ -1,16 +1,16 @@
 // StabilityMonitor: energy bookkeeping by hand, and blow-ups detected with the step and the body named.
-#include "StabilityMonitor.h"
+#include "Physics/StabilityMonitor.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "Approx.h"
-#include "Cloth.h"
-#include "Particle.h"
-#include "PhysicsSystem.h"
-#include "Spring.h"
+#include "Physics/Cloth.h"
+#include "Physics/Particle.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/Spring.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

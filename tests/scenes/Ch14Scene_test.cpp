@@ -1,12 +1,12 @@
 // The CH14 scene: the book's spawns (book.md section 0), constraints (2.1), the y < -5 clamp, and a long run
 // that keeps every particle finite and above the ground for every integrator.
-#include "Ch14Scene.h"
+#include "Demos/Scenes/Ch14Scene.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "Approx.h"
+#include "tests/support/Approx.h"
 
 TEST(Ch14Scene, FirstSpawnsEqualTheBooks) {
     Ch14Scene scene;

@@ -1,5 +1,5 @@
 // Chapter 15 scene (book.md 2.5): setup, parameters, settling, determinism.
-#include "Ch15Scene.h"
+#include "Demos/Scenes/Ch15Scene.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <cstring>
 #include <string>
 
-#include "Approx.h"
+#include "tests/support/Approx.h"
 
 namespace {
 constexpr float kBookDt = 0.03f;  // erratum 5.2-16: the book's fixed step

@@ -1,6 +1,6 @@
 // Chapter 16 scene (book.md 2.7): book setup, drape over the posts for 2,000 steps with every stable
 // integrator, explicit Euler's blow-up reported, parameters, determinism.
-#include "Ch16Scene.h"
+#include "Demos/Scenes/Ch16Scene.h"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "Approx.h"
-#include "Spring.h"
+#include "Physics/Spring.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

@@ -1,11 +1,11 @@
 // CollisionFeatureScene: the book's static start, and the scripted approach that makes contacts appear.
-#include "CollisionFeatureScene.h"
+#include "Demos/Scenes/CollisionFeatureScene.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "Approx.h"
+#include "tests/support/Approx.h"
 
 TEST(CollisionFeatureScene, BookStartHasNoContacts) {
     CollisionFeatureScene s;

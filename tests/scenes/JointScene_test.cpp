@@ -1,6 +1,6 @@
 // Joint Demo scene (book.md 2.8): CH14's spawn and ramps, pairs (i, i + n/2) held by distance joints,
 // erratum 5.2-23 (odd count), joints at rest keep their length, determinism.
-#include "JointScene.h"
+#include "Demos/Scenes/JointScene.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <set>
 #include <vector>
 
-#include "Approx.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

@@ -1,12 +1,12 @@
 // Linear Impulse scene (book.md 2.3): setup, pause and single-step controls, the mid-air impact.
-#include "LinearImpulseScene.h"
+#include "Demos/Scenes/LinearImpulseScene.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
-#include "Approx.h"
+#include "tests/support/Approx.h"
 
 namespace {
 constexpr float kBookDt = 0.03f;

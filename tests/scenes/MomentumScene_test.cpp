@@ -1,12 +1,12 @@
 // Conservation Of Momentum scene (book.md 2.4).
-#include "MomentumScene.h"
+#include "Demos/Scenes/MomentumScene.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 
-#include "Approx.h"
+#include "tests/support/Approx.h"
 
 namespace {
 constexpr float kBookDt = 0.03f;

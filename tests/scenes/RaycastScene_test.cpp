@@ -1,12 +1,12 @@
 // RaycastScene: the book's five primitives, closest-hit selection and the scripted cursor path.
-#include "RaycastScene.h"
+#include "Demos/Scenes/RaycastScene.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "Approx.h"
-#include "Camera.h"
+#include "Application/View/Camera.h"
+#include "tests/support/Approx.h"
 
 namespace {
 

@@ -1,6 +1,6 @@
 // Simple Springs scene (book.md 2.6): setup, the book-constant conversion (erratum 5.2-20), settling,
 // a stiff explicit-Euler run reported, parameters, determinism.
-#include "SpringsScene.h"
+#include "Demos/Scenes/SpringsScene.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <cstring>
 #include <string>
 
-#include "Approx.h"
+#include "tests/support/Approx.h"
 
 TEST(SpringsScene, BookSetup) {
     SpringsScene scene;

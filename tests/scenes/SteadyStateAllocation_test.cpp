@@ -13,12 +13,12 @@
 #include <cstdlib>
 #include <new>
 
-#include "Ch14Scene.h"
-#include "Ch15Scene.h"
-#include "Ch16Scene.h"
-#include "JointScene.h"
-#include "MomentumScene.h"
-#include "SpringsScene.h"
+#include "Demos/Scenes/Ch14Scene.h"
+#include "Demos/Scenes/Ch15Scene.h"
+#include "Demos/Scenes/Ch16Scene.h"
+#include "Demos/Scenes/JointScene.h"
+#include "Demos/Scenes/MomentumScene.h"
+#include "Demos/Scenes/SpringsScene.h"
 
 namespace {
 std::atomic<bool> g_counting{false};

@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "matrices.h"
-#include "quaternion.h"
-#include "vectors.h"
+#include "Math/matrices.h"
+#include "Math/quaternion.h"
+#include "Math/vectors.h"
 
 namespace tol {
 constexpr float kExact = 1e-6f;  ///< hand-computed values that should agree to float rounding

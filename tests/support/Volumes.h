@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "RigidbodyVolume.h"
+#include "Physics/RigidbodyVolume.h"
 
 /// A box body at `position` with half extents `halfSize` and `mass` (0 = static), volumes synced.
 inline RigidbodyVolume MakeBox(const vec3& position, const vec3& halfSize = vec3(1, 1, 1), float mass = 1.0f) {

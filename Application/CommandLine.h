@@ -1,0 +1,55 @@
+#pragma once
+// The physics-sandbox command line (docs/app.md). Parsing is GL-free and knows no demo: the runner checks
+// the demo id and the --set keys against the registry before it writes anything.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "Application/FrameClock.h"
+#include "Platform/ImageCompare.h"
+
+struct Options {
+    enum class Mode { Run, List, Help };
+    Mode mode = Mode::Run;
+
+    std::string demo;
+    int frames = 1;
+    std::string outDir;  ///< "" = frames are rendered but not written
+    int width = 800;
+    int height = 600;
+    std::vector<std::pair<std::string, std::string>> sets;  ///< --set key=value, in order
+    bool noUi = false;
+    bool showParams = false;  ///< --params: print the demo's parameters (after --set) and exit
+    std::string stateFile;
+
+    // Camera (the orbit camera's yaw = rotation.x, pitch = rotation.y, in degrees; zoom = distance).
+    bool hasYaw = false, hasPitch = false, hasZoom = false, hasTarget = false;
+    float yaw = 0.0f, pitch = 0.0f, zoom = 0.0f;
+    float target[3] = {0.0f, 0.0f, 0.0f};
+    float orbitDegreesPerFrame = 0.0f;  ///< added to the yaw every output frame
+
+    Rational frameTime{1, 60};  ///< simulated seconds per output frame (--fps 60)
+    Rational step{3, 100};      ///< fixed physics step (--dt 0.03, book.md 1.2)
+
+    std::vector<int> onlyFrames;  ///< --only-frames: write/compare just these (sorted, unique); empty = all
+    std::string compareDir;
+    bool updateGolden = false;
+    CompareThresholds thresholds;
+
+    int pngLevel = 3;
+    bool encodeThread = true;  ///< --serial-encode turns it off (same files, slower)
+    int progressEvery = 0;     ///< 0 = automatic (see docs/app.md)
+    bool quiet = false;
+    /// Test hook: report frame N as non-finite (exercises the exit-3 path; DemoBase::StateIsFinite is the
+    /// real check). -1 = off.
+    int debugNonFiniteAt = -1;
+};
+
+enum class ParseStatus { Ok, Error };
+
+/// Parses argv[1..]. On error returns ParseStatus::Error and sets *error to a one-line message that names
+/// the flag and the bad value. Does not touch the file system.
+ParseStatus ParseCommandLine(int argc, const char* const* argv, Options* options, std::string* error);
+/// The --help text.
+std::string UsageText();

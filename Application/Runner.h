@@ -1,0 +1,35 @@
+#pragma once
+// The headless replacement of the book's main-win32 loop (book.md 1.2, 7): one OSMesa context, ImGui with
+// its OpenGL2 back end, a DemoWindow, the exact fixed-step accumulator, PNG frames through the encode
+// queue, the --state CSV and the golden comparison.
+
+#include <string>
+
+#include "Application/CommandLine.h"
+
+/// Timings of one run (steady clock, seconds). They go to the console and the benchmark, never into a frame.
+struct RunStats {
+    int frames = 0;
+    long long steps = 0;
+    double simulatedSeconds = 0.0;
+    double wallSeconds = 0.0;
+    double renderSeconds = 0.0;    ///< OnUpdate .. ImGui draw .. glFinish
+    double readbackSeconds = 0.0;  ///< glReadPixels and the row flip
+    double encodeSeconds = 0.0;    ///< PNG encode + write (+ compare), summed over jobs
+    double waitSeconds = 0.0;      ///< main thread blocked on a full encode queue
+    // CPU time (CLOCK_THREAD_CPUTIME_ID / CLOCK_PROCESS_CPUTIME_ID): unlike the wall clock, it does not grow
+    // when other processes take the cores, so it measures the work itself on a shared machine.
+    double renderCpuSeconds = 0.0;   ///< main thread: update, fixed steps, render, readback (llvmpipe
+                                     ///< rasterises on this thread with LP_NUM_THREADS=0)
+    double encodeCpuSeconds = 0.0;   ///< the thread running the encode jobs
+    double processCpuSeconds = 0.0;  ///< whole process over the run
+    std::string renderer;            ///< glGetString(GL_RENDERER)
+};
+
+/// Exit codes of physics-sandbox.
+enum ExitCode { kExitOk = 0, kExitMismatch = 1, kExitUsage = 2, kExitFailure = 3 };
+
+/// Runs one parsed command line (Mode::Run). Returns an ExitCode; messages go to stderr.
+int RunSandbox(const Options& options, RunStats* stats);
+/// The whole program: parse, --help, --list, run.
+int RunCommandLine(int argc, const char* const* argv);

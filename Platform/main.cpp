@@ -1,4 +1,0 @@
-// physics-sandbox: renders the book's demos headless to PNG frames (docs/app.md).
-#include "Runner.h"
-
-int main(int argc, char** argv) { return RunCommandLine(argc, argv); }
