@@ -11,3 +11,11 @@ if(PSB_BUILD_TESTS)
                                     $<TARGET_FILE:psb-sweep> ${CMAKE_CURRENT_BINARY_DIR}/sweep-quick)
   set_tests_properties(sweep.quick PROPERTIES LABELS bench TIMEOUT 600)
 endif()
+
+# CI runs the shards through GNU parallel and the Slurm script, and checks the merges against one unsharded run
+# (tests/bench/sweep_parallel_test.sh; skipped, exit 77, without GNU parallel).
+if(PSB_BUILD_TESTS)
+  add_test(NAME sweep.parallel COMMAND sh ${PROJECT_SOURCE_DIR}/tests/bench/sweep_parallel_test.sh ${PROJECT_SOURCE_DIR}
+                                       $<TARGET_FILE:psb-sweep> ${CMAKE_CURRENT_BINARY_DIR}/sweep-parallel)
+  set_tests_properties(sweep.parallel PROPERTIES LABELS bench TIMEOUT 600 SKIP_RETURN_CODE 77)
+endif()

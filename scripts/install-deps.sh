@@ -15,6 +15,7 @@ packages=(
   libpng-dev          # PNG encoder for frames
   gnuplot-nox         # speed/accuracy plots (bench/)
   ccache              # faster rebuilds (optional at build time)
+  parallel            # GNU parallel: scripts/sweep-parallel.sh runs sweep shards on cores or ssh hosts
 )
 
 missing=()
