@@ -6,6 +6,9 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libosmesa6-dev      # off-screen Mesa context (llvmpipe)
+  libegl-dev          # EGL headless back end (surfaceless or device platform) ...
+  libegl-mesa0        # ... Mesa's EGL driver ...
+  libgl1-mesa-dri     # ... and its llvmpipe (swrast) DRI driver
   python3-glad        # GLAD 2 generator (the `glad` command), run offline at configure time
   libimgui-dev        # Dear ImGui 1.86 with the OpenGL2 back end
   libstb-dev          # imgui's pkg-config wants -lstb
