@@ -18,6 +18,7 @@ packages=(
   libpng-dev          # PNG encoder for frames
   gnuplot-nox         # speed/accuracy plots (bench/)
   ccache              # faster rebuilds (optional at build time)
+  ffmpeg              # --video: MP4, WebM and GIF recording (the ffmpeg and ffprobe programs)
   parallel            # GNU parallel: scripts/sweep-parallel.sh runs sweep shards on cores or ssh hosts
 )
 

@@ -1,0 +1,311 @@
+#include "Platform/VideoEncoder.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace {
+
+std::string Lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return s;
+}
+
+std::string DirectoryOf(const std::string& path) {
+    const std::size_t slash = path.rfind('/');
+    if (slash == std::string::npos) return ".";
+    return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+/// A new empty file `<dir>/.psb-video.XXXXXX<suffix>` (short, so any legal target name works); "" on failure.
+std::string MakeTemp(const std::string& dir, const char* suffix, std::string* error) {
+    std::string name = dir + "/.psb-video.XXXXXX" + suffix;
+    std::vector<char> buffer(name.begin(), name.end());
+    buffer.push_back('\0');
+    const int fd = mkstemps(buffer.data(), int(std::strlen(suffix)));
+    if (fd < 0) {
+        *error = "cannot create a temporary file in " + dir + ": " + std::strerror(errno);
+        return "";
+    }
+    close(fd);
+    return std::string(buffer.data());
+}
+
+std::string Number(double v) {
+    std::ostringstream out;
+    out.precision(10);
+    out << v;
+    return out.str();
+}
+
+bool WriteAll(int fd, const std::uint8_t* data, std::size_t size, std::string* error, const char* what) {
+    while (size > 0) {
+        const ssize_t n = write(fd, data, size);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            *error = std::string("writing to ") + what + " failed: " + std::strerror(errno);
+            return false;
+        }
+        data += n;
+        size -= std::size_t(n);
+    }
+    return true;
+}
+
+/// The last non-empty line of a text file ("" if none).
+std::string LastLine(const std::string& path) {
+    std::ifstream in(path);
+    std::string line, last;
+    while (std::getline(in, line))
+        if (!line.empty()) last = line;
+    return last;
+}
+
+}  // namespace
+
+bool VideoEncoder::FormatOf(const std::string& path, Format* out) {
+    const std::size_t dot = path.rfind('.');
+    if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return false;
+    const std::string ext = Lower(path.substr(dot));
+    if (ext == ".mp4")
+        *out = Format::Mp4;
+    else if (ext == ".webm")
+        *out = Format::Webm;
+    else if (ext == ".gif")
+        *out = Format::Gif;
+    else
+        return false;
+    return true;
+}
+
+bool VideoEncoder::FfmpegAvailable(std::string* error) {
+    const char* pathEnv = std::getenv("PATH");
+    std::stringstream dirs(pathEnv ? pathEnv : "/usr/bin:/bin");
+    std::string dir;
+    while (std::getline(dirs, dir, ':')) {
+        const std::string candidate = (dir.empty() ? "." : dir) + "/ffmpeg";
+        if (access(candidate.c_str(), X_OK) == 0) return true;
+    }
+    *error = "--video needs the ffmpeg program, which is not on PATH (Debian package 'ffmpeg')";
+    return false;
+}
+
+bool VideoEncoder::Open(const std::string& target, int w, int h, double framesPerSecond, std::string* error) {
+    Abort();
+    if (!FormatOf(target, &format)) {
+        *error = "video file '" + target + "' must end in .mp4, .webm or .gif";
+        return false;
+    }
+    if (w < 1 || h < 1 || !(framesPerSecond > 0.0)) {
+        *error = "bad video size or frame rate";
+        return false;
+    }
+    if (!FfmpegAvailable(error)) return false;
+    signal(SIGPIPE, SIG_IGN);  // a dead ffmpeg must be an error from write(), not the end of this process
+    path = target;
+    width = w;
+    height = h;
+    fps = framesPerSecond;
+    frames = 0;
+    const std::string dir = DirectoryOf(path);
+    const char* suffix = format == Format::Mp4 ? ".mp4" : format == Format::Webm ? ".webm" : ".gif";
+    tempPath = MakeTemp(dir, suffix, error);
+    if (tempPath.empty()) return false;
+    logPath = MakeTemp(dir, ".log", error);
+    if (logPath.empty()) return Cleanup(), false;
+    if (format == Format::Gif) {
+        // The palette needs every frame before the first can be mapped: keep them raw on disk, not in memory.
+        rawPath = MakeTemp(dir, ".rgb", error);
+        if (rawPath.empty()) return Cleanup(), false;
+        rawFd = open(rawPath.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+        if (rawFd < 0) {
+            *error = "cannot open " + rawPath + ": " + std::strerror(errno);
+            return Cleanup(), false;
+        }
+        return true;
+    }
+    std::vector<std::string> args = {"ffmpeg",
+                                     "-hide_banner",
+                                     "-loglevel",
+                                     "error",
+                                     "-y",
+                                     "-f",
+                                     "rawvideo",
+                                     "-pix_fmt",
+                                     "rgb24",
+                                     "-video_size",
+                                     std::to_string(w) + "x" + std::to_string(h),
+                                     "-framerate",
+                                     Number(fps),
+                                     "-i",
+                                     "pipe:0",
+                                     "-vf",
+                                     "pad=ceil(iw/2)*2:ceil(ih/2)*2"};
+    if (format == Format::Mp4) {
+        for (const char* a : {"-c:v", "libx264", "-preset", "veryfast", "-crf", "18", "-pix_fmt", "yuv420p",
+                              "-movflags", "+faststart", "-f", "mp4"})
+            args.push_back(a);
+    } else {
+        for (const char* a : {"-c:v", "libvpx-vp9", "-deadline", "realtime", "-cpu-used", "8", "-row-mt", "1", "-b:v",
+                              "0", "-crf", "30", "-pix_fmt", "yuv420p", "-f", "webm"})
+            args.push_back(a);
+    }
+    args.push_back(tempPath);
+    if (!Spawn(args, true, error)) return Cleanup(), false;
+    return true;
+}
+
+bool VideoEncoder::Spawn(const std::vector<std::string>& args, bool pipeIn, std::string* error) {
+    int fds[2] = {-1, -1};
+    if (pipeIn && pipe2(fds, O_CLOEXEC) != 0) {
+        *error = std::string("pipe failed: ") + std::strerror(errno);
+        return false;
+    }
+    std::vector<char*> argv;
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    const int log = open(logPath.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        // Child: stdin from the pipe (or /dev/null), stdout and stderr to the log, then ffmpeg.
+        const int in = pipeIn ? fds[0] : open("/dev/null", O_RDONLY);
+        if (in < 0 || dup2(in, 0) < 0) _exit(127);
+        if (log >= 0) dup2(log, 1), dup2(log, 2);
+        signal(SIGPIPE, SIG_DFL);
+        execvp("ffmpeg", argv.data());
+        _exit(127);
+    }
+    if (log >= 0) close(log);
+    if (pipeIn) close(fds[0]);
+    if (pid < 0) {
+        if (pipeIn) close(fds[1]);
+        *error = std::string("cannot start ffmpeg: ") + std::strerror(errno);
+        return false;
+    }
+    child = pid;
+    pipeFd = pipeIn ? fds[1] : -1;
+    return true;
+}
+
+bool VideoEncoder::Wait(std::string* error) {
+    int status = 0;
+    pid_t r;
+    do r = waitpid(child, &status, 0);
+    while (r < 0 && errno == EINTR);
+    child = -1;
+    if (r > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0) return true;
+    const std::string last = LastLine(logPath);
+    *error = "ffmpeg failed" +
+             (r > 0 && WIFEXITED(status) ? " with exit code " + std::to_string(WEXITSTATUS(status))
+                                         : std::string(" (killed by a signal)")) +
+             (last.empty() ? std::string() : ": " + last);
+    return false;
+}
+
+bool VideoEncoder::WriteFrame(const Image& frame, std::string* error) {
+    if (frame.width != width || frame.height != height) {
+        *error = "video frame is " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+                 ", the recording " + std::to_string(width) + "x" + std::to_string(height);
+        return false;
+    }
+    const int fd = format == Format::Gif ? rawFd : pipeFd;
+    if (fd < 0) {
+        *error = "video recording is not open";
+        return false;
+    }
+    if (!WriteAll(fd, frame.rgb.data(), frame.rgb.size(), error, format == Format::Gif ? rawPath.c_str() : "ffmpeg")) {
+        if (format != Format::Gif) {
+            // ffmpeg went away: its own message says why.
+            close(pipeFd);
+            pipeFd = -1;
+            std::string why;
+            Wait(&why);
+            *error = why;
+        }
+        return false;
+    }
+    ++frames;
+    return true;
+}
+
+bool VideoEncoder::EncodeGif(std::string* error) {
+    const std::string size = std::to_string(width) + "x" + std::to_string(height);
+    const std::string rate = Number(fps);
+    // GIF delays are whole hundredths of a second: above 50 fps, resample to 50 (2/100 s per frame).
+    const std::string resample = fps > 50.0 ? "fps=50," : "";
+    palettePath = MakeTemp(DirectoryOf(path), ".png", error);
+    if (palettePath.empty()) return false;
+    const std::vector<std::string> input = {"-f", "rawvideo",   "-pix_fmt", "rgb24", "-video_size",
+                                            size, "-framerate", rate,       "-i",    rawPath};
+    std::vector<std::string> pass1 = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y"};
+    pass1.insert(pass1.end(), input.begin(), input.end());
+    for (const std::string& a : {std::string("-vf"), resample + "palettegen=stats_mode=full:reserve_transparent=0",
+                                 std::string("-f"), std::string("image2"), palettePath})
+        pass1.push_back(a);
+    if (!Spawn(pass1, false, error) || !Wait(error)) return false;
+    std::vector<std::string> pass2 = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y"};
+    pass2.insert(pass2.end(), input.begin(), input.end());
+    for (const std::string& a : {std::string("-i"), palettePath, std::string("-lavfi"),
+                                 "[0:v]" + resample + "null[v];[v][1:v]paletteuse=dither=none", std::string("-loop"),
+                                 std::string("0"), std::string("-f"), std::string("gif"), tempPath})
+        pass2.push_back(a);
+    return Spawn(pass2, false, error) && Wait(error);
+}
+
+bool VideoEncoder::Finish(std::string* error) {
+    if (!IsOpen()) {
+        *error = "video recording is not open";
+        return false;
+    }
+    bool ok = true;
+    if (format == Format::Gif) {
+        ok = close(rawFd) == 0;
+        rawFd = -1;
+        if (!ok) *error = "writing " + rawPath + " failed: " + std::strerror(errno);
+        ok = ok && (frames > 0 || (*error = "no frames were recorded", false)) && EncodeGif(error);
+    } else {
+        close(pipeFd);
+        pipeFd = -1;
+        ok = Wait(error);
+    }
+    if (ok && std::rename(tempPath.c_str(), path.c_str()) != 0) {
+        *error = "cannot rename " + tempPath + " to " + path + ": " + std::strerror(errno);
+        ok = false;
+    }
+    if (ok) {
+        chmod(path.c_str(), 0644);
+        tempPath.clear();
+    }
+    Cleanup();
+    return ok;
+}
+
+void VideoEncoder::Abort() {
+    if (pipeFd >= 0) close(pipeFd), pipeFd = -1;
+    if (child > 0) {
+        kill(child, SIGKILL);
+        int status = 0;
+        while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
+        }
+        child = -1;
+    }
+    Cleanup();
+}
+
+void VideoEncoder::Cleanup() {
+    if (rawFd >= 0) close(rawFd), rawFd = -1;
+    for (std::string* p : {&tempPath, &rawPath, &palettePath, &logPath}) {
+        if (!p->empty()) unlink(p->c_str());
+        p->clear();
+    }
+}
