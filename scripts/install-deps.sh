@@ -9,6 +9,7 @@ packages=(
   libegl-dev          # EGL headless back end (surfaceless or device platform) ...
   libegl-mesa0        # ... Mesa's EGL driver ...
   libgl1-mesa-dri     # ... and its llvmpipe (swrast) DRI driver
+  libopengl-dev       # glvnd's libOpenGL: GL entry points for a build with EGL and no OSMesa
   python3-glad        # GLAD 2 generator (the `glad` command), run offline at configure time
   libimgui-dev        # Dear ImGui 1.86 with the OpenGL2 back end
   libstb-dev          # imgui's pkg-config wants -lstb
@@ -18,6 +19,8 @@ packages=(
   libpng-dev          # PNG encoder for frames
   gnuplot-nox         # speed/accuracy plots (bench/)
   ccache              # faster rebuilds (optional at build time)
+  libglfw3-dev        # --window: the desktop window (X11)
+  xvfb xdotool        # the window test: a private X display, driven by synthetic mouse input
   ffmpeg              # --video: MP4, WebM and GIF recording (the ffmpeg and ffprobe programs)
   parallel            # GNU parallel: scripts/sweep-parallel.sh runs sweep shards on cores or ssh hosts
 )

@@ -1,0 +1,171 @@
+#include "Application/WindowedRunner.h"
+
+// glad first: it must precede anything that could pull in <GL/gl.h>.
+#include <glad/gl.h>
+// clang-format off
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl2.h>
+// clang-format on
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <thread>
+
+#include "Demos/DemoBase.h"
+#include "Demos/DemoRegistry.h"
+#include "Platform/DesktopWindow.h"
+#include "Windows/BookImGuiStyle.h"
+#include "Windows/DemoWindow.h"
+
+namespace {
+
+/// Window events into the DemoWindow's hooks; mouse presses only when ImGui does not want the mouse
+/// (docs/book-reference.md §1.2). Releases always pass, so a drag that ends over a panel does not stick.
+class InputBridge : public DesktopInput {
+public:
+    explicit InputBridge(DemoWindow* w) : window(w) {}
+    void OnCursor(int x, int y) override { window->OnMouseMove(x, y); }
+    void OnButton(int button, bool down) override {
+        if (down && ImGui::GetIO().WantCaptureMouse) return;
+        const MouseButton b = static_cast<MouseButton>(button);
+        if (down)
+            window->OnMouseDown(b);
+        else
+            window->OnMouseUp(b);
+    }
+    void OnKey(int key, bool down) override {
+        if (key < 0 || key > 255 || ImGui::GetIO().WantCaptureKeyboard) return;
+        if (down)
+            window->OnKeyDown(key);
+        else
+            window->OnKeyUp(key);
+    }
+    void OnResize(int w, int h) override { window->Resize(w, h); }
+
+private:
+    DemoWindow* window;
+};
+
+/// ImGui for the window: the book's look, no ini file, GLFW input, OpenGL2 drawing.
+struct ImGuiSession {
+    explicit ImGuiSession(DesktopWindow& w) {
+        IMGUI_CHECKVERSION();
+        ImGui::CreateContext();
+        ImGui::GetIO().IniFilename = nullptr;
+        ImGui::GetIO().LogFilename = nullptr;
+        ApplyBookImGuiStyle();
+        ImGui_ImplGlfw_InitForOpenGL(w.Handle(), true);  // chains to the window's own callbacks
+        ImGui_ImplOpenGL2_Init();
+    }
+    ~ImGuiSession() {
+        ImGui_ImplOpenGL2_Shutdown();
+        ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+    }
+};
+
+bool StartFirstDemo(const WindowedOptions& o, DemoWindow& window) {
+    if (o.demo.empty()) return true;
+    if (!window.StartDemo(o.demo)) {
+        std::fprintf(stderr, "physics-sandbox: unknown demo '%s' (see --list)\n", o.demo.c_str());
+        return false;
+    }
+    std::string error;
+    for (const auto& [key, value] : o.sets)
+        if (!window.CurrentDemo()->Parameters().Set(key, value, &error)) {
+            std::fprintf(stderr, "physics-sandbox: --set %s=%s: %s\n", key.c_str(), value.c_str(), error.c_str());
+            return false;
+        }
+    return true;
+}
+
+void ReportDemo(const WindowedOptions& o, const std::string& id) {
+    if (o.quiet) return;
+    std::printf("demo: %s\n", id.empty() ? "none" : id.c_str());
+    std::fflush(stdout);
+}
+
+void ReportSummary(const WindowedOptions& o, DemoWindow& window, int frames, long long steps) {
+    if (o.quiet) return;
+    std::printf("window: %d frames, %lld fixed steps, demo %s", frames, steps,
+                window.CurrentDemoId().empty() ? "none" : window.CurrentDemoId().c_str());
+    if (DemoBase* demo = window.CurrentDemo()) {
+        const vec2 r = demo->camera.GetRotation();
+        const vec3 t = demo->camera.GetTarget();
+        std::printf(", camera yaw %.4f pitch %.4f zoom %.4f target %.4f %.4f %.4f", double(r.x), double(r.y),
+                    double(demo->camera.GetZoom()), double(t.x), double(t.y), double(t.z));
+    }
+    std::printf("\n");
+    std::fflush(stdout);
+}
+
+}  // namespace
+
+int RunWindowed(const WindowedOptions& o) {
+    if (!o.demo.empty() && FindDemo(o.demo) == nullptr) {
+        std::fprintf(stderr, "physics-sandbox: unknown demo '%s' (see --list)\n", o.demo.c_str());
+        return 2;
+    }
+    std::string error;
+    std::unique_ptr<DesktopWindow> desktop =
+        DesktopWindow::Create("Physics Sandbox", o.width, o.height, o.vsync, &error);
+    if (!desktop) {
+        std::fprintf(stderr, "physics-sandbox: --window: %s\n", error.c_str());
+        return 3;
+    }
+    DemoWindow window("Physics Sandbox", o.width, o.height);
+    InputBridge input(&window);
+    desktop->SetInput(&input);
+    ImGuiSession imgui(*desktop);
+
+    window.OnInitialize();
+    window.OnResize(o.width, o.height);
+    window.SetUIVisible(!o.noUi);
+    if (!StartFirstDemo(o, window)) return 2;
+    std::string shownDemo = window.CurrentDemoId();
+    ReportDemo(o, shownDemo);
+
+    using Clock = std::chrono::steady_clock;
+    const auto frameBudget = std::chrono::milliseconds(1000 / window.GetTargetFPS());  // the book's SKIP_TICKS
+    double last = DesktopWindow::Seconds(), fixedElapsed = 0.0;
+    int frames = 0;
+    long long steps = 0;
+    while (!desktop->ShouldClose() && !window.GetQuitFlag() && (o.frames == 0 || frames < o.frames)) {
+        const Clock::time_point frameStart = Clock::now();
+        desktop->PollEvents();
+        const double now = DesktopWindow::Seconds();
+        const double deltaTime = now - last;
+        last = now;
+        if (window.GetAndResetTitleDirtyFlag()) desktop->SetTitle(window.GetTitle());
+
+        ImGui_ImplOpenGL2_NewFrame();
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        const float framerate = ImGui::GetIO().Framerate;
+        if (framerate > 0.0f) window.SetNominalFrameTime(1000.0f / framerate);
+        window.OnUpdate(float(deltaTime));
+        // The book's accumulator (strict >), docs/book-reference.md §1.2.
+        fixedElapsed += deltaTime;
+        while (fixedElapsed > o.step) {
+            window.OnFixedUpdate(float(o.step));
+            fixedElapsed -= o.step;
+            ++steps;
+        }
+        window.OnRender();
+        ImGui::Render();
+        ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+        desktop->SwapBuffers();
+        ++frames;
+
+        if (window.CurrentDemoId() != shownDemo) {
+            shownDemo = window.CurrentDemoId();
+            ReportDemo(o, shownDemo);
+        }
+        std::this_thread::sleep_until(frameStart + frameBudget);
+    }
+    ReportSummary(o, window, frames, steps);
+    window.OnShutdown();
+    return 0;
+}

@@ -1,0 +1,26 @@
+#pragma once
+// The book's interactive program (docs/book-reference.md §1.2): an 800x600 "Physics Sandbox" window with
+// the "Physics Demo" panel, driven by the book's wall-clock loop: events, ImGui frame, OnUpdate, fixed steps
+// of the accumulator (strict >), render, swap; vsync and the book's 16 ms frame limiter. Mouse input reaches
+// the demo (left pans, middle zooms, right rotates the camera) unless ImGui wants the mouse. docs/app.md,
+// "Window".
+
+#include <string>
+#include <utility>
+#include <vector>
+
+struct WindowedOptions {
+    std::string demo;                                       ///< first demo ("" = the book's empty start screen)
+    std::vector<std::pair<std::string, std::string>> sets;  ///< --set, applied to the first demo
+    int frames = 0;                                         ///< close after this many frames; 0 = when closed
+    int width = 800, height = 600;
+    double step = 0.03;  ///< fixed physics step in seconds (the book's 0.03)
+    bool vsync = true;
+    bool noUi = false;
+    bool quiet = false;  ///< no "demo: ID" lines and no summary
+};
+
+/// Runs the window until it is closed or `frames` frames have been shown. Prints "demo: ID" (or "demo: none")
+/// on stdout whenever the running demo changes, and a summary line with the frame count and the final camera
+/// at the end. Returns 0, 2 for an unknown demo or --set, 3 when no window can be opened (no display).
+int RunWindowed(const WindowedOptions& options);
