@@ -48,17 +48,17 @@ RigidbodyVolume MakeSphere(const vec3& position, float radius = 1.0f, float mass
 /// A static box with half extents `halfExtents` whose top face is y = topY.
 RigidbodyVolume MakeGround(const vec3& halfExtents, float topY = 0.0f);
 
-// ---- Stacks. Each copies `cube` (size, mass, surface; its position and orientation are replaced) and places the
-// copies resting face on face on the plane y = 0, centred on x = z = 0; h is cube.halfExtents.
+// ---- Stacks. Each copies `cube` (shape, size, mass, surface; position and orientation are replaced), centred on
+// x = z = 0 above the plane y = 0; h is cube.halfExtents. Tower and Pyramid rest face on face from y = 0 up.
 
 /// `height` cubes in one column: cube k (0 = bottom) at (0, h.y + 2 h.y k, 0).
 std::vector<BodySpec> Tower(int height, const BodySpec& cube);
 /// A 2-D pyramid in the x-y plane with `base` cubes in the bottom row: row r holds base - r cubes, cube k of it at
 /// x = (k - (base - r - 1) / 2) (2 h.x + gap), y = h.y + 2 h.y r, z = 0; rows bottom to top, k left to right.
 std::vector<BodySpec> Pyramid(int base, const BodySpec& cube, float gap);
-/// `count` cubes in columns of 10 on a square grid of side s = ceil(sqrt(ceil(count / 10))) columns, 2.5 m apart,
-/// dropped with 0.2 m gaps: cube i is in column c = i / 10 at (x, z) = ((c mod s - (s - 1) / 2) 2.5,
-/// (c / s - (s - 1) / 2) 2.5), level k = i mod 10 at y = 1.5 + 2.2 k (for the unit-half-extent cube).
+/// `count` cubes dropped in columns of 10 on a square grid of side s = ceil(sqrt(ceil(count / 10))) columns, 2.5 m
+/// apart: cube i is in column c = i / 10 at (x, z) = ((c mod s - (s - 1) / 2) 2.5, (c / s - (s - 1) / 2) 2.5),
+/// level k = i mod 10 at y = 1.5 + 2.2 k (fixed numbers: 0.5 m and 0.2 m gaps for cubes of half extent 1).
 std::vector<BodySpec> Boxpile(int count, const BodySpec& cube);
 /// The determinism scene: `count` unit-half-extent cubes of 1 kg dropped in a leaning, tilted column, cube i at
 /// (0.1 i, 1 + 2.2 i, 0.05 i) with Euler angles (0.1 i, 0.2, 0.05) rad, so they fall onto each other and tumble.
@@ -90,8 +90,7 @@ public:
     RigidWorld(const RigidWorld&) = delete;
     RigidWorld& operator=(const RigidWorld&) = delete;
 
-    /// The bodies in spec order. Fields may be changed; the list itself is fixed.
-    std::vector<RigidbodyVolume>& Bodies() { return bodies; }
+    /// The bodies in spec order; the list is fixed, a body's fields may be changed through Body(i).
     const std::vector<RigidbodyVolume>& Bodies() const { return bodies; }
     RigidbodyVolume& Body(std::size_t i) { return bodies[i]; }
     const RigidbodyVolume& Body(std::size_t i) const { return bodies[i]; }
