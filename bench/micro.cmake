@@ -3,7 +3,7 @@
 find_package(benchmark QUIET)
 if(benchmark_FOUND)
   add_executable(psb-micro-bench ${CMAKE_CURRENT_LIST_DIR}/micro_bench.cpp)
-  target_link_libraries(psb-micro-bench PRIVATE psb_physics psb_view psb_geometry psb_math psb_options
+  target_link_libraries(psb-micro-bench PRIVATE psb_scenes psb_physics psb_view psb_geometry psb_math psb_options
                                                  benchmark::benchmark)
 else()
   message(STATUS "Google Benchmark not found: psb-micro-bench and psb-model-cost not built (scripts/install-deps.sh)")

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "Application/View/Tessellation.h"
+#include "Demos/Scenes/WorldBuilder.h"
 #include "Math/matrices.h"
 #include "Physics/Geometry/Geometry3D.h"
 #include "Physics/Integrator.h"
@@ -99,11 +100,8 @@ void BM_ManifoldOBBOBB(benchmark::State& state) {
 }
 /// The RigidbodyVolume wrapper used by PhysicsSystem (box resting on a box: 4 contacts).
 void BM_ManifoldVolumesBoxBox(benchmark::State& state) {
-    RigidbodyVolume a(RigidbodyType::Box), b(RigidbodyType::Box);
-    a.box.size = b.box.size = vec3(0.5f, 0.5f, 0.5f);
-    b.position = vec3(0.1f, 0.99f, 0.0f);
-    a.SynchCollisionVolumes();
-    b.SynchCollisionVolumes();
+    RigidbodyVolume a = MakeBox(vec3(), vec3(0.5f, 0.5f, 0.5f));
+    RigidbodyVolume b = MakeBox(vec3(0.1f, 0.99f, 0.0f), vec3(0.5f, 0.5f, 0.5f));
     CollisionManifold m;
     for (auto _ : state) {
         FindCollisionFeatures(a, b, &m);
@@ -114,14 +112,8 @@ void BM_ManifoldVolumesBoxBox(benchmark::State& state) {
 
 // ---- ApplyImpulse: one contact of a box landing on a static box; velocities reset each iteration.
 void BM_ApplyImpulse(benchmark::State& state) {
-    RigidbodyVolume ground(RigidbodyType::Box), box(RigidbodyType::Box);
-    ground.mass = 0.0f;
-    ground.box.size = vec3(5.0f, 0.5f, 5.0f);
-    ground.position = vec3(0.0f, -0.5f, 0.0f);
-    box.box.size = vec3(0.5f, 0.5f, 0.5f);
-    box.position = vec3(0.1f, 0.49f, 0.0f);
-    ground.SynchCollisionVolumes();
-    box.SynchCollisionVolumes();
+    RigidbodyVolume ground = MakeGround(vec3(5.0f, 0.5f, 5.0f));
+    RigidbodyVolume box = MakeBox(vec3(0.1f, 0.49f, 0.0f), vec3(0.5f, 0.5f, 0.5f));
     const CollisionManifold m = FindCollisionFeatures(ground, box);
     const vec3 v(0.3f, -2.0f, 0.1f), w(0.1f, 0.2f, 0.3f);
     for (auto _ : state) {

@@ -8,6 +8,7 @@
 #include "Demos/Scenes/Ch14Scene.h"
 #include "Demos/Scenes/Ch15Scene.h"
 #include "Demos/Scenes/Ch16Scene.h"
+#include "Demos/Scenes/WorldBuilder.h"
 #include "Physics/Cloth.h"
 #include "Physics/RigidbodyVolume.h"
 
@@ -32,15 +33,10 @@ const char* ExtraName(int extra) {
 /// Adds `extra` to a system; the objects live in *holder (outliving the system's use of them).
 struct Extras {
     Cloth cloth;  // never initialised: no particles, no springs
-    RigidbodyVolume far{RigidbodyType::Box};
+    RigidbodyVolume far = MakeBox(vec3(1000.0f, 1000.0f, 1000.0f), vec3(1.0f, 1.0f, 1.0f), 0.0f);  // static
     void Add(int extra, PhysicsSystem& system) {
         if (extra == kEmptyCloth) system.AddCloth(&cloth);
-        if (extra == kFarVolume) {
-            far.mass = 0.0f;
-            far.position = vec3(1000.0f, 1000.0f, 1000.0f);
-            far.SynchCollisionVolumes();
-            system.AddRigidbody(&far);
-        }
+        if (extra == kFarVolume) system.AddRigidbody(&far);
         if (extra == kForcedBroadphase) system.BroadphaseMinVolumes = 0;
     }
 };

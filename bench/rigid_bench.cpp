@@ -3,6 +3,7 @@
 // no Baumgarte bias), plus each at the other's pass count where it is cheap. Every row: projection 0.45, slack
 // 0.01, damping 0.98 per step, restitution 0.5, friction 0.6.
 // Usage: psb-rigid-bench [quick] [solver=book|accumulated]
+// Scenes (defined once in Demos/Scenes/WorldBuilder.h, BoxpileScene etc.; unit cube = half extent 1, 1 kg):
 //   boxpile N  N unit cubes in columns of 10 (2.2 m apart vertically, 2.5 m grid) dropped on a static ground
 //   pyramid B  a 2-D pyramid of unit cubes with base B, resting (0.01 m gaps in x)
 //   tower H    one column of H unit cubes, resting
@@ -16,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "Demos/Scenes/WorldBuilder.h"
 #include "Physics/ContactSolver.h"
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
@@ -23,66 +25,6 @@
 namespace {
 
 constexpr float kDt = 1.0f / 60.0f;
-
-struct World {
-    std::vector<RigidbodyVolume> bodies;  // [0] is the static ground
-    std::vector<vec3> start;
-};
-
-RigidbodyVolume Cube(const vec3& p) {
-    RigidbodyVolume b(RigidbodyType::Box);
-    b.position = p;
-    b.SynchCollisionVolumes();
-    return b;
-}
-
-void AddGround(World* w, float halfWidth) {
-    RigidbodyVolume g(RigidbodyType::Box);
-    g.position = vec3(0, -0.5f, 0);
-    g.box.size = vec3(halfWidth, 0.5f, halfWidth);
-    g.mass = 0;
-    g.SynchCollisionVolumes();
-    w->bodies.push_back(g);
-}
-
-World BoxPile(int n) {
-    World w;
-    const int columns = (n + 9) / 10;
-    const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<float>(columns))));
-    AddGround(&w, side * 1.25f + 5);
-    for (int i = 0; i < n; ++i) {
-        const int c = i / 10, k = i % 10;
-        const float x = (c % side - 0.5f * (side - 1)) * 2.5f, z = (c / side - 0.5f * (side - 1)) * 2.5f;
-        w.bodies.push_back(Cube(vec3(x, 1.5f + 2.2f * k, z)));
-    }
-    return w;
-}
-
-World Pyramid(int base) {
-    World w;
-    AddGround(&w, base + 5.0f);
-    for (int row = 0; row < base; ++row)
-        for (int i = 0; i < base - row; ++i)
-            w.bodies.push_back(Cube(vec3((i - 0.5f * (base - row - 1)) * 2.01f, 1.0f + 2.0f * row, 0)));
-    return w;
-}
-
-World Tower(int height) {
-    World w;
-    AddGround(&w, 10);
-    for (int k = 0; k < height; ++k) w.bodies.push_back(Cube(vec3(0, 1.0f + 2.0f * k, 0)));
-    return w;
-}
-
-float KineticEnergy(const std::vector<RigidbodyVolume>& bodies) {
-    float e = 0;
-    for (const RigidbodyVolume& b : bodies) {
-        if (!(b.mass > 0)) continue;
-        e +=
-            0.5f * b.mass * MagnitudeSq(b.velocity) + 0.5f * Dot(b.angVel, MultiplyVector(b.angVel, b.InertiaTensor()));
-    }
-    return e;
-}
 
 struct Result {
     double msPerStep = 0;
@@ -96,14 +38,10 @@ struct SolverSetup {
     int iterations;
 };
 
-Result Run(World& w, int steps, const SolverSetup& setup) {
-    PhysicsSystem system;
+Result Run(RigidWorld& w, int steps, const SolverSetup& setup) {
+    PhysicsSystem& system = w.system;
     system.contactSolver = setup.solver;
     system.ImpulseIteration = setup.iterations;
-    for (RigidbodyVolume& b : w.bodies) {
-        w.start.push_back(b.position);
-        system.AddRigidbody(&b);
-    }
     Result r;
     r.steps = steps;
     const auto t0 = std::chrono::steady_clock::now();
@@ -115,9 +53,8 @@ Result Run(World& w, int steps, const SolverSetup& setup) {
     }
     const auto t1 = std::chrono::steady_clock::now();
     r.msPerStep = std::chrono::duration<double, std::milli>(t1 - t0).count() / steps;
-    r.finalKE = KineticEnergy(w.bodies);
-    for (std::size_t i = 1; i < w.bodies.size(); ++i)
-        r.maxDisplacement = std::fmax(r.maxDisplacement, Magnitude(w.bodies[i].position - w.start[i]));
+    r.finalKE = w.KineticEnergy();
+    r.maxDisplacement = w.MaxDisplacement();
     return r;
 }
 
@@ -130,19 +67,10 @@ void Print(const char* name, int size, const SolverSetup& setup, const Result& r
 
 /// Apex heights (bottom of the sphere above the ground) of the first bounces.
 void Bounce(float e, float damping, const SolverSetup& setup) {
-    World w;
-    AddGround(&w, 10);
-    RigidbodyVolume s(RigidbodyType::Sphere);
-    s.position = vec3(0, 11, 0);
-    s.cor = e;
-    s.damping = damping;
-    s.SynchCollisionVolumes();
-    w.bodies.push_back(s);
-    w.bodies[0].cor = 1.0f;
-    PhysicsSystem system;
+    RigidWorld w(BounceScene(e, damping));
+    PhysicsSystem& system = w.system;
     system.contactSolver = setup.solver;
     system.ImpulseIteration = setup.iterations;
-    for (RigidbodyVolume& b : w.bodies) system.AddRigidbody(&b);
     const float h0 = 10.0f;
     std::vector<float> apex;
     float prevVy = 0, maxPen = 0;
@@ -150,7 +78,7 @@ void Bounce(float e, float damping, const SolverSetup& setup) {
     const int steps = 600;
     for (int i = 0; i < steps && apex.size() < 3; ++i) {
         system.Update(kDt);
-        const RigidbodyVolume& b = w.bodies[1];
+        const RigidbodyVolume& b = w.Body(1);
         if (prevVy > 0 && b.velocity.y <= 0) apex.push_back(b.position.y - 1.0f);
         prevVy = b.velocity.y;
         for (std::size_t k = 0; k < system.CollisionCount(); ++k)
@@ -206,20 +134,20 @@ int main(int argc, char** argv) {
         if (quick && n > 100) break;
         for (const SolverSetup& setup : main) {
             if (!wanted(setup)) continue;
-            World w = BoxPile(n);
+            RigidWorld w(BoxpileScene(n));
             Print("boxpile", n, setup, Run(w, 600, setup));
         }
     }
     for (int b : {10, 20})
         for (const SolverSetup& setup : all) {
             if (!wanted(setup)) continue;
-            World w = Pyramid(b);
+            RigidWorld w(PyramidScene(b));
             Print("pyramid", b, setup, Run(w, 600, setup));
         }
     for (int h : {10, 20})
         for (const SolverSetup& setup : all) {
             if (!wanted(setup)) continue;
-            World w = Tower(h);
+            RigidWorld w(TowerScene(h));
             Print("tower", h, setup, Run(w, 600, setup));
         }
     std::printf(

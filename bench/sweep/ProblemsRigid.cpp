@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "Demos/Scenes/WorldBuilder.h"
 #include "Physics/ContactSolver.h"
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
@@ -21,35 +22,22 @@ constexpr double kG = 9.82;
 
 long long StepsFor(double seconds, double dt) { return std::llround(seconds / dt); }
 
-/// A world of volumes (stored here, so pointers stay valid) with the solver settings of one run.
-struct VolumeWorld {
-    PhysicsSystem system;
-    std::vector<RigidbodyVolume> bodies;
-    std::vector<vec3> start;
+/// A body spec with the sweep's damping 1 and velocityEpsilon 0 (see the top of this file).
+BodySpec Undamped(BodySpec spec) {
+    spec.damping = 1.0f;
+    spec.velocityEpsilon = 0.0f;
+    return spec;
+}
 
-    explicit VolumeWorld(const Settings& s, std::size_t capacity) {
-        bodies.reserve(capacity);
+/// Static ground slab 40 x 1 x 40 m, top face at y = 0.
+BodySpec Ground() { return Undamped(GroundSpec(vec3(20.0f, 0.5f, 20.0f))); }
+
+/// A world built from specs (WorldBuilder.h) with the solver settings of one run.
+struct VolumeWorld : RigidWorld {
+    VolumeWorld(const Settings& s, const std::vector<BodySpec>& specs) : RigidWorld(specs) {
         if (s.iterations >= 0) system.ImpulseIteration = s.iterations;
         if (s.projection >= 0) system.DoLinearProjection = s.projection != 0;
         if (s.solver >= 0) system.contactSolver = ContactSolver(s.solver);
-    }
-    RigidbodyVolume& Add(RigidbodyType type, const vec3& position, float mass) {
-        bodies.emplace_back(type);
-        RigidbodyVolume& b = bodies.back();
-        b.position = position;
-        b.mass = mass;
-        b.damping = 1.0f;
-        b.velocityEpsilon = 0.0f;
-        b.SynchCollisionVolumes();
-        return b;
-    }
-    /// Registers the bodies with the system (after the vector is complete) and remembers their start.
-    void Finish() {
-        for (RigidbodyVolume& b : bodies) {
-            b.SynchCollisionVolumes();
-            system.AddRigidbody(&b);
-            start.push_back(b.position);
-        }
     }
     /// One frame: `substeps` updates of dt / substeps.
     void Frame(const Settings& s) {
@@ -58,28 +46,15 @@ struct VolumeWorld {
     }
     /// Finite, within `radius` of the start and slower than 1,000 m/s.
     bool Bounded(float radius) const {
-        for (std::size_t i = 0; i < bodies.size(); ++i) {
-            const RigidbodyVolume& b = bodies[i];
+        for (std::size_t i = 0; i < Bodies().size(); ++i) {
+            const RigidbodyVolume& b = Body(i);
             if (!IsFinite(b.position) || !IsFinite(b.velocity) || !IsFinite(b.angVel) || !IsFinite(b.orientation))
                 return false;
-            if (Magnitude(b.position - start[i]) > radius || Magnitude(b.velocity) > 1000.0f) return false;
+            if (Magnitude(b.position - StartPositions()[i]) > radius || Magnitude(b.velocity) > 1000.0f) return false;
         }
         return true;
     }
-    double MaxDrift() const {
-        double worst = 0.0;
-        for (std::size_t i = 0; i < bodies.size(); ++i)
-            if (bodies[i].mass > 0.0f) worst = std::fmax(worst, Magnitude(bodies[i].position - start[i]));
-        return worst;
-    }
 };
-
-/// Static ground slab, top face at y = 0.
-RigidbodyVolume& AddGround(VolumeWorld* w) {
-    RigidbodyVolume& g = w->Add(RigidbodyType::Box, vec3(0.0f, -0.5f, 0.0f), 0.0f);
-    g.box.size = vec3(20.0f, 0.5f, 20.0f);
-    return g;
-}
 
 Settings Base(double dt, int iterations, int projection, double param = 0.0, int substeps = 1) {
     Settings s;
@@ -100,14 +75,12 @@ Settings With(ContactSolver solver, Settings s) {
 // ---- bounce-sphere: radius 0.5, dropped 5 m (bottom to ground), restitution e; first five apex heights.
 Outcome RunBounceSphere(const Settings& s) {
     const double e = s.param, h0 = 5.0, r = 0.5;
-    VolumeWorld w(s, 2);
-    RigidbodyVolume& ground = AddGround(&w);
-    ground.cor = 1.0f;  // the pair uses min(cor): the sphere's e
-    RigidbodyVolume& ball = w.Add(RigidbodyType::Sphere, vec3(0.0f, float(h0 + r), 0.0f), 1.0f);
-    ball.sphere.radius = float(r);
-    ball.cor = float(e);
-    w.Finish();
-    RigidbodyVolume& b = w.bodies[1];
+    BodySpec ground = Ground();
+    ground.restitution = 1.0f;  // the pair uses min(cor): the sphere's e
+    BodySpec ball = Undamped(SphereSpec(vec3(0.0f, float(h0 + r), 0.0f), float(r), 1.0f));
+    ball.restitution = float(e);
+    VolumeWorld w(s, {ground, ball});
+    const RigidbodyVolume& b = w.Body(1);
 
     Outcome o;
     double worst = 0.0, peak = -kInf;
@@ -160,13 +133,11 @@ Spin Measure(const RigidbodyVolume& b) {
 }
 
 Outcome RunRotation(const Settings& s, bool energy) {
-    VolumeWorld w(s, 1);
-    RigidbodyVolume& box = w.Add(RigidbodyType::Box, vec3(), 2.0f);
-    box.box.size = vec3(0.2f, 0.5f, 1.0f);
-    box.gravity = vec3();
-    box.angVel = vec3(2.0f, 1.0f, 0.5f);  // rad/s, world frame; not along a principal axis
-    w.Finish();
-    const Spin s0 = Measure(w.bodies[0]);
+    BodySpec spec = Undamped(BoxSpec(vec3(), vec3(0.2f, 0.5f, 1.0f), 2.0f));
+    spec.angularVelocity = vec3(2.0f, 1.0f, 0.5f);  // rad/s, world frame; not along a principal axis
+    VolumeWorld w(s, {spec});
+    w.Body(0).gravity = vec3();
+    const Spin s0 = Measure(w.Body(0));
     const long long n = StepsFor(10.0, s.dt);
     Outcome o;
     const double t0 = CpuNow();
@@ -175,7 +146,7 @@ Outcome RunRotation(const Settings& s, bool energy) {
     o.steps = n * s.substeps;
     o.simSeconds = double(n) * s.dt;
     o.stable = w.Bounded(1.0f);
-    const Spin s1 = Measure(w.bodies[0]);
+    const Spin s1 = Measure(w.Body(0));
     o.error = energy ? std::fabs(s1.E - s0.E) / s0.E : Magnitude(s1.L - s0.L) / Magnitude(s0.L);
     if (!o.stable) o.error = kInf;
     return o;
@@ -185,24 +156,22 @@ Outcome RunRotation(const Settings& s, bool energy) {
 // restitution 0. Acceleration from the down-slope speed at 0.5 s and 1.5 s against g (sin - mu cos).
 Outcome RunIncline(const Settings& s) {
     const double theta = 30.0 * M_PI / 180.0, mu = 0.3;
-    VolumeWorld w(s, 2);
-    RigidbodyVolume& slab = w.Add(RigidbodyType::Box, vec3(), 0.0f);
-    slab.box.size = vec3(6.0f, 0.5f, 2.0f);
+    BodySpec slab = Undamped(BoxSpec(vec3(), vec3(6.0f, 0.5f, 2.0f), 0.0f));
     slab.friction = float(mu);
-    slab.cor = 0.0f;
-    slab.SetEulerOrientation(vec3(0.0f, 0.0f, float(theta)));
-    const float* axes = slab.box.orientation.asArray;  // rows: local X, Y, Z in world space
+    slab.restitution = 0.0f;
+    slab.eulerRadians = vec3(0.0f, 0.0f, float(theta));
+    const RigidbodyVolume tilted = MakeBody(slab);
+    const float* axes = tilted.box.orientation.asArray;  // rows: local X, Y, Z in world space
     const vec3 normal(axes[3], axes[4], axes[5]);
     vec3 downhill(axes[0], axes[1], axes[2]);
     if (downhill.y > 0.0f) downhill = downhill * -1.0f;
     // Start resting on the face, 2 mm into it (inside PenetrationSlack) so the contact exists from step 1.
-    RigidbodyVolume& cube = w.Add(RigidbodyType::Box, normal * (0.5f + 0.25f - 0.002f), 1.0f);
-    cube.box.size = vec3(0.25f, 0.25f, 0.25f);
+    BodySpec cube = Undamped(BoxSpec(normal * (0.5f + 0.25f - 0.002f), vec3(0.25f, 0.25f, 0.25f), 1.0f));
     cube.friction = float(mu);
-    cube.cor = 0.0f;
-    cube.orientation = slab.orientation;
-    w.Finish();
-    const RigidbodyVolume& c = w.bodies[1];
+    cube.restitution = 0.0f;
+    cube.eulerRadians = slab.eulerRadians;
+    VolumeWorld w(s, {slab, cube});
+    const RigidbodyVolume& c = w.Body(1);
 
     const double reference = kG * (std::sin(theta) - mu * std::cos(theta));
     const long long n1 = StepsFor(0.5, s.dt), n2 = StepsFor(1.5, s.dt);
@@ -234,14 +203,9 @@ Outcome RunIncline(const Settings& s) {
 // ---- stacks: towers of unit cubes (half-size 0.5) placed touching on the ground; max drift after 10 s.
 // The book's friction 0.6 and restitution 0.5 are kept. param = mass of the top box (the others 1 kg).
 Outcome RunStack(const Settings& s, int height, double topMass, double seconds) {
-    VolumeWorld w(s, height + 1);
-    AddGround(&w);
-    for (int i = 0; i < height; ++i) {
-        const float m = i == height - 1 ? float(topMass) : 1.0f;
-        RigidbodyVolume& b = w.Add(RigidbodyType::Box, vec3(0.0f, 0.5f + float(i), 0.0f), m);
-        b.box.size = vec3(0.5f, 0.5f, 0.5f);
-    }
-    w.Finish();
+    std::vector<BodySpec> tower = Tower(height, Undamped(BoxSpec(vec3(), vec3(0.5f, 0.5f, 0.5f), 1.0f)));
+    if (!tower.empty()) tower.back().mass = float(topMass);
+    VolumeWorld w(s, WithGround(Ground(), tower));
     const long long n = StepsFor(seconds, s.dt);
     Outcome o;
     const double t0 = CpuNow();
@@ -258,7 +222,7 @@ Outcome RunStack(const Settings& s, int height, double topMass, double seconds) 
     if (o.stable) o.stable = w.Bounded(100.0f);
     o.steps = i * s.substeps;
     o.simSeconds = double(i) * s.dt;
-    o.error = o.stable ? w.MaxDrift() : kInf;
+    o.error = o.stable ? double(w.MaxDisplacement()) : kInf;
     return o;
 }
 

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "Demos/Scenes/WorldBuilder.h"
 #include "Math/Random.h"
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
@@ -15,21 +16,16 @@ namespace {
 
 std::vector<RigidbodyVolume> RandomBodies(int count, uint32_t seed) {
     MsvcRand rng(seed);
-    std::vector<RigidbodyVolume> bodies;
-    RigidbodyVolume ground(RigidbodyType::Box);
-    ground.box.size = vec3(30, 0.5f, 30);
-    ground.position = vec3(0, -0.5f, 0);
-    ground.mass = 0;
-    bodies.push_back(ground);
+    std::vector<BodySpec> specs = {GroundSpec(vec3(30, 0.5f, 30))};
     for (int i = 0; i < count; ++i) {
-        RigidbodyVolume b(i % 3 == 0 ? RigidbodyType::Sphere : RigidbodyType::Box);
+        BodySpec b;
+        b.shape = i % 3 == 0 ? RigidbodyType::Sphere : RigidbodyType::Box;
         b.position = vec3(rng.Range(-6, 6), rng.Range(0.5f, 12), rng.Range(-6, 6));
-        b.SetEulerOrientation(vec3(rng.Range(-1, 1), rng.Range(-1, 1), rng.Range(-1, 1)));
+        b.eulerRadians = vec3(rng.Range(-1, 1), rng.Range(-1, 1), rng.Range(-1, 1));
         b.mass = i % 10 == 9 ? 0.0f : 1.0f;  // a few static obstacles
-        bodies.push_back(b);
+        specs.push_back(b);
     }
-    for (RigidbodyVolume& b : bodies) b.SynchCollisionVolumes();
-    return bodies;
+    return MakeBodies(specs);
 }
 
 bool Overlap(const RigidbodyVolume& a, const RigidbodyVolume& b) {

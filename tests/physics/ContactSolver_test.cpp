@@ -66,19 +66,13 @@ struct Scene {
 
 /// A 2-D pyramid of unit boxes with `base` boxes in the bottom row, 0.01 m gaps between neighbours.
 void BuildPyramid(Scene* s, int base) {
-    s->bodies.reserve(base * (base + 1) / 2 + 1);
-    s->bodies.push_back(MakeGroundSlab());
-    for (int row = 0; row < base; ++row)
-        for (int i = 0; i < base - row; ++i)
-            s->bodies.push_back(MakeBox(vec3((i - 0.5f * (base - row - 1)) * 2.01f, 1.0f + 2.0f * row, 0)));
+    s->bodies = MakeBodies(WithGround(GroundSlabSpec(), Pyramid(base, BodySpec(), 0.01f)));
     s->Add();
 }
 
 /// A column of `height` unit boxes resting face on face, bottom on the ground.
 void BuildTower(Scene* s, int height) {
-    s->bodies.reserve(height + 1);
-    s->bodies.push_back(MakeGroundSlab());
-    for (int k = 0; k < height; ++k) s->bodies.push_back(MakeBox(vec3(0, 1.0f + 2.0f * k, 0)));
+    s->bodies = MakeBodies(WithGround(GroundSlabSpec(), Tower(height, BodySpec())));
     s->Add();
 }
 
@@ -223,16 +217,9 @@ namespace {
 /// A tilted, offset stack dropped with a sphere on top, then 300 steps with the Accumulated solver.
 std::vector<unsigned char> RunDrop() {
     Scene s(ContactSolver::Accumulated, 10);
-    s.bodies.reserve(7);
-    s.bodies.push_back(MakeGroundSlab());
-    for (int i = 0; i < 5; ++i) {
-        s.bodies.push_back(MakeBox(vec3(0.1f * i, 1.0f + 2.2f * i, 0.05f * i)));
-        s.bodies.back().SetEulerOrientation(vec3(0.1f * i, 0.2f, 0.05f));
-    }
-    RigidbodyVolume ball(RigidbodyType::Sphere);
-    ball.position = vec3(0.5f, 14, 0.2f);
-    ball.SynchCollisionVolumes();
-    s.bodies.push_back(ball);
+    std::vector<BodySpec> specs = WithGround(GroundSlabSpec(), TiltedColumn(5));
+    specs.push_back(SphereSpec(vec3(0.5f, 14, 0.2f)));
+    s.bodies = MakeBodies(specs);
     s.Add();
     s.Run(300);
     return Snapshot(s.bodies);

@@ -14,6 +14,7 @@
 #include "Demos/Scenes/Ch15Scene.h"
 #include "Demos/Scenes/LinearImpulseScene.h"
 #include "Demos/Scenes/MomentumScene.h"
+#include "Demos/Scenes/WorldBuilder.h"
 #include "Physics/Particle.h"
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
@@ -35,14 +36,11 @@ struct Volumes {
     PhysicsSystem system;
     std::vector<RigidbodyVolume> bodies;
     Volumes() { bodies.reserve(16); }
+    /// A sphere of radius `half` or a cube of half extent `half` (WorldBuilder.h).
     RigidbodyVolume& Add(RigidbodyType type, const vec3& position, float mass, float half) {
-        bodies.emplace_back(type);
-        RigidbodyVolume& b = bodies.back();
-        b.position = position;
-        b.mass = mass;
-        b.box.size = vec3(half, half, half);
-        b.sphere.radius = half;
-        return b;
+        bodies.push_back(MakeBody(type == RigidbodyType::Sphere ? SphereSpec(position, half, mass)
+                                                                : BoxSpec(position, vec3(half, half, half), mass)));
+        return bodies.back();
     }
     void Finish() {
         for (RigidbodyVolume& b : bodies) {
@@ -63,9 +61,11 @@ struct Volumes {
 
 /// Ground slab (static) with its top face at height `top`, centred at (x, ., z).
 RigidbodyVolume& AddGround(Volumes* w, float top, float x = 0.0f, float z = 0.0f, float half = 20.0f) {
-    RigidbodyVolume& g = w->Add(RigidbodyType::Box, vec3(x, top - 0.5f, z), 0.0f, 0.5f);
-    g.box.size = vec3(half, 0.5f, half);
-    return g;
+    BodySpec ground = GroundSpec(vec3(half, 0.5f, half), top);
+    ground.position.x = x;
+    ground.position.z = z;
+    w->bodies.push_back(MakeBody(ground));
+    return w->bodies.back();
 }
 
 /// A particle on a ground box (top at y = 0) with the given integrator, dropped from 2 m.

@@ -231,13 +231,9 @@ TEST(PhysicsSystemVolumes, StaticPairsAreNeverTested) {
 namespace {
 
 std::vector<unsigned char> RunStack(int steps, bool guards = true) {
-    std::vector<RigidbodyVolume> bodies;
-    bodies.push_back(MakeGroundSlab());
-    for (int i = 0; i < 4; ++i) {
-        bodies.push_back(MakeBox(vec3(0.1f * i, 1.0f + 2.2f * i, 0.05f * i), vec3(1, 1, 1), 1.0f));
-        bodies.back().SetEulerOrientation(vec3(0.1f * i, 0.2f, 0.05f));
-    }
-    bodies.push_back(MakeSphere(vec3(0.5f, 12, 0.2f), 1.0f, 1.0f));
+    std::vector<BodySpec> specs = WithGround(GroundSlabSpec(), TiltedColumn(4));
+    specs.push_back(SphereSpec(vec3(0.5f, 12, 0.2f)));
+    std::vector<RigidbodyVolume> bodies = MakeBodies(specs);
     PhysicsSystem system;
     if (!guards) {
         system.MaxVolumeSubsteps = 1;
