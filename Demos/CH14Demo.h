@@ -31,7 +31,7 @@ public:
 
 private:
     Ch14Scene scene;
-    int numParticles = 50;
+    int particleCount = Ch14Params().particleCount;
     int integratorIndex = static_cast<int>(Integrator::SemiImplicitEuler);
     float stepDt = 0.0f;  // 0: the host's fixed step
     int seed = 1;
