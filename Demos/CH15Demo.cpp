@@ -39,7 +39,7 @@ void CH15Demo::Update(float dt) {
 void CH15Demo::ImGUI() {
     // The book's panel is 75 high; a non-book contact solver adds its row.
     const bool bookSolver = scene.Params().solver == 0;
-    DrawPanel("Chapter 15 Demo", BookPanel::kHeight + (bookSolver ? 0.0f : BookPanel::kRowHeight));
+    DrawPanel("Chapter 15 Demo", BookPanel::kHeight + (bookSolver ? 0.0f : BookPanel::kSolverRowHeight));
     DemoBase::ImGUI();
 }
 
