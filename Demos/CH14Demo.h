@@ -20,7 +20,7 @@ public:
     /// the host's fixed delta (book: 0.03). The panel's "Simulation delta" averages these steps in ms
     /// (deterministic; the book measured wall-clock time between fixed updates).
     void Update(float dt) override;
-    /// "Chapter 14 Demo" panel at (400,10), size (370,75): delta, particle count slider, Reset, Show Help.
+    /// "Chapter 14 Demo" panel drawn from the table: delta, particle count slider, Reset, Show Help.
     void ImGUI() override;
     /// One "particle" row per particle, in spawn order.
     void CollectState(std::vector<BodyState>* out) const override;

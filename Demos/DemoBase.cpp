@@ -48,16 +48,8 @@ void DemoBase::ImGUI() {
     ImGui::End();
 }
 
-void DemoBase::BeginPanel(const char* title, float height, PanelScrollbar scrollbar) {
-    ImGui::SetNextWindowPos(ImVec2(BookPanel::kDemoX, BookPanel::kTop), ImGuiCond_Once);
-    ImGui::SetNextWindowSize(ImVec2(BookPanel::kWidth, height), ImGuiCond_Always);
-    ImGuiWindowFlags flags = ImGuiWindowFlags_NoResize;
-    if (scrollbar == PanelScrollbar::Hidden) flags |= ImGuiWindowFlags_NoScrollbar;
-    ImGui::Begin(title, nullptr, flags);
-}
-
 void DemoBase::DrawPanel(const char* title, float height, PanelScrollbar scrollbar) const {
-    BeginPanel(title, height, scrollbar);
+    BeginDemoPanel(title, height, scrollbar);
     DrawParameterPanel(params);
     ImGui::End();
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "Application/View/Camera.h"
+#include "Demos/ParameterPanel.h"
 #include "Demos/Scenes/Parameters.h"
 
 /// One row of the --state CSV.
@@ -52,14 +53,7 @@ public:
     bool StateIsFinite(std::string* where) const;
 
 protected:
-    /// Whether a panel may show ImGui's vertical scrollbar.
-    enum class PanelScrollbar { Hidden, Auto };
-    /// Begins a book-style demo panel (docs/book-reference.md §1.7): at BookPanel (400, 10) on its first frame,
-    /// 370 wide and `height` px tall every frame, not resizable. Hidden drops the scrollbar ImGui 1.86 would add
-    /// when framed rows fill the book's 75 px (1.50 showed none); the panels that never had the flag keep Auto.
-    /// Always pair with ImGui::End().
-    static void BeginPanel(const char* title, float height, PanelScrollbar scrollbar = PanelScrollbar::Hidden);
-    /// Begins the panel, draws the parameter table's widgets (DrawParameterPanel) and ends the panel.
+    /// The demo's panel: BeginDemoPanel, the parameter table's widgets (DrawParameterPanel), End.
     void DrawPanel(const char* title, float height, PanelScrollbar scrollbar = PanelScrollbar::Hidden) const;
     /// Appends the book's panel-only "Show Help" button (on the line of the widget before it) to the table.
     void AddShowHelpButton();

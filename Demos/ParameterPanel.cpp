@@ -47,6 +47,14 @@ bool DrawWidget(const Entry& e) {
 
 }  // namespace
 
+void BeginDemoPanel(const char* title, float height, PanelScrollbar scrollbar) {
+    ImGui::SetNextWindowPos(ImVec2(BookPanel::kDemoX, BookPanel::kTop), ImGuiCond_Once);
+    ImGui::SetNextWindowSize(ImVec2(BookPanel::kWidth, height), ImGuiCond_Always);
+    ImGuiWindowFlags flags = ImGuiWindowFlags_NoResize;
+    if (scrollbar == PanelScrollbar::Hidden) flags |= ImGuiWindowFlags_NoScrollbar;
+    ImGui::Begin(title, nullptr, flags);
+}
+
 void DrawParameterPanel(const ParameterSet& params) {
     float pushedWidth = 0.0f;  // the item width pushed for the current run of widgets; 0: none
     for (const Entry& e : params.Entries()) {

@@ -22,6 +22,15 @@ constexpr float kHelpTop = 90.0f;
 constexpr float kListWidth = 350.0f;  ///< the demo list box's item width
 }  // namespace BookPanel
 
+/// Whether a demo panel may show ImGui's vertical scrollbar.
+enum class PanelScrollbar { Hidden, Auto };
+
+/// Begins a book-style demo panel (docs/book-reference.md §1.7): at (kDemoX, kTop) on its first frame,
+/// kWidth wide and `height` px tall every frame, not resizable. Hidden drops the scrollbar ImGui 1.86 adds
+/// when two framed rows fill the book's 75 px (1.50 showed none); the panels that never had the flag
+/// (Chapter 14, the chapter 16 demos) keep Auto. Always pair with ImGui::End().
+void BeginDemoPanel(const char* title, float height, PanelScrollbar scrollbar);
+
 /// Draws the entries of `params` that have a widget, in table order, into the current ImGui window:
 /// SameLine and the caption first, then the widget with its item width (consecutive widgets of one width
 /// share one PushItemWidth, always popped: erratum 5.2-26). A slider or checkbox edit changes the value and

@@ -21,9 +21,7 @@ void DrawSoftDemoPanel(const char* title, const ParameterSet& params, Integrator
     float height = BookPanel::kHeight;
     if (!bookStep) height += BookPanel::kRowHeight;
     if (!monitor.Stable()) height += BookPanel::kRowHeight;
-    ImGui::SetNextWindowPos(ImVec2(BookPanel::kDemoX, BookPanel::kTop), ImGuiCond_Once);
-    ImGui::SetNextWindowSize(ImVec2(BookPanel::kWidth, height), ImGuiCond_Always);
-    ImGui::Begin(title, nullptr, ImGuiWindowFlags_NoResize);
+    BeginDemoPanel(title, height, PanelScrollbar::Auto);
     DrawParameterPanel(params);
     if (!bookStep) ImGui::Text("integrator %s, dt %s s", params.Get("integrator").c_str(), params.Get("dt").c_str());
     if (!monitor.Stable()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", monitor.Report().message.c_str());
