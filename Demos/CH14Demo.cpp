@@ -7,6 +7,7 @@
 #include "Application/Render/FixedFunctionPhysics.h"
 #include "Application/Render/FixedFunctionPrimitives.h"
 #include "Demos/ParameterPanel.h"
+#include "Demos/Scenes/SoftSceneCommon.h"
 
 namespace {
 const vec3 kLight{0.0f, 1.0f, 0.0f};  // CH14's Render: straight down
@@ -38,7 +39,7 @@ CH14Demo::CH14Demo() {
     for (Integrator i : kAllIntegrators) ids.push_back(ToString(i));
     params.AddChoice("integrator", &integratorIndex, ids, "particle integrator (book: euler)",
                      [this] { scene.SetIntegrator(kAllIntegrators[integratorIndex]); });
-    params.AddFloat("dt", &stepDt, 0.0f, 0.1f, "physics step in s; 0 = the host's fixed step (book: 0.03)",
+    params.AddFloat("dt", &stepDt, 0.0f, kMaxSceneDt, "physics step in s; 0 = the host's fixed step (book: 0.03)",
                     [this] { scene.SetDt(stepDt); });
     params.AddInt("seed", &seed, 0, 2147483647, "MSVC rand() seed of the spawns (book: 1); on reset", resetIfFresh);
     AddShowHelpButton();

@@ -9,8 +9,9 @@
 
 class CH14Demo : public DemoBase {
 public:
-    /// Registers the panel and model parameters: particles (1..300, on Reset as the book), reset, integrator,
-    /// dt, seed. particles and seed set before the first step rebuild at once (so --set applies).
+    /// Registers the demo's table: the panel (delta row, particles applied on Reset as the book, Reset, Show
+    /// Help) and the model keys integrator, dt, seed. particles and seed set before the first step rebuild at
+    /// once (so --set applies).
     CH14Demo();
     /// Book camera preset, lighting on, light (0.5, 1, -1.5, 0) until the first Render, scene built.
     void Initialize(int width, int height) override;
@@ -32,8 +33,8 @@ public:
 private:
     Ch14Scene scene;
     int particleCount = Ch14Params().particleCount;
-    int integratorIndex = static_cast<int>(Integrator::SemiImplicitEuler);
-    float stepDt = 0.0f;  // 0: the host's fixed step
-    int seed = 1;
+    int integratorIndex = static_cast<int>(Ch14Params().integrator);  // index into kAllIntegrators
+    float stepDt = 0.0f;                                              // 0: the host's fixed step
+    int seed = static_cast<int>(Ch14Params().seed);
     std::deque<float> deltas;  // the last 120 fixed deltas (ms), as the book's deque
 };

@@ -14,7 +14,7 @@
 
 /// The demo's panel and model values (--set particles=, integrator=, dt=, seed=).
 struct Ch14Params {
-    int particleCount = 50;  ///< the book's numParticles; the panel allows 1..300, the benchmark more
+    int particleCount = 50;  ///< the book's numParticles (the panel's range is CH14Demo's table; benchmarks go beyond)
     Integrator integrator = Integrator::SemiImplicitEuler;  ///< the book's shipped integrator
     float dt = kBookStep;                                   ///< s per step
     std::uint32_t seed = 1;                                 ///< MsvcRand seed; the book never seeds (1)
