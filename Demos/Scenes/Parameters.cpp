@@ -64,6 +64,14 @@ std::string RangeText(const ParameterSet::Entry& e) {
     return s.str();
 }
 
+/// What the panel calls the entry: its label, or for a hidden "##id" label the caption before it; "" if none.
+std::string PanelName(const ParameterSet::Entry& e) {
+    const ParameterSet::Widget& w = e.widget;
+    if (w.type == ParameterSet::Widget::Type::None) return "";
+    if (!w.label.empty() && w.label.compare(0, 2, "##") != 0) return w.label;
+    return w.caption;
+}
+
 }  // namespace
 
 using Widget = ParameterSet::Widget;
@@ -279,8 +287,10 @@ std::string ParameterSet::Describe() const {
         if (e.key.empty()) continue;
         s << "  " << e.key << " = " << (e.kind == Kind::Action ? "-" : Get(e.key)) << "  [" << RangeText(e) << "]  "
           << e.help;
-        for (size_t i = 0; i < e.aliases.size(); ++i) s << (i ? ", " : " (also: ") << e.aliases[i];
-        s << (e.aliases.empty() ? "" : ")") << "\n";
+        std::string notes;
+        for (size_t i = 0; i < e.aliases.size(); ++i) notes += (i ? ", " : "also: ") + e.aliases[i];
+        if (!PanelName(e).empty()) notes += (notes.empty() ? "" : "; ") + std::string("panel \"") + PanelName(e) + "\"";
+        s << (notes.empty() ? "" : " (" + notes + ")") << "\n";
     }
     return s.str();
 }

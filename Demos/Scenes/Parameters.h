@@ -84,7 +84,7 @@ public:
     const Entry* Find(const std::string& key) const;
     /// Every entry in table (= panel) order, panel-only ones included.
     const std::vector<Entry>& Entries() const { return entries; }
-    /// One line per key: "key = current  [range/choices]  help (also: aliases)".
+    /// One line per key: `key = current  [range/choices]  help (also: aliases; panel "label")`.
     std::string Describe() const;
     std::string Keys() const;  ///< comma-separated `--set` keys
 

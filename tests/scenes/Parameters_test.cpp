@@ -161,6 +161,11 @@ TEST(ParameterSet, AliasesSetTheSameValueAndAreListed) {
     EXPECT_EQ(set.Keys(), "spring-damping");
     EXPECT_NE(set.Describe().find("spring-damping = 0.5"), std::string::npos) << set.Describe();
     EXPECT_NE(set.Describe().find("(also: damping, d)"), std::string::npos) << set.Describe();
+    int count = 50, iterations = 8;
+    set.AddInt("count", &count, 2, 100, "").OnPanel(ParameterSet::Widget::Slider("##count").Caption("Particle count"));
+    set.AddInt("iterations", &iterations, 1, 20, "").Alias("it").OnPanel(ParameterSet::Widget::Slider("Iteration"));
+    EXPECT_NE(set.Describe().find("(panel \"Particle count\")"), std::string::npos) << set.Describe();
+    EXPECT_NE(set.Describe().find("(also: it; panel \"Iteration\")"), std::string::npos) << set.Describe();
 }
 
 TEST(ParameterSet, PanelOnlyEntriesAreNotKeys) {
