@@ -19,8 +19,8 @@
 struct Ch16Params {
     int particlesPerSide = 15;     ///< cloth particles per side (book num_part, "Count"; the cloth clamps to >= 3)
     float particleSpacing = 0.2f;  ///< m between neighbouring particles (book part_dist, "Distance")
-    float springK = -3.0f;         ///< book k of structural, shear and bend springs, m/s per step per m ("Spring k")
-    float springDamping = 0.0f;    ///< book spring damping d, m/s per step per m/s (no widget in the book)
+    float springK = -3.0f;         ///< book k of every cloth spring: N/m x 0.03 s ("Spring k")
+    float springDamping = 0.0f;    ///< book spring damping d: N s/m x 0.03 s (no widget in the book)
     Integrator integrator = Integrator::SemiImplicitEuler;
     float dt = kBookStep;  ///< s per fixed step
 };

@@ -18,8 +18,8 @@
 /// the scene converts them with FromBookSpringConstant so the motion matches the book at any dt (docs/ERRATA.md,
 /// Chapter 16). Ranges and labels are in AddParameters, the one table.
 struct SpringsParams {
-    float springK = -2.0f;       ///< book k, m/s per step per m of stretch (negative attracts; panel "k")
-    float springDamping = 0.5f;  ///< book damping b, m/s per step per m/s of stretch speed (panel "b")
+    float springK = -2.0f;       ///< book k: N/m x 0.03 s, negative attracts (panel "k")
+    float springDamping = 0.5f;  ///< book damping b: N s/m x 0.03 s (panel "b")
     float restLength = 1.0f;     ///< m (panel "l")
     Integrator integrator = Integrator::SemiImplicitEuler;
     float dt = kBookStep;  ///< s per fixed step
