@@ -1,12 +1,13 @@
 #include "Demos/CH14Demo.h"
 
-#include <imgui.h>
-
+#include <cstdio>
 #include <string>
 #include <vector>
 
 #include "Application/Render/FixedFunctionPhysics.h"
 #include "Application/Render/FixedFunctionPrimitives.h"
+#include "Demos/ParameterPanel.h"
+#include "Demos/Scenes/SoftSceneCommon.h"
 
 namespace {
 const vec3 kLight{0.0f, 1.0f, 0.0f};  // CH14's Render: straight down
@@ -14,24 +15,39 @@ constexpr std::size_t kDeltaHistory = 120;
 }  // namespace
 
 CH14Demo::CH14Demo() {
+    // The panel (docs/book-reference.md §2.1): the delta row, "Particle count" with a 100 px slider, Reset,
+    // Show Help; then the model's --set keys.
+    using Widget = ParameterSet::Widget;
     auto resetIfFresh = [this] {
         if (scene.System().StepCount() == 0) ResetDemo();
     };
-    params.AddInt("particles", &numParticles, 1, 300, "particle count; takes effect on reset (book)", resetIfFresh);
-    params.AddAction(
-        "reset", [this] { ResetDemo(); }, "respawn the particles (the panel's Reset button)");
+    params.AddPanelText([this] {
+        float average = 0.0f;
+        for (float d : deltas) average += d;
+        if (!deltas.empty()) average /= static_cast<float>(deltas.size());
+        char row[64];
+        std::snprintf(row, sizeof row, "Simulation delta: %.3f ms/frame", static_cast<double>(average));
+        return std::string(row);
+    });
+    params.AddInt("particles", &particleCount, 1, 300, "particle count; takes effect on reset (book)", resetIfFresh)
+        .OnPanel(Widget::Slider("##particles").Width(100.0f).Caption("Particle count"));  // erratum 5.2-26: "" clashes
+    params
+        .AddAction(
+            "reset", [this] { ResetDemo(); }, "respawn the particles (the panel's Reset button)")
+        .OnPanel(Widget::Button("Reset").SameLine());
     std::vector<std::string> ids;
     for (Integrator i : kAllIntegrators) ids.push_back(ToString(i));
     params.AddChoice("integrator", &integratorIndex, ids, "particle integrator (book: euler)",
                      [this] { scene.SetIntegrator(kAllIntegrators[integratorIndex]); });
-    params.AddFloat("dt", &stepDt, 0.0f, 0.1f, "physics step in s; 0 = the host's fixed step (book: 0.03)",
+    params.AddFloat("dt", &stepDt, 0.0f, kMaxSceneDt, "physics step in s; 0 = the host's fixed step (book: 0.03)",
                     [this] { scene.SetDt(stepDt); });
     params.AddInt("seed", &seed, 0, 2147483647, "MSVC rand() seed of the spawns (book: 1); on reset", resetIfFresh);
+    AddShowHelpButton();
 }
 
 void CH14Demo::ResetDemo() {
     Ch14Params p;
-    p.particles = numParticles;
+    p.particleCount = particleCount;
     p.integrator = kAllIntegrators[integratorIndex];
     p.dt = stepDt > 0.0f ? stepDt : Ch14Params().dt;
     p.seed = static_cast<std::uint32_t>(seed);
@@ -60,24 +76,7 @@ void CH14Demo::Render() {
 }
 
 void CH14Demo::ImGUI() {
-    float average = 0.0f;
-    for (float d : deltas) average += d;
-    if (!deltas.empty()) average /= static_cast<float>(deltas.size());
-
-    ImGui::SetNextWindowPos(ImVec2(400.0f, 10.0f), ImGuiCond_Once);
-    ImGui::SetNextWindowSize(ImVec2(370.0f, 75.0f), ImGuiCond_Always);
-    ImGui::Begin("Chapter 14 Demo", nullptr, ImGuiWindowFlags_NoResize);
-    ImGui::Text("Simulation delta: %.3f ms/frame", average);
-    ImGui::Text("Particle count");
-    ImGui::SameLine();
-    ImGui::PushItemWidth(100.0f);
-    ImGui::SliderInt("##particles", &numParticles, 1, 300);  // book label "" (erratum 5.2-26: ID clash)
-    ImGui::PopItemWidth();                                   // erratum 5.2-26: the book never pops it
-    ImGui::SameLine();
-    if (ImGui::Button("Reset")) ResetDemo();
-    ImGui::SameLine();
-    if (ImGui::Button("Show Help")) show_help = true;
-    ImGui::End();
+    DrawPanel("Chapter 14 Demo", BookPanel::kHeight, PanelScrollbar::Auto);
     DemoBase::ImGUI();
 }
 

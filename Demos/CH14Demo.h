@@ -9,8 +9,9 @@
 
 class CH14Demo : public DemoBase {
 public:
-    /// Registers the panel and model parameters: particles (1..300, on Reset as the book), reset, integrator,
-    /// dt, seed. particles and seed set before the first step rebuild at once (so --set applies).
+    /// Registers the demo's table: the panel (delta row, particles applied on Reset as the book, Reset, Show
+    /// Help) and the model keys integrator, dt, seed. particles and seed set before the first step rebuild at
+    /// once (so --set applies).
     CH14Demo();
     /// Book camera preset, lighting on, light (0.5, 1, -1.5, 0) until the first Render, scene built.
     void Initialize(int width, int height) override;
@@ -20,7 +21,7 @@ public:
     /// the host's fixed delta (book: 0.03). The panel's "Simulation delta" averages these steps in ms
     /// (deterministic; the book measured wall-clock time between fixed updates).
     void Update(float dt) override;
-    /// "Chapter 14 Demo" panel at (400,10), size (370,75): delta, particle count slider, Reset, Show Help.
+    /// "Chapter 14 Demo" panel drawn from the table: delta, particle count slider, Reset, Show Help.
     void ImGUI() override;
     /// One "particle" row per particle, in spawn order.
     void CollectState(std::vector<BodyState>* out) const override;
@@ -31,9 +32,9 @@ public:
 
 private:
     Ch14Scene scene;
-    int numParticles = 50;
-    int integratorIndex = static_cast<int>(Integrator::SemiImplicitEuler);
-    float stepDt = 0.0f;  // 0: the host's fixed step
-    int seed = 1;
+    int particleCount = Ch14Params().particleCount;
+    int integratorIndex = static_cast<int>(Ch14Params().integrator);  // index into kAllIntegrators
+    float stepDt = 0.0f;                                              // 0: the host's fixed step
+    int seed = static_cast<int>(Ch14Params().seed);
     std::deque<float> deltas;  // the last 120 fixed deltas (ms), as the book's deque
 };

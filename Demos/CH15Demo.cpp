@@ -1,12 +1,21 @@
 #include "Demos/CH15Demo.h"
 
 #include <glad/gl.h>
-#include <imgui.h>
+
+#include <string>
 
 #include "Application/Render/FixedFunctionPhysics.h"
 #include "Application/Render/FixedFunctionPrimitives.h"
+#include "Demos/ParameterPanel.h"
 
-CH15Demo::CH15Demo() { scene.AddParameters(&params); }
+CH15Demo::CH15Demo() {
+    scene.AddParameters(&params);
+    // Not a book row: the panel shows a non-book contact solver in effect.
+    params.AddPanelText([this] {
+        return scene.Params().solver == 0 ? std::string()
+                                          : std::string("Contact solver: ") + ToString(ContactSolver::Accumulated);
+    });
+}
 
 void CH15Demo::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
@@ -28,29 +37,9 @@ void CH15Demo::Update(float dt) {
 }
 
 void CH15Demo::ImGUI() {
-    // book.md 2.5; the book's PushItemWidth calls are popped here (erratum 5.2-26).
-    Ch15Params& p = scene.Params();
-    // The book's panel is 75 high; a non-book contact solver adds a row so the panel shows the model in effect.
-    const bool bookSolver = p.solver == 0;
-    BeginPanel("Chapter 15 Demo", bookSolver ? 75.0f : 95.0f);
-    ImGui::PushItemWidth(55.0f);
-    ImGui::SliderFloat("Porjection", &p.projection, 0.2f, 0.8f);
-    ImGui::PopItemWidth();
-    ImGui::SameLine();
-    ImGui::PushItemWidth(55.0f);
-    ImGui::SliderFloat("Slop", &p.slop, 0.01f, 0.1f);
-    ImGui::PopItemWidth();
-    ImGui::SameLine();
-    ImGui::PushItemWidth(55.0f);
-    ImGui::SliderInt("Iteration", &p.iterations, 1, 20);
-    ImGui::PopItemWidth();
-    if (ImGui::Button("Reset")) scene.Reset();
-    ImGui::SameLine();
-    ImGui::Checkbox("Debug Render", &p.debug);
-    ImGui::SameLine();
-    ImGui::Checkbox("Linear Projection", &p.linearProjection);
-    if (!bookSolver) ImGui::Text("Contact solver: %s", ToString(ContactSolver::Accumulated));
-    ImGui::End();
+    // The book's panel is 75 high; a non-book contact solver adds its row.
+    const bool bookSolver = scene.Params().solver == 0;
+    DrawPanel("Chapter 15 Demo", BookPanel::kHeight + (bookSolver ? 0.0f : BookPanel::kSolverRowHeight));
     DemoBase::ImGUI();
 }
 

@@ -6,7 +6,7 @@
 
 class CH15Demo : public DemoBase {
 public:
-    /// Registers the panel values (projection, slop, iterations, linear-projection, debug, reset).
+    /// Registers the scene's table and the contact-solver text row.
     CH15Demo();
     /// Camera target (3.75622, 2.98255, 0), zoom 12, rotation (-67.9312, 19.8); point size 5; the scene.
     void Initialize(int width, int height) override;
@@ -14,7 +14,8 @@ public:
     void Render() override;
     /// Camera, then one physics step of dt.
     void Update(float dt) override;
-    /// "Chapter 15 Demo": Porjection / Slop / Iteration sliders, Reset, Debug Render, Linear Projection.
+    /// "Chapter 15 Demo" from the table: Porjection / Slop / Iteration sliders, Reset, Debug Render, Linear
+    /// Projection; a non-book contact solver adds its row.
     void ImGUI() override;
     /// One "box" row per body.
     void CollectState(std::vector<BodyState>* out) const override;

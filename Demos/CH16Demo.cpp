@@ -1,7 +1,5 @@
 #include "Demos/CH16Demo.h"
 
-#include <imgui.h>
-
 #include "Application/Render/FixedFunctionPhysics.h"
 #include "Application/Render/FixedFunctionPrimitives.h"
 #include "Demos/SoftDemoPanel.h"
@@ -33,20 +31,8 @@ void CH16Demo::Render() {
 }
 
 void CH16Demo::ImGUI() {
-    Ch16Params& p = scene.Params();
-    BeginSoftPanel("Chapter 16 Demo", p.integrator, p.dt, scene.Monitor());
-    ImGui::PushItemWidth(50.0f);
-    ImGui::SliderInt("Count", &p.count, 5, 30);
-    ImGui::SameLine();
-    ImGui::SliderFloat("Distance", &p.distance, 0.1f, 1.0f);
-    ImGui::SameLine();
-    ImGui::SliderFloat("Spring k", &p.k, -5.0f, 0.0f);
-    ImGui::PopItemWidth();  // erratum 5.2-26: the book never pops it
-    if (ImGui::Button("Reset")) {
-        scene.Reset();
-        reported = false;
-    }
-    EndSoftPanel(params, scene.Monitor());
+    const Ch16Params& p = scene.Params();
+    DrawSoftDemoPanel("Chapter 16 Demo", params, p.integrator, p.dt, scene.Monitor());
     DemoBase::ImGUI();
 }
 

@@ -7,7 +7,7 @@
 
 class CH16Demo : public DemoBase {
 public:
-    /// Registers count, distance, k, damping, reset, integrator and dt (--set resets the scene).
+    /// Registers the scene's table: count, distance, k, spring-damping, reset, integrator, dt (--set resets).
     CH16Demo();
     /// Book camera preset (CH14's), lighting on, scene rebuilt from the current values.
     void Initialize(int width, int height) override;
@@ -16,7 +16,7 @@ public:
     void Render() override;
     /// Camera, then the scene's steps due after dt; stops and prints the report once the monitor fails.
     void Update(float dt) override;
-    /// "Chapter 16 Demo" panel at (400,10), size (370,75): Count, Distance, Spring k (width 50), Reset.
+    /// "Chapter 16 Demo" panel (DrawSoftDemoPanel) from the table: Count, Distance, Spring k (width 50), Reset.
     void ImGUI() override;
     /// One "cloth-particle" row per cloth particle, index z*N + x.
     void CollectState(std::vector<BodyState>* out) const override;

@@ -1,22 +1,16 @@
 #include "Demos/CollisionFeature.h"
 
 #include <glad/gl.h>
-#include <imgui.h>
 
 #include "Application/Render/FixedFunctionPrimitives.h"
+#include "Demos/ParameterPanel.h"
 
 namespace {
 const vec3 kLightDirection{0.5f, 1.0f, -1.5f};
 const vec3 kLightColor{0.0f, 0.0f, 0.5f};  // ambient and diffuse (book.md 2.2)
 }  // namespace
 
-CollisionFeature::CollisionFeature() {
-    params.AddBool("script", &p.script, "move and turn the shapes along a scripted path (0: the book's static start)");
-    params.AddFloat("speed", &p.speed, 0.0f, 8.0f, "approach cycles per 240 output frames");
-    params.AddChoice("gizmo", &p.gizmo, {"translate", "rotate", "scale"},
-                     "the panel's gizmo operation (shown only: there is no gizmo headless)");
-    params.AddChoice("space", &p.space, {"local", "world"}, "the panel's gizmo space (shown only)");
-}
+CollisionFeature::CollisionFeature() { AddCollisionFeatureParameters(&params, &p); }
 
 void CollisionFeature::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
@@ -67,15 +61,6 @@ void CollisionFeature::Render() {
 }
 
 void CollisionFeature::ImGUI() {
-    BeginPanel("SAT Test Demo");
-    ImGui::RadioButton("Translate", &p.gizmo, 0);
-    ImGui::SameLine();
-    ImGui::RadioButton("Rotate", &p.gizmo, 1);
-    ImGui::SameLine();
-    ImGui::RadioButton("Scale", &p.gizmo, 2);
-    ImGui::RadioButton("Local", &p.space, 0);
-    ImGui::SameLine();
-    ImGui::RadioButton("World", &p.space, 1);
-    ImGui::End();
+    DrawPanel("SAT Test Demo", BookPanel::kHeight);
     DemoBase::ImGUI();
 }

@@ -1,10 +1,10 @@
 #include "Demos/ConservationOfMomentum.h"
 
 #include <glad/gl.h>
-#include <imgui.h>
 
 #include "Application/Render/FixedFunctionPhysics.h"
 #include "Application/Render/FixedFunctionPrimitives.h"
+#include "Demos/ParameterPanel.h"
 
 ConservationOfMomentum::ConservationOfMomentum() { scene.AddParameters(&params); }
 
@@ -29,9 +29,7 @@ void ConservationOfMomentum::Update(float dt) {
 }
 
 void ConservationOfMomentum::ImGUI() {
-    BeginPanel("Conservation Demo", 100.0f);
-    if (ImGui::Button("Reset")) scene.Reset();
-    ImGui::End();
+    DrawPanel("Conservation Demo", BookPanel::kTallHeight);
     DemoBase::ImGUI();
 }
 

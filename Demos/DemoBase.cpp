@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "Application/Render/FixedFunctionPrimitives.h"
+#include "Demos/ParameterPanel.h"
 
 DemoBase::DemoBase() = default;
 
@@ -35,8 +36,8 @@ void DemoBase::Update(float dt) {
 void DemoBase::ImGUI() {
     if (!show_help) return;
     if (configHelpWindow) {
-        ImGui::SetNextWindowPos(ImVec2(400.0f, 90.0f));
-        ImGui::SetNextWindowSize(ImVec2(370.0f, 100.0f));
+        ImGui::SetNextWindowPos(ImVec2(BookPanel::kDemoX, BookPanel::kHelpTop));
+        ImGui::SetNextWindowSize(ImVec2(BookPanel::kWidth, BookPanel::kTallHeight));
         configHelpWindow = false;
     }
     ImGui::Begin("How to use", &show_help, ImGuiWindowFlags_NoResize);
@@ -47,10 +48,14 @@ void DemoBase::ImGUI() {
     ImGui::End();
 }
 
-void DemoBase::BeginPanel(const char* title, float height) {
-    ImGui::SetNextWindowPos(ImVec2(400.0f, 10.0f), ImGuiCond_Once);
-    ImGui::SetNextWindowSize(ImVec2(370.0f, height), ImGuiCond_Always);
-    ImGui::Begin(title, nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoScrollbar);
+void DemoBase::DrawPanel(const char* title, float height, PanelScrollbar scrollbar) const {
+    BeginDemoPanel(title, height, scrollbar);
+    DrawParameterPanel(params);
+    ImGui::End();
+}
+
+void DemoBase::AddShowHelpButton() {
+    params.AddPanelButton(ParameterSet::Widget::Button("Show Help").SameLine(), [this] { show_help = true; });
 }
 
 void DemoBase::UseBookCamera(float zoom) {

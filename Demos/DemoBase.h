@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "Application/View/Camera.h"
+#include "Demos/ParameterPanel.h"
 #include "Demos/Scenes/Parameters.h"
 
 /// One row of the --state CSV.
@@ -52,10 +53,10 @@ public:
     bool StateIsFinite(std::string* where) const;
 
 protected:
-    /// Begins a book-style demo panel (book.md 1.7): at (400, 10) on its first frame, 370 wide and `height`
-    /// tall every frame, not resizable, and without the scrollbar ImGui 1.86 would add when the rows fill
-    /// the book's 75-pixel height (1.50 showed none). Always pair with ImGui::End().
-    static void BeginPanel(const char* title, float height = 75.0f);
+    /// The demo's panel: BeginDemoPanel, the parameter table's widgets (DrawParameterPanel), End.
+    void DrawPanel(const char* title, float height, PanelScrollbar scrollbar = PanelScrollbar::Hidden) const;
+    /// Appends the book's panel-only "Show Help" button (on the line of the widget before it) to the table.
+    void AddShowHelpButton();
     /// The book's chapter 14-16 camera preset (book.md 1.4): target (3.75622, 2.98255, 0), rotation
     /// (-67.9312, 19.8) degrees, and `zoom` (9 in most demos; 12 in CH15 and Conservation Of Momentum).
     void UseBookCamera(float zoom);

@@ -1,12 +1,13 @@
 #include "Demos/JointDemo.h"
 
-#include <imgui.h>
-
 #include "Application/Render/FixedFunctionPhysics.h"
 #include "Application/Render/FixedFunctionPrimitives.h"
 #include "Demos/SoftDemoPanel.h"
 
-JointDemo::JointDemo() : scene(JointParams(), &rng) { scene.AddParameters(&params); }
+JointDemo::JointDemo() : scene(JointParams(), &rng) {
+    scene.AddParameters(&params);
+    AddShowHelpButton();
+}
 
 void JointDemo::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
@@ -31,21 +32,8 @@ void JointDemo::Render() {
 }
 
 void JointDemo::ImGUI() {
-    JointParams& p = scene.Params();
-    BeginSoftPanel("Joint Demo", p.integrator, p.dt, scene.Monitor());
-    ImGui::Text("Particle count");
-    ImGui::SameLine();
-    ImGui::PushItemWidth(100.0f);
-    ImGui::SliderInt("##count", &p.numParticles, 2, 100);  // book label "" (erratum 5.2-26: ID clash)
-    ImGui::PopItemWidth();                                 // erratum 5.2-26: the book never pops it
-    ImGui::SameLine();
-    if (ImGui::Button("Reset")) {
-        scene.Reset();
-        reported = false;
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Show Help")) show_help = true;
-    EndSoftPanel(params, scene.Monitor());
+    const JointParams& p = scene.Params();
+    DrawSoftDemoPanel("Joint Demo", params, p.integrator, p.dt, scene.Monitor());
     DemoBase::ImGUI();
 }
 

@@ -8,7 +8,7 @@
 
 class JointDemo : public DemoBase {
 public:
-    /// Registers count, reset, integrator and dt (--set resets the scene).
+    /// Registers the scene's table (particles, reset, integrator, dt; --set resets) and Show Help.
     JointDemo();
     /// Book camera preset (CH14's), lighting on, scene rebuilt from the current values.
     void Initialize(int width, int height) override;
@@ -16,7 +16,7 @@ public:
     void Render() override;
     /// Camera, then the scene's steps due after dt with the y >= -5 clamp; stops and reports on a blow-up.
     void Update(float dt) override;
-    /// "Joint Demo" panel at (400,10), size (370,75): particle count slider, Reset, Show Help.
+    /// "Joint Demo" panel (DrawSoftDemoPanel) from the table: particle count slider, Reset, Show Help.
     void ImGUI() override;
     /// One "particle" row per particle, in spawn order.
     void CollectState(std::vector<BodyState>* out) const override;

@@ -1,10 +1,10 @@
 #include "Demos/LinearImpulse.h"
 
 #include <glad/gl.h>
-#include <imgui.h>
 
 #include "Application/Render/FixedFunctionPhysics.h"
 #include "Application/Render/FixedFunctionPrimitives.h"
+#include "Demos/ParameterPanel.h"
 
 LinearImpulse::LinearImpulse() { scene.AddParameters(&params); }
 
@@ -28,22 +28,7 @@ void LinearImpulse::Update(float dt) {
 }
 
 void LinearImpulse::ImGUI() {
-    // book.md 2.3; the PushItemWidth is popped here (erratum 5.2-26).
-    LinearImpulseParams& p = scene.Params();
-    BeginPanel("Linear Impulse Demo", 100.0f);
-    if (ImGui::Button("Step")) scene.RequestSteps();
-    ImGui::SameLine();
-    ImGui::PushItemWidth(100.0f);
-    if (ImGui::InputInt("Frames", &p.frames) && p.frames < 1) p.frames = 1;
-    ImGui::PopItemWidth();
-    ImGui::SameLine();
-    if (ImGui::Button("Reset")) scene.Reset();
-    ImGui::SameLine();
-    ImGui::Checkbox("Pause", &p.pause);
-    if (ImGui::Checkbox("Spheres", &p.spheres)) scene.Reset();
-    ImGui::SameLine();
-    if (ImGui::Checkbox("Drop", &p.drop)) scene.Reset();
-    ImGui::End();
+    DrawPanel("Linear Impulse Demo", BookPanel::kTallHeight);
     DemoBase::ImGUI();
 }
 

@@ -1,11 +1,11 @@
 #include "Demos/RaycastDemo.h"
 
 #include <glad/gl.h>
-#include <imgui.h>
 
 #include <cstdio>
 
 #include "Application/Render/FixedFunctionPrimitives.h"
+#include "Demos/ParameterPanel.h"
 
 #ifndef PSB_DEMO_ASSET_DIR
 #define PSB_DEMO_ASSET_DIR "Demos/assets"
@@ -38,8 +38,14 @@ const char* ShapeName(RaycastScene::Shape s) {
 
 RaycastDemo::RaycastDemo() {
     ResetRaycastResult(&hit);
-    params.AddBool("script", &p.script, "sweep a scripted pick ray across the screen (0: no pick, as before a click)");
-    params.AddFloat("speed", &p.speed, 0.0f, 8.0f, "sweeps per 240 output frames");
+    AddRaycastParameters(&params, &p);
+    // Not a book row: the current hit, or why there is none.
+    params.AddPanelText([this] {
+        if (!(picking && hit.hit)) return "No hit; " + modelStatus;
+        char row[64];
+        std::snprintf(row, sizeof row, "Hit %s at t = %.3f", ShapeName(hitShape), static_cast<double>(hit.t));
+        return std::string(row);
+    });
 }
 
 void RaycastDemo::Initialize(int width, int height) {
@@ -98,16 +104,6 @@ void RaycastDemo::Render() {
 }
 
 void RaycastDemo::ImGUI() {
-    BeginPanel("Raycast Demo");
-    ImGui::Checkbox("Scripted pick", &p.script);
-    ImGui::SameLine();
-    ImGui::PushItemWidth(100.0f);
-    ImGui::SliderFloat("Speed", &p.speed, 0.0f, 8.0f, "%.2f");
-    ImGui::PopItemWidth();
-    if (picking && hit.hit)
-        ImGui::Text("Hit %s at t = %.3f", ShapeName(hitShape), static_cast<double>(hit.t));
-    else
-        ImGui::Text("No hit; %s", modelStatus.c_str());
-    ImGui::End();
+    DrawPanel("Raycast Demo", BookPanel::kHeight);
     DemoBase::ImGUI();
 }

@@ -1,12 +1,13 @@
 #include "Demos/SimpleSprings.h"
 
-#include <imgui.h>
-
 #include "Application/Render/FixedFunctionPhysics.h"
 #include "Application/Render/FixedFunctionPrimitives.h"
 #include "Demos/SoftDemoPanel.h"
 
-SimpleSprings::SimpleSprings() { scene.AddParameters(&params); }
+SimpleSprings::SimpleSprings() {
+    scene.AddParameters(&params);
+    AddShowHelpButton();
+}
 
 void SimpleSprings::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
@@ -28,22 +29,8 @@ void SimpleSprings::Render() {
 }
 
 void SimpleSprings::ImGUI() {
-    SpringsParams& p = scene.Params();
-    BeginSoftPanel("Simple Springs Demo", scene.Params().integrator, p.dt, scene.Monitor());
-    ImGui::PushItemWidth(100.0f);
-    ImGui::SliderFloat("k", &p.k, -5.0f, 0.0f);
-    ImGui::SameLine();
-    ImGui::SliderFloat("b", &p.b, 0.0f, 1.0f);
-    ImGui::SameLine();
-    ImGui::SliderFloat("l", &p.restLength, 0.0f, 5.0f);
-    ImGui::PopItemWidth();  // erratum 5.2-26: the book never pops it
-    if (ImGui::Button("Reset")) {
-        scene.Reset();
-        reported = false;
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Show Help")) show_help = true;
-    EndSoftPanel(params, scene.Monitor());
+    const SpringsParams& p = scene.Params();
+    DrawSoftDemoPanel("Simple Springs Demo", params, p.integrator, p.dt, scene.Monitor());
     DemoBase::ImGUI();
 }
 

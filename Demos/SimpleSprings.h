@@ -7,7 +7,8 @@
 
 class SimpleSprings : public DemoBase {
 public:
-    /// Registers k, b, l, reset, integrator and dt (--set resets the scene; the sliders wait for Reset).
+    /// Registers the scene's table (k, spring-damping, rest-length, reset, integrator, dt; --set resets the
+    /// scene, the sliders wait for Reset) and the Show Help button.
     SimpleSprings();
     /// Book camera preset (CH14's), lighting on, scene rebuilt from the current values.
     void Initialize(int width, int height) override;
@@ -16,7 +17,7 @@ public:
     /// Camera, then the scene's steps due after dt (one 0.03 s step per 0.03 s by default) with the y >= -5
     /// clamp; stops and prints the report to stderr once the stability monitor fails.
     void Update(float dt) override;
-    /// "Simple Springs Demo" panel at (400,10), size (370,75): k, b, l sliders, Reset, Show Help.
+    /// "Simple Springs Demo" panel (DrawSoftDemoPanel) from the table: k, b, l sliders, Reset, Show Help.
     void ImGUI() override;
     /// One "particle" row per particle: 0 heavy, 1 light.
     void CollectState(std::vector<BodyState>* out) const override;

@@ -6,35 +6,34 @@
 
 #include "Application/Render/FixedFunctionPhysics.h"
 #include "Application/Render/FixedFunctionPrimitives.h"
+#include "Demos/ParameterPanel.h"
+#include "Demos/Scenes/BookConstants.h"
 
 namespace {
-constexpr float kBookDt = 0.03f;
-constexpr float kRowHeight = 21.0f;  // one ImGui text row at the default font
 bool StepIsBook(Integrator integrator, float dt) {
-    return integrator == Integrator::SemiImplicitEuler && dt == kBookDt;
+    return integrator == Integrator::SemiImplicitEuler && dt == kBookStep;
 }
 }  // namespace
 
-void BeginSoftPanel(const char* title, Integrator integrator, float dt, const StabilityMonitor& monitor) {
-    float height = 75.0f;
-    if (!StepIsBook(integrator, dt)) height += kRowHeight;
-    if (!monitor.Stable()) height += kRowHeight;
-    ImGui::SetNextWindowPos(ImVec2(400.0f, 10.0f), ImGuiCond_Once);
-    ImGui::SetNextWindowSize(ImVec2(370.0f, height), ImGuiCond_Always);
-    ImGui::Begin(title, nullptr, ImGuiWindowFlags_NoResize);
-}
-
-void EndSoftPanel(const ParameterSet& params, const StabilityMonitor& monitor) {
-    const std::string integrator = params.Get("integrator");
-    const std::string dt = params.Get("dt");
-    if (integrator != "euler" || params.Find("dt") == nullptr || *params.Find("dt")->floatValue != kBookDt)
-        ImGui::Text("integrator %s, dt %s s", integrator.c_str(), dt.c_str());
+void DrawSoftDemoPanel(const char* title, const ParameterSet& params, Integrator integrator, float dt,
+                       const StabilityMonitor& monitor) {
+    const bool bookStep = StepIsBook(integrator, dt);
+    float height = BookPanel::kHeight;
+    if (!bookStep) height += BookPanel::kRowHeight;
+    if (!monitor.Stable()) height += BookPanel::kRowHeight;
+    BeginDemoPanel(title, height, PanelScrollbar::Auto);
+    DrawParameterPanel(params);
+    if (!bookStep) ImGui::Text("integrator %s, dt %s s", params.Get("integrator").c_str(), params.Get("dt").c_str());
     if (!monitor.Stable()) ImGui::TextColored(ImVec4(1, 0.4f, 0.4f, 1), "%s", monitor.Report().message.c_str());
     ImGui::End();
 }
 
 void ReportOnce(const StabilityMonitor& monitor, const char* demo, bool* reported) {
-    if (monitor.Stable() || *reported) return;
+    if (monitor.Stable()) {
+        *reported = false;  // a reset restarted the monitor: report the next failure again
+        return;
+    }
+    if (*reported) return;
     std::fprintf(stderr, "physics-sandbox: %s: %s\n", demo, monitor.Report().message.c_str());
     *reported = true;
 }

@@ -1,6 +1,6 @@
 #pragma once
-// Shared by the chapter 16 demos (SimpleSprings, CH16Demo, JointDemo): the light, the panel frame with the
-// book's size, and the stability report in place of garbage.
+// Shared by the chapter 16 demos (SimpleSprings, CH16Demo, JointDemo): the light, the panel with the book's
+// size, and the stability report in place of garbage.
 
 #include <vector>
 
@@ -13,12 +13,13 @@
 /// Light of the chapter 16 demos' Render: (0, 1, 0, 0), straight down (book.md 1.5).
 constexpr vec3 kSoftDemoLight{0.0f, 1.0f, 0.0f};
 
-/// Opens the demo panel at (400,10), width 370, height 75 as the book; one text row taller for each of:
-/// a non-book integrator or dt, an instability report.
-void BeginSoftPanel(const char* title, Integrator integrator, float dt, const StabilityMonitor& monitor);
-/// Writes those extra rows (read-only; they are set with --set integrator=... dt=...) and ends the panel.
-void EndSoftPanel(const ParameterSet& params, const StabilityMonitor& monitor);
-/// Prints the monitor's report to stderr the first time it fails (*reported latches).
+/// The demo panel at (400, 10), 370 wide and 75 high as the book, drawn from the table `params`; one text
+/// row taller for each of: a non-book integrator or dt (read-only here; set with --set integrator=... dt=...),
+/// an instability report (in red).
+void DrawSoftDemoPanel(const char* title, const ParameterSet& params, Integrator integrator, float dt,
+                       const StabilityMonitor& monitor);
+/// Prints the monitor's report to stderr the first time it fails (*reported latches until the monitor is
+/// stable again, i.e. after a reset).
 void ReportOnce(const StabilityMonitor& monitor, const char* demo, bool* reported);
 /// Draws the whole system while monitor is stable; once the scene has blown up, only its constraints
 /// (constraint 0 blue, the rest green): no garbage, the report is on the panel.

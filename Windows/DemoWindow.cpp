@@ -8,6 +8,7 @@
 
 #include "Demos/DemoBase.h"
 #include "Demos/DemoRegistry.h"
+#include "Demos/ParameterPanel.h"
 
 namespace {
 /// The three chapter buttons of the default mode (book.md 1.7).
@@ -55,8 +56,9 @@ void DemoWindow::OnUpdate(float /*deltaTime*/) {
 }
 
 void DemoWindow::MainPanel() {
-    ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_Once);
-    ImGui::SetNextWindowSize(ImVec2(370.0f, selectAll ? 145.0f : 75.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowPos(ImVec2(BookPanel::kMainX, BookPanel::kTop), ImGuiCond_Once);
+    ImGui::SetNextWindowSize(ImVec2(BookPanel::kWidth, selectAll ? BookPanel::kListHeight : BookPanel::kHeight),
+                             ImGuiCond_Always);
     ImGui::Begin("Physics Demo", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoScrollbar);
     const float fps = nominalFrameMs > 0.0f ? 1000.0f / nominalFrameMs : 0.0f;
     ImGui::Text("Application average %.3f ms/frame (%.1f FPS)", static_cast<double>(nominalFrameMs),
@@ -71,7 +73,7 @@ void DemoWindow::MainPanel() {
             if (demos[i].id == demoId) current = static_cast<int>(i);
         }
         int selected = current;
-        ImGui::PushItemWidth(350.0f);
+        ImGui::PushItemWidth(BookPanel::kListWidth);
         if (ImGui::ListBox("##demos", &selected, titles.data(), static_cast<int>(titles.size()), 5) &&
             selected != current && selected >= 0)
             StartDemo(demos[static_cast<std::size_t>(selected)].id);

@@ -19,7 +19,7 @@ constexpr float kDtMin = 0.001f, kDtMax = 0.2f;
 
 Ch16Params Params(int n, Integrator integrator, float dt) {
     Ch16Params p;
-    p.count = n;
+    p.particlesPerSide = n;
     p.integrator = integrator;
     p.dt = dt;
     return p;

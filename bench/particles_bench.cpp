@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
     for (int size : opt.sizes) {
         for (Integrator integrator : kAllIntegrators) {
             Ch14Params params;
-            params.particles = size;
+            params.particleCount = size;
             params.integrator = integrator;
             std::vector<double> msPerStep;
             int below = 0;

@@ -17,20 +17,20 @@ std::array<OBB, 4> Ch14Scene::Constraints() {
 
 void Ch14Scene::Reset(const Ch14Params& p) {
     params = p;
-    if (params.particles < 1) params.particles = 1;
+    if (params.particleCount < 1) params.particleCount = 1;
     if (!(params.dt > 0.0f) || !std::isfinite(params.dt)) params.dt = Ch14Params().dt;
     system = std::make_unique<PhysicsSystem>();
     system->integrator = params.integrator;
     for (const OBB& box : Constraints()) system->AddConstraint(box);
 
     bodies.clear();
-    bodies.reserve(static_cast<std::size_t>(params.particles));
+    bodies.reserve(static_cast<std::size_t>(params.particleCount));
     MsvcRand random(params.seed);
     const vec3 lo(kSpawnCenter.x - kSpawnHalfSize.x, kSpawnCenter.y - kSpawnHalfSize.y,
                   kSpawnCenter.z - kSpawnHalfSize.z);
     const vec3 hi(kSpawnCenter.x + kSpawnHalfSize.x, kSpawnCenter.y + kSpawnHalfSize.y,
                   kSpawnCenter.z + kSpawnHalfSize.z);
-    for (int i = 0; i < params.particles; ++i) {
+    for (int i = 0; i < params.particleCount; ++i) {
         // The book's call order per particle: x, y, z, then bounce (separate statements, so the order is fixed).
         const float x = random.Range(lo.x, hi.x);
         const float y = random.Range(lo.y, hi.y);
@@ -47,7 +47,7 @@ void Ch14Scene::Step() {
     system->Update(params.dt);
     for (Particle& particle : bodies) {
         const vec3 pos = particle.GetPosition();
-        if (pos.y < kFloorClamp) particle.SetPosition(vec3(pos.x, kFloorClamp, pos.z));
+        if (pos.y < kBookFloorY) particle.SetPosition(vec3(pos.x, kBookFloorY, pos.z));
     }
 }
 

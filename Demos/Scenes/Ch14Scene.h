@@ -7,22 +7,21 @@
 #include <memory>
 #include <vector>
 
+#include "Demos/Scenes/BookConstants.h"
 #include "Physics/Integrator.h"
 #include "Physics/Particle.h"
 #include "Physics/PhysicsSystem.h"
 
 /// The demo's panel and model values (--set particles=, integrator=, dt=, seed=).
 struct Ch14Params {
-    int particles = 50;  ///< the book's numParticles; the panel allows 1..300, the benchmark more
+    int particleCount = 50;  ///< the book's numParticles (the panel's range is CH14Demo's table; benchmarks go beyond)
     Integrator integrator = Integrator::SemiImplicitEuler;  ///< the book's shipped integrator
-    float dt = 0.03f;                                       ///< s per step (the book's 0.03, erratum 5.2-16)
+    float dt = kBookStep;                                   ///< s per step
     std::uint32_t seed = 1;                                 ///< MsvcRand seed; the book never seeds (1)
 };
 
 class Ch14Scene {
 public:
-    /// y below which a particle is put back (book: y < -5 gets y = -5 through SetPosition).
-    static constexpr float kFloorClamp = -5.0f;
     /// Spawn box centre and half-size (book.md 2.1).
     static constexpr vec3 kSpawnCenter{-0.5f, 6.5f, -1.01f};
     static constexpr vec3 kSpawnHalfSize{3.8505f, 2.0f, 4.034834f};

@@ -31,11 +31,11 @@ void Ch15Scene::Reset() {
 }
 
 void Ch15Scene::ApplySettings() {
-    system->LinearProjectionPercent = params.projection;
-    system->PenetrationSlack = params.slop;
+    system->LinearProjectionPercent = params.projectionFraction;
+    system->PenetrationSlack = params.penetrationSlop;
     system->ImpulseIteration = params.iterations;
     system->DoLinearProjection = params.linearProjection;
-    system->DebugRender = params.debug;
+    system->DebugRender = params.debugRender;
     system->contactSolver = params.solver == 0 ? ContactSolver::Book : ContactSolver::Accumulated;
 }
 
@@ -45,19 +45,25 @@ void Ch15Scene::Step(float dt) {
 }
 
 void Ch15Scene::AddParameters(ParameterSet* set) {
-    set->AddFloat("projection", &params.projection, 0.2f, 0.8f,
-                  "LinearProjectionPercent: share of the penetration corrected per step (panel \"Porjection\")",
-                  [this] { ApplySettings(); });
-    set->AddFloat("slop", &params.slop, 0.01f, 0.1f, "PenetrationSlack: penetration left uncorrected (m)",
-                  [this] { ApplySettings(); });
-    set->AddInt("iterations", &params.iterations, 1, 20, "ImpulseIteration: passes over every contact per step",
-                [this] { ApplySettings(); });
-    set->AddBool("linear-projection", &params.linearProjection, "DoLinearProjection: positional correction",
-                 [this] { ApplySettings(); });
-    set->AddBool("debug", &params.debug, "DebugRender: box edges and collision manifolds", [this] { ApplySettings(); });
-    set->AddChoice("solver", &params.solver, {ToString(ContactSolver::Book), ToString(ContactSolver::Accumulated)},
-                   "contact solver: the book's per-contact impulses, or accumulated impulses (stacks stand)",
-                   [this] { ApplySettings(); });
+    // The panel (docs/book-reference.md §2.5): three 55 px sliders on one line, then Reset and two checkboxes.
+    using Widget = ParameterSet::Widget;
+    auto apply = [this] { ApplySettings(); };
+    set->AddFloat("projection-fraction", &params.projectionFraction, 0.2f, 0.8f,
+                  "LinearProjectionPercent: fraction of the penetration beyond the slop removed per step", apply)
+        .Alias("projection")
+        .OnPanel(Widget::Slider("Porjection").Width(55.0f));
+    set->AddFloat("slop", &params.penetrationSlop, 0.01f, 0.1f, "PenetrationSlack: penetration left uncorrected (m)",
+                  apply)
+        .OnPanel(Widget::Slider("Slop").Width(55.0f).SameLine());
+    set->AddInt("iterations", &params.iterations, 1, 20, "ImpulseIteration: passes over every contact per step", apply)
+        .OnPanel(Widget::Slider("Iteration").Width(55.0f).SameLine());
     set->AddAction(
-        "reset", [this] { Reset(); }, "rebuild the scene");
+           "reset", [this] { Reset(); }, "rebuild the scene")
+        .OnPanel(Widget::Button("Reset"));
+    set->AddBool("debug", &params.debugRender, "DebugRender: box edges and collision manifolds", apply)
+        .OnPanel(Widget::Checkbox("Debug Render").SameLine());
+    set->AddBool("linear-projection", &params.linearProjection, "DoLinearProjection: positional correction", apply)
+        .OnPanel(Widget::Checkbox("Linear Projection").SameLine());
+    set->AddChoice("solver", &params.solver, {ToString(ContactSolver::Book), ToString(ContactSolver::Accumulated)},
+                   "contact solver: the book's per-contact impulses, or accumulated impulses (stacks stand)", apply);
 }

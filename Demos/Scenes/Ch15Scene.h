@@ -9,13 +9,16 @@
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
 
-/// The "Chapter 15 Demo" panel values (book defaults: 0.45 / 0.01 / 8, projection on, debug off).
+/// The "Chapter 15 Demo" panel values (book defaults: 0.45 / 0.01 / 8, projection on, debug off). Ranges
+/// and labels are in AddParameters, the one table.
 struct Ch15Params {
-    float projection = 0.45f;  ///< LinearProjectionPercent, 0.2..0.8 (the panel's "Porjection")
-    float slop = 0.01f;        ///< PenetrationSlack, 0.01..0.1 m
-    int iterations = 8;        ///< ImpulseIteration, 1..20
-    bool linearProjection = true;
-    bool debug = false;  ///< DebugRender: edges and manifolds
+    /// Fraction (not percent) of the penetration beyond the slop removed per step by moving the bodies apart.
+    /// The book's LinearProjectionPercent, panel "Porjection" [sic]; `--set projection-fraction` (alias projection).
+    float projectionFraction = 0.45f;
+    float penetrationSlop = 0.01f;  ///< m of penetration left uncorrected (the book's PenetrationSlack, "Slop")
+    int iterations = 8;             ///< impulse passes over every contact per step (ImpulseIteration, "Iteration")
+    bool linearProjection = true;   ///< positional correction on (DoLinearProjection, "Linear Projection")
+    bool debugRender = false;       ///< draw box edges and manifolds (DebugRender, "Debug Render")
     /// Not a book widget: 0 = the book's per-contact solver, 1 = accumulated impulses (ContactSolver.h).
     int solver = 0;
 };
@@ -27,7 +30,8 @@ public:
     void Reset();
     /// Copies the panel values into the system, then one step of dt seconds.
     void Step(float dt);
-    /// Registers projection, slop, iterations, linear-projection, debug and the reset action on *set.
+    /// Registers the panel's widgets in panel order (projection-fraction, slop, iterations, reset, debug,
+    /// linear-projection) and the solver choice on *set.
     void AddParameters(ParameterSet* set);
 
     Ch15Params& Params() { return params; }

@@ -41,9 +41,9 @@ void Ch16Scene::Build() {
     system = std::make_unique<PhysicsSystem>();
     system->integrator = params.integrator;
     cloth = std::make_unique<Cloth>();
-    cloth->Initialize(params.count, params.distance, vec3(0.0f, kClothHeight, 0.0f));
-    const float k = FromBookSpringConstant(params.k);
-    const float b = FromBookSpringConstant(params.damping);
+    cloth->Initialize(params.particlesPerSide, params.particleSpacing, vec3(0.0f, kClothHeight, 0.0f));
+    const float k = FromBookSpringConstant(params.springK);
+    const float b = FromBookSpringConstant(params.springDamping);
     // The book's order: structural, bend, shear.
     cloth->SetStructuralSprings(k, b);
     cloth->SetBendSprings(k, b);
@@ -60,11 +60,19 @@ bool Ch16Scene::Step() {
 }
 
 void Ch16Scene::AddParameters(ParameterSet* set) {
+    // The panel (docs/book-reference.md §2.7): three 50 px sliders on one line, then Reset.
+    using Widget = ParameterSet::Widget;
     auto reset = [this] { Reset(); };
-    set->AddInt("count", &params.count, 5, 30, "cloth particles per side; applied on reset", reset);
-    set->AddFloat("distance", &params.distance, 0.1f, 1.0f, "cloth particle spacing in m; applied on reset", reset);
-    set->AddFloat("k", &params.k, -5.0f, 0.0f, "book spring k of every cloth spring; applied on reset", reset);
-    set->AddFloat("damping", &params.damping, 0.0f, 1.0f, "book spring damping d (no widget in the book)", reset);
-    set->AddAction("reset", reset, "rebuild the scene with the panel values");
+    set->AddInt("count", &params.particlesPerSide, 5, 30, "cloth particles per side; applied on reset", reset)
+        .OnPanel(Widget::Slider("Count").Width(50.0f));
+    set->AddFloat("distance", &params.particleSpacing, 0.1f, 1.0f, "cloth particle spacing in m; applied on reset",
+                  reset)
+        .OnPanel(Widget::Slider("Distance").Width(50.0f).SameLine());
+    set->AddFloat("k", &params.springK, -5.0f, 0.0f, "book spring k of every cloth spring; applied on reset", reset)
+        .OnPanel(Widget::Slider("Spring k").Width(50.0f).SameLine());
+    set->AddFloat("spring-damping", &params.springDamping, 0.0f, 1.0f,
+                  "book spring damping d of every cloth spring (no widget in the book); applied on reset", reset)
+        .Alias("damping");
+    set->AddAction("reset", reset, "rebuild the scene with the panel values").OnPanel(Widget::Button("Reset"));
     stepping.AddParameters(set, &params.dt, reset);
 }

@@ -5,6 +5,7 @@
 #include <array>
 #include <memory>
 
+#include "Demos/Scenes/BookConstants.h"
 #include "Demos/Scenes/Parameters.h"
 #include "Demos/Scenes/SoftSceneCommon.h"
 #include "Physics/Cloth.h"
@@ -12,15 +13,16 @@
 #include "Physics/PhysicsSystem.h"
 #include "Physics/StabilityMonitor.h"
 
-/// The demo's panel values. k and damping are the BOOK's numbers (velocity change per 0.03 s step); the
-/// scene converts them with FromBookSpringConstant so the cloth looks as in the book (docs/ERRATA.md, Chapter 16).
+/// The demo's panel values. springK and springDamping are the BOOK's numbers (velocity change per 0.03 s step);
+/// the scene converts them with FromBookSpringConstant so the cloth looks as in the book (docs/ERRATA.md,
+/// Chapter 16). Ranges and labels are in AddParameters, the one table.
 struct Ch16Params {
-    int count = 15;         ///< particles per side, 5..30 on the panel (the cloth clamps to >= 3)
-    float distance = 0.2f;  ///< m between neighbours, 0.1..1
-    float k = -3.0f;        ///< book k for structural, shear and bend springs, -5..0
-    float damping = 0.0f;   ///< book spring damping d (no widget in the book)
+    int particlesPerSide = 15;     ///< cloth particles per side (book num_part, "Count"; the cloth clamps to >= 3)
+    float particleSpacing = 0.2f;  ///< m between neighbouring particles (book part_dist, "Distance")
+    float springK = -3.0f;         ///< book k of every cloth spring: N/m x 0.03 s ("Spring k")
+    float springDamping = 0.0f;    ///< book spring damping d: N s/m x 0.03 s (no widget in the book)
     Integrator integrator = Integrator::SemiImplicitEuler;
-    float dt = 0.03f;  ///< fixed step (book: 0.03 s, erratum 5.2-16)
+    float dt = kBookStep;  ///< s per fixed step
 };
 
 class Ch16Scene {

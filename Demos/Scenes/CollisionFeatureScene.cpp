@@ -48,3 +48,15 @@ bool CollisionFeatureScene::Colliding(int index) const {
         if (results[p].colliding && (kPairs[p][0] == index || kPairs[p][1] == index)) return true;
     return false;
 }
+
+void AddCollisionFeatureParameters(ParameterSet* set, CollisionFeatureParams* params) {
+    using Widget = ParameterSet::Widget;
+    set->AddBool("script", &params->script,
+                 "move and turn the shapes along a scripted path (0: the book's static start)");
+    set->AddFloat("speed", &params->speed, 0.0f, 8.0f, "approach cycles per 240 output frames");
+    set->AddChoice("gizmo", &params->gizmo, {"translate", "rotate", "scale"},
+                   "the panel's gizmo operation (shown only: there is no gizmo headless)")
+        .OnPanel(Widget::RadioButtons({"Translate", "Rotate", "Scale"}));
+    set->AddChoice("space", &params->space, {"local", "world"}, "the panel's gizmo space (shown only)")
+        .OnPanel(Widget::RadioButtons({"Local", "World"}));
+}

@@ -5,15 +5,20 @@
 
 #include <array>
 
+#include "Demos/Scenes/Parameters.h"
 #include "Physics/Geometry/Geometry3D.h"
 
-/// --set keys of the demo: script=0|1, speed, gizmo, space.
+/// The demo's script and panel values; ranges and labels are in AddCollisionFeatureParameters.
 struct CollisionFeatureParams {
     bool script = true;  ///< scripted motion (false: the book's static start, nothing collides)
     float speed = 1.0f;  ///< cycles per kCycleFrames output frames
     int gizmo = 0;       ///< the panel's radio buttons: 0 Translate, 1 Rotate, 2 Scale (no gizmo headless)
     int space = 0;       ///< 0 Local, 1 World
 };
+
+/// Registers script and speed (`--set` only) and the panel's radio buttons gizmo (Translate / Rotate / Scale)
+/// and space (Local / World), docs/book-reference.md §2.2, bound to *params on *set.
+void AddCollisionFeatureParameters(ParameterSet* set, CollisionFeatureParams* params);
 
 class CollisionFeatureScene {
 public:

@@ -35,7 +35,7 @@ void JointScene::Build() {
 
     // erratum 5.2-23: the book rounds the SLIDER value up when it is odd and creates the odd count, leaving
     // one particle without a joint; the count created is what must be even.
-    int createCount = params.numParticles < 2 ? 2 : params.numParticles;
+    int createCount = params.particleCount < 2 ? 2 : params.particleCount;
     if (createCount % 2 != 0) createCount += 1;
     const int numJoints = createCount / 2;
 
@@ -61,13 +61,19 @@ void JointScene::Build() {
 
 bool JointScene::Step() {
     system->Update(params.dt);
-    ClampAboveFloor(&particles, kFloorY);
+    ClampAboveFloor(&particles, kBookFloorY);
     return monitor.Check(*system);
 }
 
 void JointScene::AddParameters(ParameterSet* set) {
+    // The panel (docs/book-reference.md §2.8): "Particle count", a 100 px slider with the book's empty label,
+    // Reset (Show Help is the demo's).
+    using Widget = ParameterSet::Widget;
     auto reset = [this] { Reset(); };
-    set->AddInt("count", &params.numParticles, 2, 100, "particle count (odd rounds up); applied on reset", reset);
-    set->AddAction("reset", reset, "rebuild the scene with the panel values (new random spawn)");
+    set->AddInt("particles", &params.particleCount, 2, 100, "particle count (odd rounds up); applied on reset", reset)
+        .Alias("count")
+        .OnPanel(Widget::Slider("##count").Width(100.0f).Caption("Particle count"));  // erratum 5.2-26: "" clashes
+    set->AddAction("reset", reset, "rebuild the scene with the panel values (new random spawn)")
+        .OnPanel(Widget::Button("Reset").SameLine());
     stepping.AddParameters(set, &params.dt, reset);
 }

@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "Demos/Scenes/BookConstants.h"
 #include "Demos/Scenes/Parameters.h"
 #include "Demos/Scenes/SoftSceneCommon.h"
 #include "Math/Random.h"
@@ -14,22 +15,21 @@
 #include "Physics/PhysicsSystem.h"
 #include "Physics/StabilityMonitor.h"
 
+/// The demo's panel values; ranges and labels are in AddParameters, the one table.
 struct JointParams {
-    int numParticles = 50;  ///< 2..100 on the panel; takes effect on Reset
+    int particleCount = 50;  ///< particles (the book's numParticles, an odd count rounds up); applied on Reset
     Integrator integrator = Integrator::SemiImplicitEuler;
-    float dt = 0.03f;  ///< fixed step (book: 0.03 s, erratum 5.2-16)
+    float dt = kBookStep;  ///< s per fixed step
 };
 
 class JointScene {
 public:
-    static constexpr float kFloorY = -5.0f;  ///< the book's Update clamps y >= -5
-
     /// rng is the demo's generator; it is NOT reseeded by Reset, as the book's rand() is never reseeded.
     explicit JointScene(const JointParams& params = {}, MsvcRand* rng = nullptr);
     JointScene(const JointScene&) = delete;
     JointScene& operator=(const JointScene&) = delete;
     /// Rebuilds the world (the book's ResetDemo). An odd count is rounded UP to even for the particles that
-    /// are created (erratum 5.2-23), so every particle has a joint; params.numParticles is left as given.
+    /// are created (erratum 5.2-23), so every particle has a joint; params.particleCount is left as given.
     void Reset(const JointParams& params);
     /// Rebuilds from the current (panel) values, the integrator taken from the "integrator" choice.
     void Reset();

@@ -42,13 +42,21 @@ void LinearImpulseScene::Update(float dt) {
 }
 
 void LinearImpulseScene::AddParameters(ParameterSet* set) {
+    // The panel: Step, Frames (100 px), Reset, Pause; then Spheres and Drop, which reset at once.
+    using Widget = ParameterSet::Widget;
     set->AddAction(
-        "step", [this] { RequestSteps(); }, "queue `frames` single steps (used while paused)");
-    set->AddInt("frames", &params.frames, 1, 1000, "steps per press of Step");
+           "step", [this] { RequestSteps(); }, "queue `frames` single steps (used while paused)")
+        .OnPanel(Widget::Button("Step"));
+    set->AddInt("frames", &params.frames, 1, 1000, "steps per press of Step")
+        .OnPanel(Widget::InputInt("Frames").Width(100.0f).SameLine());
     set->AddAction(
-        "reset", [this] { Reset(); }, "rebuild the scene");
-    set->AddBool("pause", &params.pause, "pause the simulation (the book starts paused)");
-    set->AddBool("spheres", &params.spheres, "spheres instead of boxes (resets)", [this] { Reset(); });
+           "reset", [this] { Reset(); }, "rebuild the scene")
+        .OnPanel(Widget::Button("Reset").SameLine());
+    set->AddBool("pause", &params.pause, "pause the simulation (the book starts paused)")
+        .OnPanel(Widget::Checkbox("Pause").SameLine());
+    set->AddBool("spheres", &params.spheres, "spheres instead of boxes (resets)", [this] { Reset(); })
+        .OnPanel(Widget::Checkbox("Spheres").AppliesAtOnce());
     set->AddBool("drop", &params.drop, "drop the bodies onto each other instead of throwing them (resets)",
-                 [this] { Reset(); });
+                 [this] { Reset(); })
+        .OnPanel(Widget::Checkbox("Drop").SameLine().AppliesAtOnce());
 }

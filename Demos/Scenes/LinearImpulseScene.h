@@ -28,7 +28,7 @@ public:
     void RequestSteps();
     /// The book's Update: one step of dt unless paused; while paused, one queued step if any.
     void Update(float dt);
-    /// Registers step, frames, reset, pause, spheres and drop on *set.
+    /// Registers the panel's widgets (docs/book-reference.md §2.3) on *set: step, frames, reset, pause, spheres, drop.
     void AddParameters(ParameterSet* set);
 
     LinearImpulseParams& Params() { return params; }

@@ -14,7 +14,7 @@ void MomentumScene::Reset() {
         RigidbodyVolume& s = bodies[i];
         const float spacing = (1.0f + 0.00001f) * (i < kSpheres - 1 ? 2.0f : 3.0f);
         s.position = vec3(static_cast<float>(i) * spacing, 1.16f, 0.0f);
-        s.damping = params.damping;
+        s.damping = params.velocityFactorPerStep;
         if (!params.gravity) s.gravity = vec3();
     }
     RigidbodyVolume& last = bodies[kSpheres - 1];
@@ -36,7 +36,8 @@ void MomentumScene::Step(float dt) { system->Update(dt); }
 
 void MomentumScene::AddParameters(ParameterSet* set) {
     set->AddAction(
-        "reset", [this] { Reset(); }, "rebuild the scene");
+           "reset", [this] { Reset(); }, "rebuild the scene")
+        .OnPanel(ParameterSet::Widget::Button("Reset"));
 }
 
 vec3 MomentumScene::TotalMomentum() const {

@@ -9,11 +9,11 @@
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
 
-/// The demo has only a Reset button. damping and gravity are not panel values: tests use them to isolate
+/// The demo has only a Reset button. velocityFactorPerStep and gravity are not panel values: tests use them to isolate
 /// the impulses from the book's per-step damping (0.98) and from ground contact.
 struct MomentumParams {
-    float damping = 0.98f;  ///< per-step velocity factor of every sphere (book 0.98)
-    bool gravity = true;    ///< false: no gravity, so the spheres never touch the ground (0.01 m gap)
+    float velocityFactorPerStep = 0.98f;  ///< each sphere's velocity is multiplied by this every step (book damping)
+    bool gravity = true;                  ///< false: no gravity, so the spheres never touch the ground (0.01 m gap)
 };
 
 class MomentumScene {
@@ -25,7 +25,7 @@ public:
     /// Rebuilds the spheres and ground (the book's ResetDemo), volumes synced (erratum 5.2-28).
     void Reset();
     void Step(float dt);
-    /// Registers the reset action on *set.
+    /// Registers the reset action, the panel's only widget (docs/book-reference.md §2.4), on *set.
     void AddParameters(ParameterSet* set);
     /// Sum of m v over the spheres (kg m/s).
     vec3 TotalMomentum() const;

@@ -57,62 +57,156 @@ std::string RangeText(const ParameterSet::Entry& e) {
         case ParameterSet::Kind::Action:
             s << "1 (action)";
             break;
+        case ParameterSet::Kind::Text:
+            s << "(panel text)";
+            break;
     }
     return s.str();
 }
 
+/// What the panel calls the entry: its label, or for a hidden "##id" label the caption before it; "" if none.
+std::string PanelName(const ParameterSet::Entry& e) {
+    const ParameterSet::Widget& w = e.widget;
+    if (w.type == ParameterSet::Widget::Type::None) return "";
+    if (!w.label.empty() && w.label.compare(0, 2, "##") != 0) return w.label;
+    return w.caption;
+}
+
 }  // namespace
 
-void ParameterSet::AddInt(const std::string& key, int* value, int min, int max, const std::string& help,
-                          std::function<void()> onChange) {
+using Widget = ParameterSet::Widget;
+
+Widget Widget::Slider(const std::string& label) {
+    Widget w;
+    w.type = Type::Slider, w.label = label;
+    return w;
+}
+Widget Widget::InputInt(const std::string& label) {
+    Widget w;
+    w.type = Type::InputInt, w.label = label;
+    return w;
+}
+Widget Widget::Checkbox(const std::string& label) {
+    Widget w;
+    w.type = Type::Checkbox, w.label = label;
+    return w;
+}
+Widget Widget::RadioButtons(std::vector<std::string> labels) {
+    Widget w;
+    w.type = Type::RadioButtons, w.choiceLabels = std::move(labels);
+    return w;
+}
+Widget Widget::Button(const std::string& label) {
+    Widget w;
+    w.type = Type::Button, w.label = label;
+    return w;
+}
+Widget Widget::Text() {
+    Widget w;
+    w.type = Type::Text;
+    return w;
+}
+Widget& Widget::Width(float pixels) {
+    itemWidth = pixels;
+    return *this;
+}
+Widget& Widget::SameLine() {
+    sameLine = true;
+    return *this;
+}
+Widget& Widget::Caption(const std::string& text) {
+    caption = text;
+    return *this;
+}
+Widget& Widget::Format(const std::string& printfFormat) {
+    format = printfFormat;
+    return *this;
+}
+Widget& Widget::AppliesAtOnce() {
+    appliesAtOnce = true;
+    return *this;
+}
+
+ParameterSet::Entry& ParameterSet::Entry::Alias(const std::string& alias) {
+    aliases.push_back(alias);
+    return *this;
+}
+ParameterSet::Entry& ParameterSet::Entry::OnPanel(const Widget& w) {
+    widget = w;
+    return *this;
+}
+
+ParameterSet::Entry& ParameterSet::Add(Entry e) {
+    entries.push_back(std::move(e));
+    return entries.back();
+}
+
+ParameterSet::Entry& ParameterSet::AddInt(const std::string& key, int* value, int min, int max, const std::string& help,
+                                          std::function<void()> onChange) {
     Entry e;
     e.key = key, e.kind = Kind::Int, e.help = help, e.intValue = value, e.min = min, e.max = max;
     e.onChange = std::move(onChange);
-    entries.push_back(std::move(e));
+    return Add(std::move(e));
 }
-void ParameterSet::AddFloat(const std::string& key, float* value, float min, float max, const std::string& help,
-                            std::function<void()> onChange) {
+ParameterSet::Entry& ParameterSet::AddFloat(const std::string& key, float* value, float min, float max,
+                                            const std::string& help, std::function<void()> onChange) {
     Entry e;
     e.key = key, e.kind = Kind::Float, e.help = help, e.floatValue = value, e.min = min, e.max = max;
     e.onChange = std::move(onChange);
-    entries.push_back(std::move(e));
+    return Add(std::move(e));
 }
-void ParameterSet::AddBool(const std::string& key, bool* value, const std::string& help,
-                           std::function<void()> onChange) {
+ParameterSet::Entry& ParameterSet::AddBool(const std::string& key, bool* value, const std::string& help,
+                                           std::function<void()> onChange) {
     Entry e;
     e.key = key, e.kind = Kind::Bool, e.help = help, e.boolValue = value;
     e.onChange = std::move(onChange);
-    entries.push_back(std::move(e));
+    return Add(std::move(e));
 }
-void ParameterSet::AddChoice(const std::string& key, int* index, std::vector<std::string> choices,
-                             const std::string& help, std::function<void()> onChange) {
+ParameterSet::Entry& ParameterSet::AddChoice(const std::string& key, int* index, std::vector<std::string> choices,
+                                             const std::string& help, std::function<void()> onChange) {
     Entry e;
     e.key = key, e.kind = Kind::Choice, e.help = help, e.intValue = index, e.choices = std::move(choices);
     e.onChange = std::move(onChange);
-    entries.push_back(std::move(e));
+    return Add(std::move(e));
 }
-void ParameterSet::AddAction(const std::string& key, std::function<void()> action, const std::string& help) {
+ParameterSet::Entry& ParameterSet::AddAction(const std::string& key, std::function<void()> action,
+                                             const std::string& help) {
     Entry e;
     e.key = key, e.kind = Kind::Action, e.help = help, e.onChange = std::move(action);
-    entries.push_back(std::move(e));
+    return Add(std::move(e));
+}
+ParameterSet::Entry& ParameterSet::AddPanelButton(const Widget& button, std::function<void()> action) {
+    Entry e;
+    e.kind = Kind::Action, e.onChange = std::move(action), e.widget = button;
+    return Add(std::move(e));
+}
+ParameterSet::Entry& ParameterSet::AddPanelText(std::function<std::string()> text) {
+    Entry e;
+    e.kind = Kind::Text, e.text = std::move(text), e.widget = Widget::Text();
+    return Add(std::move(e));
 }
 
 const ParameterSet::Entry* ParameterSet::Find(const std::string& key) const {
-    for (const Entry& e : entries)
+    if (key.empty()) return nullptr;
+    for (const Entry& e : entries) {
         if (e.key == key) return &e;
+        for (const std::string& alias : e.aliases)
+            if (alias == key) return &e;
+    }
     return nullptr;
 }
 
 std::string ParameterSet::Keys() const {
     std::string keys;
-    for (const Entry& e : entries) keys += (keys.empty() ? "" : ", ") + e.key;
+    for (const Entry& e : entries)
+        if (!e.key.empty()) keys += (keys.empty() ? "" : ", ") + e.key;
     return keys;
 }
 
 bool ParameterSet::Set(const std::string& key, const std::string& value, std::string* error) {
     const Entry* e = Find(key);
     if (e == nullptr) {
-        if (error) *error = "unknown parameter '" + key + "'; valid keys: " + (entries.empty() ? "(none)" : Keys());
+        if (error) *error = "unknown parameter '" + key + "'; valid keys: " + (Keys().empty() ? "(none)" : Keys());
         return false;
     }
     auto bad = [&]() {
@@ -127,9 +221,13 @@ bool ParameterSet::Set(const std::string& key, const std::string& value, std::st
             break;
         }
         case Kind::Float: {
-            double v = 0;
-            if (!ParseFloat(value, &v) || v < e->min || v > e->max) return bad();
-            *e->floatValue = static_cast<float>(v);
+            // Compared as the float that is stored: "0.1" must meet the bound 0.1f, which as a double is
+            // 0.10000000149 (an inclusive range written in decimal).
+            double parsed = 0;
+            if (!ParseFloat(value, &parsed)) return bad();
+            const float v = static_cast<float>(parsed);
+            if (!std::isfinite(v) || v < static_cast<float>(e->min) || v > static_cast<float>(e->max)) return bad();
+            *e->floatValue = v;
             break;
         }
         case Kind::Bool: {
@@ -152,6 +250,8 @@ bool ParameterSet::Set(const std::string& key, const std::string& value, std::st
             if (!v) return true;
             break;
         }
+        case Kind::Text:
+            return bad();
     }
     if (e->onChange) e->onChange();
     return true;
@@ -175,6 +275,7 @@ std::string ParameterSet::Get(const std::string& key) const {
             s << e->choices.at(static_cast<size_t>(*e->intValue));
             break;
         case Kind::Action:
+        case Kind::Text:
             break;
     }
     return s.str();
@@ -182,8 +283,14 @@ std::string ParameterSet::Get(const std::string& key) const {
 
 std::string ParameterSet::Describe() const {
     std::ostringstream s;
-    for (const Entry& e : entries)
+    for (const Entry& e : entries) {
+        if (e.key.empty()) continue;
         s << "  " << e.key << " = " << (e.kind == Kind::Action ? "-" : Get(e.key)) << "  [" << RangeText(e) << "]  "
-          << e.help << "\n";
+          << e.help;
+        std::string notes;
+        for (size_t i = 0; i < e.aliases.size(); ++i) notes += (i ? ", " : "also: ") + e.aliases[i];
+        if (!PanelName(e).empty()) notes += (notes.empty() ? "" : "; ") + std::string("panel \"") + PanelName(e) + "\"";
+        s << (notes.empty() ? "" : " (" + notes + ")") << "\n";
+    }
     return s.str();
 }

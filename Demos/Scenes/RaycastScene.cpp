@@ -67,3 +67,12 @@ std::string FirstObjFile(const std::string& directory) {
     std::sort(found.begin(), found.end());
     return found.front();
 }
+
+void AddRaycastParameters(ParameterSet* set, RaycastParams* params) {
+    using Widget = ParameterSet::Widget;
+    set->AddBool("script", &params->script,
+                 "sweep a scripted pick ray across the screen (0: no pick, as before a click)")
+        .OnPanel(Widget::Checkbox("Scripted pick"));
+    set->AddFloat("speed", &params->speed, 0.0f, 8.0f, "sweeps per 240 output frames")
+        .OnPanel(Widget::Slider("Speed").Width(100.0f).SameLine().Format("%.2f"));
+}

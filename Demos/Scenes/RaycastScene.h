@@ -4,13 +4,17 @@
 
 #include <string>
 
+#include "Demos/Scenes/Parameters.h"
 #include "Physics/Geometry/Geometry3D.h"
 
-/// --set keys of the demo: script=0|1, speed.
+/// The demo's script values (the book has no panel here); ranges and labels are in AddRaycastParameters.
 struct RaycastParams {
     bool script = true;  ///< sweep a pick ray across the screen (false: the book's state before any click)
     float speed = 1.0f;  ///< sweeps per kSweepFrames output frames
 };
+
+/// Registers script (checkbox "Scripted pick") and speed (100 px slider "Speed") bound to *params on *set.
+void AddRaycastParameters(ParameterSet* set, RaycastParams* params);
 
 class RaycastScene {
 public:

@@ -33,7 +33,8 @@ void SpringsScene::Build() {
     particles[1].SetMass(kLightMass);
     for (Particle& particle : particles) system->AddRigidbody(&particle);
 
-    Spring spring(FromBookSpringConstant(params.k), FromBookSpringConstant(params.b), params.restLength);
+    Spring spring(FromBookSpringConstant(params.springK), FromBookSpringConstant(params.springDamping),
+                  params.restLength);
     spring.SetParticles(&particles[0], &particles[1]);
     system->AddSpring(spring);
     monitor.Start(*system);
@@ -41,15 +42,23 @@ void SpringsScene::Build() {
 
 bool SpringsScene::Step() {
     system->Update(params.dt);
-    ClampAboveFloor(&particles, kFloorY);
+    ClampAboveFloor(&particles, kBookFloorY);
     return monitor.Check(*system);
 }
 
 void SpringsScene::AddParameters(ParameterSet* set) {
+    // The panel (docs/book-reference.md §2.6): three 100 px sliders on one line, then Reset (Show Help is
+    // the demo's).
+    using Widget = ParameterSet::Widget;
     auto reset = [this] { Reset(); };
-    set->AddFloat("k", &params.k, -5.0f, 0.0f, "book spring k (negative attracts); applied on reset", reset);
-    set->AddFloat("b", &params.b, 0.0f, 1.0f, "book spring damping; applied on reset", reset);
-    set->AddFloat("l", &params.restLength, 0.0f, 5.0f, "spring rest length in m; applied on reset", reset);
-    set->AddAction("reset", reset, "rebuild the scene with the panel values");
+    set->AddFloat("k", &params.springK, -5.0f, 0.0f, "book spring k (negative attracts); applied on reset", reset)
+        .OnPanel(Widget::Slider("k").Width(100.0f));
+    set->AddFloat("spring-damping", &params.springDamping, 0.0f, 1.0f, "book spring damping b; applied on reset", reset)
+        .Alias("b")
+        .OnPanel(Widget::Slider("b").Width(100.0f).SameLine());
+    set->AddFloat("rest-length", &params.restLength, 0.0f, 5.0f, "spring rest length in m; applied on reset", reset)
+        .Alias("l")
+        .OnPanel(Widget::Slider("l").Width(100.0f).SameLine());
+    set->AddAction("reset", reset, "rebuild the scene with the panel values").OnPanel(Widget::Button("Reset"));
     stepping.AddParameters(set, &params.dt, reset);
 }

@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "Demos/Scenes/BookConstants.h"
 #include "Demos/Scenes/Parameters.h"
 #include "Demos/Scenes/SoftSceneCommon.h"
 #include "Physics/Integrator.h"
@@ -13,21 +14,21 @@
 #include "Physics/Spring.h"
 #include "Physics/StabilityMonitor.h"
 
-/// The demo's panel values. k and b are the BOOK's numbers (velocity change per 0.03 s step); the scene
-/// converts them with FromBookSpringConstant so the motion matches the book at any dt (docs/ERRATA.md, Chapter 16).
+/// The demo's panel values. springK and springDamping are the BOOK's numbers (velocity change per 0.03 s step);
+/// the scene converts them with FromBookSpringConstant so the motion matches the book at any dt (docs/ERRATA.md,
+/// Chapter 16). Ranges and labels are in AddParameters, the one table.
 struct SpringsParams {
-    float k = -2.0f;          ///< book k, -5..0 (negative attracts)
-    float b = 0.5f;           ///< book damping, 0..1
-    float restLength = 1.0f;  ///< m, 0..5
+    float springK = -2.0f;       ///< book k: N/m x 0.03 s, negative attracts (panel "k")
+    float springDamping = 0.5f;  ///< book damping b: N s/m x 0.03 s (panel "b")
+    float restLength = 1.0f;     ///< m (panel "l")
     Integrator integrator = Integrator::SemiImplicitEuler;
-    float dt = 0.03f;  ///< fixed step (book: 0.03 s, erratum 5.2-16)
+    float dt = kBookStep;  ///< s per fixed step
 };
 
 class SpringsScene {
 public:
     static constexpr float kHeavyMass = 50.0f;
     static constexpr float kLightMass = 1.0f;
-    static constexpr float kFloorY = -5.0f;  ///< the book's Update clamps y >= -5
 
     explicit SpringsScene(const SpringsParams& params = {});
     /// Rebuilds the world from params (the book's ResetDemo); the step count restarts at 0.

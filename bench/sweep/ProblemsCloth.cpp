@@ -27,8 +27,8 @@ Ch16Params ClothParams(Integrator integrator, double dt, double bookK) {
     Ch16Params p;
     p.integrator = integrator;
     p.dt = float(dt);
-    p.k = float(bookK);
-    p.damping = kBookDamping;
+    p.springK = float(bookK);
+    p.springDamping = kBookDamping;
     return p;
 }
 

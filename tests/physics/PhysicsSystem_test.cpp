@@ -168,7 +168,7 @@ TEST(PhysicsSystem, ParticleRestsOnEachCh14BoardWithoutSinking) {
 TEST(PhysicsSystem, TwoRunsAreBitwiseIdentical) {
     for (Integrator i : kAllIntegrators) {
         Ch14Params params;
-        params.particles = 120;
+        params.particleCount = 120;
         params.integrator = i;
         Ch14Scene a(params), b(params);
         for (int s = 0; s < 400; ++s) {

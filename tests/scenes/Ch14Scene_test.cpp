@@ -37,7 +37,7 @@ TEST(Ch14Scene, ConstraintsAreTheBooks) {
 
 TEST(Ch14Scene, SpawnsStayInTheBooksBoxAndSeedChangesThem) {
     Ch14Params params;
-    params.particles = 300;
+    params.particleCount = 300;
     Ch14Scene scene(params);
     ASSERT_EQ(scene.Particles().size(), 300u);
     for (const Particle& p : scene.Particles()) {
@@ -51,14 +51,14 @@ TEST(Ch14Scene, SpawnsStayInTheBooksBoxAndSeedChangesThem) {
     params.seed = 7;
     Ch14Scene other(params);
     EXPECT_FALSE(VecNear(other.Particles()[0].GetPosition(), scene.Particles()[0].GetPosition(), 1e-3f));
-    params.particles = 0;
+    params.particleCount = 0;
     EXPECT_EQ(Ch14Scene(params).Particles().size(), 1u);
 }
 
 // Book: a particle with y < -5 after the step is put back at y = -5 with SetPosition (oldPosition reset).
 TEST(Ch14Scene, ParticlesBelowMinusFiveAreClamped) {
     Ch14Params params;
-    params.particles = 1;
+    params.particleCount = 1;
     Ch14Scene scene(params);
     Particle& p = scene.Particles()[0];
     p.SetPosition(vec3(20, -4.99f, 0));  // off the ground, falling
@@ -72,7 +72,7 @@ TEST(Ch14Scene, ParticlesBelowMinusFiveAreClamped) {
 TEST(Ch14Scene, LongRunKeepsEveryParticleFiniteAndAboveTheGround) {
     for (Integrator i : kAllIntegrators) {
         Ch14Params params;
-        params.particles = 300;
+        params.particleCount = 300;
         params.integrator = i;
         Ch14Scene scene(params);
         for (int s = 0; s < 1000; ++s) scene.Step();

@@ -58,9 +58,9 @@ TEST(JointScene, BookSpawnAndConstraints) {
 // particle without a joint (51 particles, 25 joints). The fix creates the even count: every particle jointed.
 TEST(JointScene, Erratum5_2_23_OddCountCreatesEvenJointedSet) {
     JointParams params;
-    params.numParticles = 51;
+    params.particleCount = 51;
     JointScene scene(params);
-    EXPECT_EQ(scene.Params().numParticles, 51);  // the slider value is left alone
+    EXPECT_EQ(scene.Params().particleCount, 51);  // the slider value is left alone
     ASSERT_EQ(scene.Particles().size(), 52u);
     ASSERT_EQ(scene.Joints().size(), 26u);
     std::set<const Particle*> jointed;

@@ -34,7 +34,7 @@ TEST(MomentumScene, BuildsTheBookScene) {
 // carried forward: sphere 0 moves towards -x.
 TEST(MomentumScene, ChainOfImpactsConservesMomentumWithDampingIsolated) {
     MomentumParams params;
-    params.damping = 1.0f;
+    params.velocityFactorPerStep = 1.0f;
     params.gravity = false;
     MomentumScene scene(params);
     const vec3 p0 = scene.TotalMomentum();

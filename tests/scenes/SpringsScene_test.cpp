@@ -60,8 +60,8 @@ TEST(SpringsScene, SettlesOnTheGround) {
 // per step: reported (step and body), not left to overflow.
 TEST(SpringsScene, StiffExplicitEulerIsReported) {
     SpringsParams params;
-    params.k = -5.0f;
-    params.b = 0.0f;
+    params.springK = -5.0f;
+    params.springDamping = 0.0f;
     params.integrator = Integrator::ExplicitEuler;
     SpringsScene scene(params);
     int steps = 0;
