@@ -1,16 +1,18 @@
 // psb-sweep: runs the reference problems over their settings and writes one CSV row per run (issue 7).
-// Exit codes: 0 done, 1 output file could not be written, 2 bad command line.
+// Exit codes: 0 done, 2 bad command line, 3 the output file could not be written (the message names the path and
+// the system error; the file is written whole through a temporary, never left cut mid-row: docs/sweep.md).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "Physics/ContactSolver.h"
+#include "Platform/Files/AtomicFile.h"
+#include "Platform/Files/TempRegistry.h"
 #include "bench/sweep/Sweep.h"
 
 namespace {
@@ -32,6 +34,16 @@ constexpr const char* kUsage =
     "error,cpu_per_sim_s,stable,steps,sim_s,note ('-' = setting not used by the problem; solver = the contact\n"
     "solver of volume problems, book or accumulated; stable = 1 when every sampled state stayed finite and\n"
     "bounded).\n";
+
+constexpr const char* kHeader =
+    "run,problem,integrator,dt,substeps,iterations,projection,solver,param,error,cpu_per_sim_s,stable,steps,sim_s,"
+    "note\n";
+
+/// A failed write of the CSV: the temporary is already removed; exit 3.
+int WriteFailed(const std::string& message) {
+    std::cerr << "psb-sweep: " << message << "\n";
+    return 3;
+}
 
 int Fail(const std::string& message) {
     std::cerr << "psb-sweep: " << message << "\n" << kUsage;
@@ -78,6 +90,7 @@ int main(int argc, char** argv) {
     int shardIndex = 1, shardCount = 1;
     std::string outPath;
 
+    InstallTemporaryCleanupOnSignals("psb-sweep");
     for (int a = 1; a < argc; ++a) {
         const std::string arg = argv[a];
         auto value = [&](std::string* out) {
@@ -175,17 +188,18 @@ int main(int argc, char** argv) {
     for (const Run& r : all)
         if (mine[std::size_t(r.index)]) runs.push_back(r);
 
-    std::ofstream file;
-    if (!outPath.empty()) {
-        file.open(outPath);
-        if (!file) {
-            std::cerr << "psb-sweep: cannot write '" << outPath << "'\n";
-            return 1;
+    // --out: a temporary beside the file, opened before the first run so an unwritable path costs nothing.
+    AtomicFile file;
+    std::string error;
+    const auto emit = [&](const std::string& text) {
+        if (outPath.empty()) {
+            std::cout << text;
+            return bool(std::cout);
         }
-    }
-    std::ostream& out = outPath.empty() ? std::cout : file;
-    out << "run,problem,integrator,dt,substeps,iterations,projection,solver,param,error,cpu_per_sim_s,stable,steps,"
-           "sim_s,note\n";
+        return file.Write(text.data(), text.size(), &error);
+    };
+    if (!outPath.empty() && !file.Open(outPath, &error)) return WriteFailed(error);
+    if (!emit(kHeader)) return WriteFailed(error);
 
     const double start = sweep::CpuNow();
     for (std::size_t r = 0; r < runs.size(); ++r) {
@@ -202,8 +216,7 @@ int main(int argc, char** argv) {
             << (run.problem->paramName.empty() ? std::string("-") : Number(s.param)) << "," << Number(o.error) << ","
             << Number(cost) << "," << (o.stable ? 1 : 0) << "," << o.steps << "," << Number(o.simSeconds) << ","
             << CleanNote(o.note) << "\n";
-        out << row.str();
-        out.flush();
+        if (!emit(row.str())) return WriteFailed(error);
         std::cerr << "[" << (r + 1) << "/" << runs.size() << "] " << run.problem->name << " "
                   << (s.hasIntegrator ? ToString(s.integrator) : "")
                   << (s.solver < 0 ? "" : ToString(ContactSolver(s.solver))) << " dt=" << Number(s.dt)
@@ -211,9 +224,7 @@ int main(int argc, char** argv) {
                   << (o.stable ? "" : " UNSTABLE") << "\n";
     }
     std::cerr << "psb-sweep: " << runs.size() << " runs in " << Number(sweep::CpuNow() - start) << " s CPU\n";
-    if (!outPath.empty() && !file) {
-        std::cerr << "psb-sweep: writing '" << outPath << "' failed\n";
-        return 1;
-    }
+    if (!outPath.empty() && !file.Commit(&error)) return WriteFailed(error);
+    if (outPath.empty() && !(std::cout << std::flush)) return WriteFailed("cannot write to standard output");
     return 0;
 }
