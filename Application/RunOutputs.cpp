@@ -51,7 +51,7 @@ bool IsFrameOrReportName(const std::string& name) {
 
 int CheckStatePath(const Options& o) {
     std::string error;
-    if (!CheckWritableTarget(o.stateFile, &error)) return Usage("--state " + error);
+    if (!CheckWritableTarget(o.stateFile, &error)) return Usage("--state: " + error);
     const fs::path state(o.stateFile);
     const std::string parent = state.parent_path().empty() ? "." : state.parent_path().string();
     for (const std::string& dir : {o.updateGolden ? o.compareDir : o.outDir, o.compareDir})
