@@ -3,21 +3,25 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 namespace {
 
-bool ParseLong(const std::string& text, long* out) {
-    if (text.empty()) return false;
+// ---- Value parsers: one per value type, each checked against the flag's range.
+
+/// A base-10 integer in [min, max]; rejects junk, empty text and anything that overflows long long.
+bool ParseCheckedInt(const std::string& text, long long min, long long max, long long* out) {
+    if (text.empty() || text.find_first_not_of("+-0123456789") != std::string::npos) return false;
     char* end = nullptr;
     errno = 0;
-    const long v = std::strtol(text.c_str(), &end, 10);
-    if (errno != 0 || *end != '\0') return false;
+    const long long v = std::strtoll(text.c_str(), &end, 10);
+    if (errno != 0 || *end != '\0' || v < min || v > max) return false;
     *out = v;
     return true;
 }
 
-bool ParseFloat(const std::string& text, float* out) {
+bool ParseFiniteFloat(const std::string& text, float* out) {
     if (text.empty()) return false;
     char* end = nullptr;
     errno = 0;
@@ -27,225 +31,270 @@ bool ParseFloat(const std::string& text, float* out) {
     return true;
 }
 
-bool ParseSize(const std::string& text, int* w, int* h) {
-    const std::size_t x = text.find('x');
-    long a = 0, b = 0;
-    if (x == std::string::npos || !ParseLong(text.substr(0, x), &a) || !ParseLong(text.substr(x + 1), &b)) return false;
-    if (a < 16 || b < 16 || a > 8192 || b > 8192) return false;
-    *w = int(a);
-    *h = int(b);
-    return true;
+std::vector<std::string> Split(const std::string& text, char separator) {
+    std::vector<std::string> parts;
+    std::size_t start = 0;
+    for (;;) {
+        const std::size_t at = text.find(separator, start);
+        parts.push_back(text.substr(start, at == std::string::npos ? std::string::npos : at - start));
+        if (at == std::string::npos) return parts;
+        start = at + 1;
+    }
 }
 
-bool ParseFrameList(const std::string& text, std::vector<int>* out) {
+// ---- The flag table: every flag once, with its value type, range and help text.
+
+enum class ValueType { None, Int, Float, Rational, Text, Size, FrameList, Vector3, KeyValue };
+
+/// A parsed value; the field that matches the flag's ValueType is set.
+struct FlagValue {
+    long long integer = 0;
+    float real = 0.0f;
+    Rational rational;
+    std::string text;
+    int width = 0, height = 0;
+    std::vector<int> frames;
+    float vector[3] = {0.0f, 0.0f, 0.0f};
+};
+
+struct Flag {
+    const char* name;     ///< "--frames"
+    const char* metavar;  ///< "N" in the help; "" for a flag without a value
+    ValueType type;
+    double min, max;  ///< inclusive range of Int, Float and Rational values (and of each Size side, list entry)
+    const char* help;
+    void (*apply)(Options& o, const FlagValue& v);
+};
+
+constexpr double kMaxFrames = 100000000;
+
+const Flag kFlags[] = {
+    {"--help", "", ValueType::None, 0, 0, "this text",
+     [](Options& o, const FlagValue&) { o.mode = Options::Mode::Help; }},
+    {"--list", "", ValueType::None, 0, 0, "print the demos: id, a tab, the title; one per line",
+     [](Options& o, const FlagValue&) { o.mode = Options::Mode::List; }},
+    {"--demo", "ID", ValueType::Text, 0, 0, "the demo to run (see --list)",
+     [](Options& o, const FlagValue& v) { o.demo = v.text; }},
+    {"--frames", "N", ValueType::Int, 1, kMaxFrames,
+     "output frames to run (default 1); one frame = 1/60 s of simulated time",
+     [](Options& o, const FlagValue& v) { o.frames = int(v.integer); }},
+    {"--out", "DIR", ValueType::Text, 0, 0,
+     "write DIR/frame_00000.png ... (DIR is created); without it nothing is written",
+     [](Options& o, const FlagValue& v) { o.outDir = v.text; }},
+    {"--size", "WxH", ValueType::Size, 16, 8192, "frame size (default 800x600)",
+     [](Options& o, const FlagValue& v) { o.width = v.width, o.height = v.height; }},
+    {"--set", "KEY=VALUE", ValueType::KeyValue, 0, 0,
+     "set a demo parameter (repeatable, applied in order); the panel shows the value",
+     [](Options& o, const FlagValue& v) {
+         const std::size_t eq = v.text.find('=');
+         o.sets.emplace_back(v.text.substr(0, eq), v.text.substr(eq + 1));
+     }},
+    {"--params", "", ValueType::None, 0, 0, "print the demo's parameters (keys, ranges, values after --set) and exit",
+     [](Options& o, const FlagValue&) { o.showParams = true; }},
+    {"--state", "FILE", ValueType::Text, 0, 0,
+     "write CSV: frame,time,body,kind,x,y,z,vx,vy,vz (one row per body per frame); FILE must not exist or be a "
+     "regular file",
+     [](Options& o, const FlagValue& v) { o.stateFile = v.text; }},
+    {"--no-ui", "", ValueType::None, 0, 0, "hide the ImGui panels",
+     [](Options& o, const FlagValue&) { o.noUi = true; }},
+    {"--camera-yaw", "DEG", ValueType::Float, -360, 360, "orbit camera yaw (rotation.x), replaces the demo's preset",
+     [](Options& o, const FlagValue& v) { o.yaw = v.real, o.hasYaw = true; }},
+    // The book clamps pitch to [-20, 80] when the mouse rotates; +-89 keeps LookAt well defined.
+    {"--camera-pitch", "DEG", ValueType::Float, -89, 89, "orbit camera pitch (rotation.y)",
+     [](Options& o, const FlagValue& v) { o.pitch = v.real, o.hasPitch = true; }},
+    {"--camera-zoom", "D", ValueType::Float, 0.1, 500, "orbit camera distance to its target",
+     [](Options& o, const FlagValue& v) { o.zoom = v.real, o.hasZoom = true; }},
+    {"--camera-target", "X,Y,Z", ValueType::Vector3, 0, 0, "orbit camera target",
+     [](Options& o, const FlagValue& v) { std::copy(v.vector, v.vector + 3, o.target), o.hasTarget = true; }},
+    {"--orbit", "DEG", ValueType::Float, -360, 360, "add DEG of yaw every output frame (turntable)",
+     [](Options& o, const FlagValue& v) { o.orbitDegreesPerFrame = v.real; }},
+    {"--fps", "F", ValueType::Rational, 1, 1000, "output frames per simulated second (default 60; e.g. 62.5)",
+     [](Options& o, const FlagValue& v) { o.frameTime = Reciprocal(v.rational); }},
+    {"--dt", "S", ValueType::Rational, 0.0001, 1, "fixed physics step in seconds (default 0.03 as the book; e.g. 1/30)",
+     [](Options& o, const FlagValue& v) { o.step = v.rational; }},
+    {"--only-frames", "A,B,...", ValueType::FrameList, 0, kMaxFrames,
+     "write (and compare) only these frames; all frames are still simulated",
+     [](Options& o, const FlagValue& v) { o.onlyFrames = v.frames; }},
+    {"--compare", "DIR", ValueType::Text, 0, 0,
+     "compare each written frame with DIR/<same name>; on a mismatch write OUT/mismatch/*.{expected,actual,diff}.png "
+     "and OUT/compare.txt, exit 1 (DIR must not be OUT)",
+     [](Options& o, const FlagValue& v) { o.compareDir = v.text; }},
+    {"--update-golden", "", ValueType::None, 0, 0,
+     "with --compare DIR: rewrite the goldens in DIR instead of comparing",
+     [](Options& o, const FlagValue&) { o.updateGolden = true; }},
+    {"--tolerance", "N", ValueType::Int, 0, 255, "per-channel difference a pixel may have and still match (default 8)",
+     [](Options& o, const FlagValue& v) { o.thresholds.channelTolerance = int(v.integer); }},
+    {"--max-diff", "F", ValueType::Float, 0, 1, "fraction of pixels allowed beyond the tolerance (default 0.002)",
+     [](Options& o, const FlagValue& v) { o.thresholds.maxDifferingFraction = v.real; }},
+    {"--png-level", "N", ValueType::Int, 0, 9, "zlib level (default 3)",
+     [](Options& o, const FlagValue& v) { o.pngLevel = int(v.integer); }},
+    {"--serial-encode", "", ValueType::None, 0, 0, "encode PNGs on the main thread (same files; for measurement)",
+     [](Options& o, const FlagValue&) { o.encodeThread = false; }},
+    {"--progress", "N", ValueType::Int, 0, kMaxFrames, "progress line on stderr every N frames (0 = automatic)",
+     [](Options& o, const FlagValue& v) { o.progressEvery = int(v.integer); }},
+    {"--quiet", "", ValueType::None, 0, 0, "no progress line and no summary",
+     [](Options& o, const FlagValue&) { o.quiet = true; }},
+    {"--debug-nonfinite-at", "N", ValueType::Int, 0, kMaxFrames,
+     "test hook: report frame N as non-finite (exercises exit code 3)",
+     [](Options& o, const FlagValue& v) { o.debugNonFiniteAt = int(v.integer); }},
+};
+
+const Flag* FindFlag(const std::string& name) {
+    if (name == "-h") return &kFlags[0];
+    for (const Flag& f : kFlags)
+        if (name == f.name) return &f;
+    return nullptr;
+}
+
+std::string Number(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.10g", v);
+    return text;
+}
+
+std::string Range(const Flag& f) { return "[" + Number(f.min) + ", " + Number(f.max) + "]"; }
+
+/// What a value of this flag must look like, for the error message.
+std::string Expected(const Flag& f) {
+    switch (f.type) {
+        case ValueType::Int:
+            return "expected an integer in " + Range(f);
+        case ValueType::Float:
+            return "expected a number in " + Range(f);
+        case ValueType::Rational:
+            return "expected a number or fraction (like 1/30) in " + Range(f);
+        case ValueType::Size:
+            return "expected WxH with " + Number(f.min) + " <= W, H <= " + Number(f.max);
+        case ValueType::FrameList:
+            return "expected frame numbers like 0,30,90, each in " + Range(f);
+        case ValueType::Vector3:
+            return "expected x,y,z";
+        case ValueType::KeyValue:
+            return "expected key=value";
+        default:
+            return "expected a non-empty value";
+    }
+}
+
+bool ParseFrameList(const std::string& text, const Flag& f, std::vector<int>* out) {
     out->clear();
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        const std::size_t comma = std::min(text.find(',', start), text.size());
-        long v = 0;
-        if (!ParseLong(text.substr(start, comma - start), &v) || v < 0 || v > 100000000) return false;
+    for (const std::string& part : Split(text, ',')) {
+        long long v = 0;
+        if (!ParseCheckedInt(part, (long long)f.min, (long long)f.max, &v)) return false;
         out->push_back(int(v));
-        start = comma + 1;
     }
     std::sort(out->begin(), out->end());
     out->erase(std::unique(out->begin(), out->end()), out->end());
-    return !out->empty();
+    return true;
+}
+
+/// Parses text as a value of flag f, range included.
+bool ParseValue(const Flag& f, const std::string& text, FlagValue* v) {
+    switch (f.type) {
+        case ValueType::None:
+            return true;
+        case ValueType::Int:
+            return ParseCheckedInt(text, (long long)f.min, (long long)f.max, &v->integer);
+        case ValueType::Float:
+            return ParseFiniteFloat(text, &v->real) && v->real >= f.min && v->real <= f.max;
+        case ValueType::Rational:
+            return ParseRational(text, &v->rational) && v->rational.ToDouble() >= f.min &&
+                   v->rational.ToDouble() <= f.max;
+        case ValueType::Text:
+            v->text = text;
+            return !text.empty();
+        case ValueType::KeyValue:
+            v->text = text;
+            return text.find('=') != std::string::npos && text[0] != '=';
+        case ValueType::FrameList:
+            return ParseFrameList(text, f, &v->frames);
+        case ValueType::Size: {
+            const std::vector<std::string> sides = Split(text, 'x');
+            long long w = 0, h = 0;
+            if (sides.size() != 2 || !ParseCheckedInt(sides[0], (long long)f.min, (long long)f.max, &w) ||
+                !ParseCheckedInt(sides[1], (long long)f.min, (long long)f.max, &h))
+                return false;
+            v->width = int(w), v->height = int(h);
+            return true;
+        }
+        case ValueType::Vector3: {
+            const std::vector<std::string> parts = Split(text, ',');
+            if (parts.size() != 3) return false;
+            for (int k = 0; k < 3; ++k)
+                if (!ParseFiniteFloat(parts[std::size_t(k)], &v->vector[k])) return false;
+            return true;
+        }
+    }
+    return false;
+}
+
+/// Checks the combinations a single flag cannot (after every flag was read).
+bool CheckCombinations(const Options& o, std::string* error) {
+    if (o.mode != Options::Mode::Run) return true;
+    if (o.demo.empty())
+        *error = "no --demo given (see --list for the ids, --help for usage)";
+    else if (o.updateGolden && o.compareDir.empty())
+        *error = "--update-golden needs --compare DIR (the golden directory to rewrite)";
+    else if (!o.compareDir.empty() && !o.updateGolden && o.outDir.empty())
+        *error = "--compare needs --out DIR (frames and mismatch images are written there)";
+    else if (!o.onlyFrames.empty() && o.onlyFrames.back() >= o.frames)
+        *error = "--only-frames " + std::to_string(o.onlyFrames.back()) + " is not below --frames " +
+                 std::to_string(o.frames);
+    else
+        return true;
+    return false;
 }
 
 }  // namespace
 
 ParseStatus ParseCommandLine(int argc, const char* const* argv, Options* o, std::string* error) {
-    bool sawDemo = false;
     for (int i = 1; i < argc; ++i) {
-        std::string flag = argv[i];
-        std::string value;
-        bool hasInlineValue = false;
+        std::string name = argv[i], text;
         // --flag=value is accepted as well as --flag value.
-        if (flag.rfind("--", 0) == 0) {
-            const std::size_t eq = flag.find('=');
-            if (eq != std::string::npos) {
-                value = flag.substr(eq + 1);
-                flag = flag.substr(0, eq);
-                hasInlineValue = true;
-            }
-        }
-        const auto bad = [&](const std::string& why) {
-            *error = flag + " " + value + ": " + why;
+        const std::size_t eq = name.rfind("--", 0) == 0 ? name.find('=') : std::string::npos;
+        const bool inlineValue = eq != std::string::npos;
+        if (inlineValue) text = name.substr(eq + 1), name.resize(eq);
+        const Flag* flag = FindFlag(name);
+        if (!flag) {
+            *error = "unknown option '" + name + "' (see --help)";
             return ParseStatus::Error;
-        };
-        const auto needValue = [&]() {
-            if (hasInlineValue) return true;
-            if (i + 1 >= argc) return false;
-            value = argv[++i];
-            return true;
-        };
-        const auto noValue = [&]() { return !hasInlineValue; };
-
-        if (flag == "--help" || flag == "-h") {
-            if (!noValue()) return bad("takes no value");
-            o->mode = Options::Mode::Help;
-        } else if (flag == "--list") {
-            if (!noValue()) return bad("takes no value");
-            o->mode = Options::Mode::List;
-        } else if (flag == "--no-ui" || flag == "--quiet" || flag == "--update-golden" || flag == "--serial-encode" ||
-                   flag == "--params") {
-            if (!noValue()) return bad("takes no value");
-            if (flag == "--params") o->showParams = true;
-            if (flag == "--no-ui") o->noUi = true;
-            if (flag == "--quiet") o->quiet = true;
-            if (flag == "--update-golden") o->updateGolden = true;
-            if (flag == "--serial-encode") o->encodeThread = false;
-        } else {
-            // Every other flag takes a value.
-            static const char* const valued[] = {
-                "--demo",      "--frames",     "--out",          "--size",        "--set",
-                "--state",     "--camera-yaw", "--camera-pitch", "--camera-zoom", "--camera-target",
-                "--orbit",     "--fps",        "--dt",           "--only-frames", "--compare",
-                "--tolerance", "--max-diff",   "--png-level",    "--progress",    "--debug-nonfinite-at"};
-            if (std::find_if(std::begin(valued), std::end(valued), [&](const char* f) { return flag == f; }) ==
-                std::end(valued)) {
-                *error = "unknown option '" + flag + "' (see --help)";
-                return ParseStatus::Error;
-            }
-            if (!needValue()) {
-                *error = flag + " needs a value (see --help)";
-                return ParseStatus::Error;
-            }
-            long n = 0;
-            float f = 0.0f;
-            if (flag == "--demo") {
-                if (value.empty()) return bad("empty demo id (see --list)");
-                o->demo = value;
-                sawDemo = true;
-            } else if (flag == "--frames") {
-                if (!ParseLong(value, &n) || n < 1 || n > 100000000)
-                    return bad("the frame count must be an integer from 1 to 100000000");
-                o->frames = int(n);
-            } else if (flag == "--out") {
-                if (value.empty()) return bad("empty directory");
-                o->outDir = value;
-            } else if (flag == "--size") {
-                if (!ParseSize(value, &o->width, &o->height)) return bad("expected WxH with 16 <= W, H <= 8192");
-            } else if (flag == "--set") {
-                const std::size_t eq = value.find('=');
-                if (eq == std::string::npos || eq == 0) return bad("expected key=value");
-                o->sets.emplace_back(value.substr(0, eq), value.substr(eq + 1));
-            } else if (flag == "--state") {
-                if (value.empty()) return bad("empty file name");
-                o->stateFile = value;
-            } else if (flag == "--camera-yaw") {
-                if (!ParseFloat(value, &f) || std::fabs(f) > 360.0f) return bad("expected degrees in [-360, 360]");
-                o->yaw = f, o->hasYaw = true;
-            } else if (flag == "--camera-pitch") {
-                // The book clamps pitch to [-20, 80] when the mouse rotates; +-89 keeps LookAt well defined.
-                if (!ParseFloat(value, &f) || std::fabs(f) > 89.0f) return bad("expected degrees in [-89, 89]");
-                o->pitch = f, o->hasPitch = true;
-            } else if (flag == "--camera-zoom") {
-                if (!ParseFloat(value, &f) || f < 0.1f || f > 500.0f) return bad("expected a distance in [0.1, 500]");
-                o->zoom = f, o->hasZoom = true;
-            } else if (flag == "--camera-target") {
-                float t[3];
-                std::size_t start = 0;
-                for (int k = 0; k < 3; ++k) {
-                    const std::size_t comma = k < 2 ? value.find(',', start) : value.size();
-                    if (comma == std::string::npos || !ParseFloat(value.substr(start, comma - start), &t[k]))
-                        return bad("expected x,y,z");
-                    start = comma + 1;
-                }
-                std::copy(t, t + 3, o->target);
-                o->hasTarget = true;
-            } else if (flag == "--orbit") {
-                if (!ParseFloat(value, &f) || std::fabs(f) > 360.0f)
-                    return bad("expected degrees of yaw per frame in [-360, 360]");
-                o->orbitDegreesPerFrame = f;
-            } else if (flag == "--fps") {
-                Rational r;
-                if (!ParseRational(value, &r) || r.ToDouble() < 1.0 || r.ToDouble() > 1000.0)
-                    return bad("expected frames per simulated second in [1, 1000], e.g. 60 or 62.5");
-                o->frameTime = Reciprocal(r);
-            } else if (flag == "--dt") {
-                Rational r;
-                if (!ParseRational(value, &r) || r.ToDouble() < 0.0001 || r.ToDouble() > 1.0)
-                    return bad("expected a physics step in seconds in [0.0001, 1], e.g. 0.03 or 1/30");
-                o->step = r;
-            } else if (flag == "--only-frames") {
-                if (!ParseFrameList(value, &o->onlyFrames)) return bad("expected frame numbers like 0,30,90");
-            } else if (flag == "--compare") {
-                if (value.empty()) return bad("empty directory");
-                o->compareDir = value;
-            } else if (flag == "--tolerance") {
-                if (!ParseLong(value, &n) || n < 0 || n > 255) return bad("expected a channel difference 0..255");
-                o->thresholds.channelTolerance = int(n);
-            } else if (flag == "--max-diff") {
-                if (!ParseFloat(value, &f) || f < 0.0f || f > 1.0f) return bad("expected a pixel fraction in [0, 1]");
-                o->thresholds.maxDifferingFraction = f;
-            } else if (flag == "--png-level") {
-                if (!ParseLong(value, &n) || n < 0 || n > 9) return bad("expected a zlib level 0..9");
-                o->pngLevel = int(n);
-            } else if (flag == "--progress") {
-                if (!ParseLong(value, &n) || n < 0 || n > 100000000)
-                    return bad("expected a frame interval (0 = automatic)");
-                o->progressEvery = int(n);
-            } else if (flag == "--debug-nonfinite-at") {
-                if (!ParseLong(value, &n) || n < 0) return bad("expected a frame number");
-                o->debugNonFiniteAt = int(n);
-            }
         }
+        if (flag->type == ValueType::None && inlineValue) {
+            *error = name + " " + text + ": takes no value";
+            return ParseStatus::Error;
+        }
+        if (flag->type != ValueType::None && !inlineValue) {
+            if (i + 1 >= argc) {
+                *error = name + " needs a value (see --help)";
+                return ParseStatus::Error;
+            }
+            text = argv[++i];
+        }
+        FlagValue value;
+        if (!ParseValue(*flag, text, &value)) {
+            *error = name + " " + text + ": " + Expected(*flag);
+            return ParseStatus::Error;
+        }
+        flag->apply(*o, value);
     }
-    if (o->mode != Options::Mode::Run) return ParseStatus::Ok;
-    if (!sawDemo) {
-        *error = "no --demo given (see --list for the ids, --help for usage)";
-        return ParseStatus::Error;
-    }
-    if (o->updateGolden && o->compareDir.empty()) {
-        *error = "--update-golden needs --compare DIR (the golden directory to rewrite)";
-        return ParseStatus::Error;
-    }
-    if (!o->compareDir.empty() && !o->updateGolden && o->outDir.empty()) {
-        *error = "--compare needs --out DIR (frames and mismatch images are written there)";
-        return ParseStatus::Error;
-    }
-    if (!o->onlyFrames.empty() && o->onlyFrames.back() >= o->frames) {
-        *error = "--only-frames " + std::to_string(o->onlyFrames.back()) + " is not below --frames " +
-                 std::to_string(o->frames);
-        return ParseStatus::Error;
-    }
-    return ParseStatus::Ok;
+    return CheckCombinations(*o, error) ? ParseStatus::Ok : ParseStatus::Error;
 }
 
 std::string UsageText() {
-    return R"(Usage: physics-sandbox --demo ID [options]
-       physics-sandbox --list | --help
-
-Renders a demo of the Game Physics Cookbook (ch. 14-16) off-screen (OSMesa, llvmpipe) to PNG frames.
-
-  --list                 print the demos: id, a tab, the title; one per line
-  --demo ID              the demo to run (see --list)
-  --frames N             output frames to run (default 1); one frame = 1/60 s of simulated time
-  --out DIR              write DIR/frame_00000.png ... (DIR is created); without it nothing is written
-  --size WxH             frame size (default 800x600)
-  --set KEY=VALUE        set a demo parameter (repeatable, applied in order); the panel shows the value
-  --params               print the demo's parameters (keys, ranges, values after --set) and exit
-  --state FILE           write CSV: frame,time,body,kind,x,y,z,vx,vy,vz (one row per body per frame)
-  --no-ui                hide the ImGui panels
-  --camera-yaw DEG       orbit camera yaw (rotation.x), replaces the demo's preset
-  --camera-pitch DEG     orbit camera pitch (rotation.y), in [-89, 89]
-  --camera-zoom D        orbit camera distance to its target
-  --camera-target X,Y,Z  orbit camera target
-  --orbit DEG            add DEG of yaw every output frame (turntable)
-  --fps F                output frames per simulated second (default 60)
-  --dt S                 fixed physics step in seconds (default 0.03 as the book; e.g. 1/30)
-  --only-frames A,B,...  write (and compare) only these frames; all frames are still simulated
-  --compare DIR          compare each written frame with DIR/<same name>; on a mismatch write
-                         OUT/mismatch/*.{expected,actual,diff}.png and OUT/compare.txt, exit 1
-  --update-golden        with --compare DIR: rewrite the goldens in DIR instead of comparing
-  --tolerance N          per-channel difference a pixel may have and still match (default 8)
-  --max-diff F           fraction of pixels allowed beyond the tolerance (default 0.002)
-  --png-level N          zlib level 0..9 (default 3)
-  --serial-encode        encode PNGs on the main thread (same files; for measurement)
-  --progress N           progress line on stderr every N frames (default: automatic)
-  --quiet                no progress line and no summary
-
-Exit codes: 0 success, 1 golden mismatch, 2 bad usage (nothing written), 3 failure while running.
-)";
+    std::string text =
+        "Usage: physics-sandbox --demo ID [options]\n"
+        "       physics-sandbox --list | --help\n\n"
+        "Renders a demo of the Game Physics Cookbook (ch. 14-16) off-screen (OSMesa, llvmpipe) to PNG frames.\n\n";
+    for (const Flag& f : kFlags) {
+        std::string head = std::string("  ") + f.name + (*f.metavar ? " " : "") + f.metavar;
+        head.resize(std::max<std::size_t>(head.size() + 2, 25), ' ');
+        std::string help = f.help;
+        if (f.type == ValueType::Int || f.type == ValueType::Float || f.type == ValueType::Rational)
+            help += "; " + Range(f);
+        text += head + help + "\n";
+    }
+    text +=
+        "\nExit codes: 0 success, 1 golden mismatch, 2 bad usage (nothing written), 3 failure while running\n"
+        "(also a detected blow-up, an unwritable output, out of memory), 130/143 interrupted by SIGINT/SIGTERM.\n";
+    return text;
 }

@@ -1,6 +1,8 @@
 #pragma once
-// The physics-sandbox command line (docs/app.md). Parsing is GL-free and knows no demo: the runner checks
-// the demo id and the --set keys against the registry before it writes anything.
+// The physics-sandbox command line (docs/app.md). Every flag is defined once, in the table in CommandLine.cpp
+// (name, value type, inclusive range, help text); the parser and --help both read it. Parsing is GL-free and
+// knows no demo: the runner checks the demo id and the --set keys against the registry before it writes
+// anything.
 
 #include <string>
 #include <utility>
@@ -49,7 +51,7 @@ struct Options {
 enum class ParseStatus { Ok, Error };
 
 /// Parses argv[1..]. On error returns ParseStatus::Error and sets *error to a one-line message that names
-/// the flag and the bad value. Does not touch the file system.
+/// the flag, the bad value and what was expected (the flag's range). Does not touch the file system.
 ParseStatus ParseCommandLine(int argc, const char* const* argv, Options* options, std::string* error);
-/// The --help text.
+/// The --help text, generated from the flag table.
 std::string UsageText();

@@ -29,7 +29,11 @@ struct RunStats {
 /// Exit codes of physics-sandbox.
 enum ExitCode { kExitOk = 0, kExitMismatch = 1, kExitUsage = 2, kExitFailure = 3 };
 
-/// Runs one parsed command line (Mode::Run). Returns an ExitCode; messages go to stderr.
+/// Runs one parsed command line (Mode::Run). Returns an ExitCode; messages go to stderr. Out of memory is
+/// exit 3 with a message, the run's partial output removed.
 int RunSandbox(const Options& options, RunStats* stats);
-/// The whole program: parse, --help, --list, run.
+/// Flushes stdout after --help, --list or --params: kExitOk, or kExitFailure with a message when the output
+/// could not be written (a full disk, a closed pipe).
+int FinishStdout();
+/// The whole program: installs the signal policy (Platform/Files/TempRegistry.h), parses, --help, --list, run.
 int RunCommandLine(int argc, const char* const* argv);

@@ -20,6 +20,12 @@ public:
     void ImGUI() override;
     /// One "cloth-particle" row per cloth particle, index z*N + x.
     void CollectState(std::vector<BodyState>* out) const override;
+    /// The stability monitor's report once it has failed.
+    bool Unstable(std::string* report) const override {
+        if (scene.Monitor().Stable()) return false;
+        *report = scene.Monitor().Report().message;
+        return true;
+    }
 
     const Ch16Scene& Scene() const { return scene; }
 

@@ -51,6 +51,9 @@ public:
     virtual void ScriptFrame(int /*frame*/) {}
     /// False if any collected body state is non-finite; *where then names the body and the value.
     bool StateIsFinite(std::string* where) const;
+    /// True once the demo's stability monitor has reported a blow-up (the world is then frozen); *report is
+    /// the monitor's one-line message. Demos without a monitor are never unstable.
+    virtual bool Unstable(std::string* /*report*/) const { return false; }
 
 protected:
     /// The demo's panel: BeginDemoPanel, the parameter table's widgets (DrawParameterPanel), End.

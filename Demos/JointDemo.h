@@ -20,6 +20,12 @@ public:
     void ImGUI() override;
     /// One "particle" row per particle, in spawn order.
     void CollectState(std::vector<BodyState>* out) const override;
+    /// The stability monitor's report once it has failed.
+    bool Unstable(std::string* report) const override {
+        if (scene.Monitor().Stable()) return false;
+        *report = scene.Monitor().Report().message;
+        return true;
+    }
 
     const JointScene& Scene() const { return scene; }
 

@@ -21,6 +21,12 @@ public:
     void ImGUI() override;
     /// One "particle" row per particle: 0 heavy, 1 light.
     void CollectState(std::vector<BodyState>* out) const override;
+    /// The stability monitor's report once it has failed.
+    bool Unstable(std::string* report) const override {
+        if (scene.Monitor().Stable()) return false;
+        *report = scene.Monitor().Report().message;
+        return true;
+    }
 
     const SpringsScene& Scene() const { return scene; }
 

@@ -1,6 +1,25 @@
 #include "Platform/EncodeQueue.h"
 
 #include <chrono>
+#include <exception>
+#include <new>
+
+namespace {
+
+// A job that throws (std::bad_alloc on a huge frame) fails like one that returns false; nothing escapes the
+// worker thread, where an exception would end the process.
+bool RunJob(const EncodeQueue::Job& job, std::string* error) {
+    try {
+        return job(error);
+    } catch (const std::bad_alloc&) {
+        *error = "out of memory while encoding or comparing a frame";
+    } catch (const std::exception& e) {
+        *error = std::string("frame job failed: ") + e.what();
+    }
+    return false;
+}
+
+}  // namespace
 
 EncodeQueue::EncodeQueue(std::size_t cap, bool useThread) : capacity(cap < 1 ? 1 : cap), threaded(useThread) {
     if (threaded) worker = std::thread(&EncodeQueue::WorkerLoop, this);
@@ -19,7 +38,7 @@ bool EncodeQueue::Push(Job job) {
     if (!threaded) {
         if (failed) return false;
         std::string error;
-        if (!job(&error)) {
+        if (!RunJob(job, &error)) {
             failed = true;
             firstError = error;
         }
@@ -59,7 +78,7 @@ void EncodeQueue::WorkerLoop() {
         running = true;
         lock.unlock();
         std::string error;
-        const bool ok = job(&error);
+        const bool ok = RunJob(job, &error);
         lock.lock();
         running = false;
         if (!ok && !failed) {

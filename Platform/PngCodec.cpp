@@ -1,7 +1,6 @@
 #include "Platform/PngCodec.h"
 
 #include <png.h>
-#include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -28,6 +27,65 @@ void OnPngError(png_structp png, png_const_charp message) {
 }
 
 void OnPngWarning(png_structp, png_const_charp) {}
+
+// Reading from memory: libpng asks for n bytes at a time; running out is an error, never a read past the end.
+struct ReadSource {
+    const std::uint8_t* data;
+    std::size_t size;
+    std::size_t pos;
+};
+
+void ReadBytes(png_structp png, png_bytep out, png_size_t n) {
+    auto* source = static_cast<ReadSource*>(png_get_io_ptr(png));
+    if (n > source->size - source->pos) png_error(png, "truncated PNG");
+    std::memcpy(out, source->data + source->pos, n);
+    source->pos += n;
+}
+
+// The libpng read state; the functions that call libpng below keep only C state between setjmp and return.
+struct PngReader {
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    ReadSource source;
+    char message[256] = "libpng could not allocate its state";
+    explicit PngReader(const std::vector<std::uint8_t>& bytes) : source{bytes.data(), bytes.size(), 0} {
+        png = png_create_read_struct(PNG_LIBPNG_VER_STRING, message, OnPngError, OnPngWarning);
+        if (png) info = png_create_info_struct(png);
+    }
+    ~PngReader() {
+        if (png) png_destroy_read_struct(&png, info ? &info : nullptr, nullptr);
+    }
+    PngReader(const PngReader&) = delete;
+    PngReader& operator=(const PngReader&) = delete;
+};
+
+bool ReadInfo(PngReader* r, png_uint_32* width, png_uint_32* height) {
+    if (!r->png || !r->info) return false;
+    if (setjmp(png_jmpbuf(r->png))) return false;
+    // The header's own size is reported as it is; the decode is refused by the caller, before any allocation.
+    png_set_user_limits(r->png, 0x7fffffffu, 0x7fffffffu);
+    png_set_read_fn(r->png, &r->source, ReadBytes);
+    png_read_info(r->png, r->info);
+    *width = png_get_image_width(r->png, r->info);
+    *height = png_get_image_height(r->png, r->info);
+    return true;
+}
+
+// Any colour type and depth to 8-bit RGBA: palette and low-depth grey expanded, tRNS to alpha, 16-bit
+// channels to their high byte (v16 = 257 * v8 gives back v8; no gamma is applied), grey to RGB, opaque
+// alpha added where there is none.
+bool ReadRgbaRows(PngReader* r, png_uint_32 width, png_bytepp rows) {
+    if (setjmp(png_jmpbuf(r->png))) return false;
+    png_set_expand(r->png);
+    png_set_strip_16(r->png);
+    png_set_gray_to_rgb(r->png);
+    png_set_add_alpha(r->png, 0xff, PNG_FILLER_AFTER);
+    png_set_interlace_handling(r->png);
+    png_read_update_info(r->png, r->info);
+    if (png_get_rowbytes(r->png, r->info) != png_size_t(width) * 4) png_error(r->png, "unexpected row layout");
+    png_read_image(r->png, rows);
+    return true;
+}
 
 // Everything between setjmp and the end is C state only, so the longjmp skips no destructor.
 bool EncodeRows(const Image& img, const PngOptions& options, WriteTarget* target, char* message) {
@@ -70,39 +128,47 @@ bool EncodePng(const Image& img, const PngOptions& options, std::vector<std::uin
     return true;
 }
 
+bool ReadPngHeader(const std::vector<std::uint8_t>& bytes, int* width, int* height, std::string* error) {
+    PngReader reader(bytes);
+    png_uint_32 w = 0, h = 0;
+    if (!ReadInfo(&reader, &w, &h)) {
+        *error = std::string("not a PNG: ") + reader.message;
+        return false;
+    }
+    *width = int(w);
+    *height = int(h);
+    return true;
+}
+
 bool DecodePng(const std::vector<std::uint8_t>& bytes, Image* img, std::string* error) {
-    png_image image;
-    std::memset(&image, 0, sizeof image);
-    image.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_memory(&image, bytes.data(), bytes.size())) {
-        *error = std::string("not a PNG: ") + image.message;
+    PngReader reader(bytes);
+    png_uint_32 w = 0, h = 0;
+    if (!ReadInfo(&reader, &w, &h)) {
+        *error = std::string("not a PNG: ") + reader.message;
         return false;
     }
-    image.format = PNG_FORMAT_RGB;
-    Image result(int(image.width), int(image.height));
-    if (!png_image_finish_read(&image, nullptr, result.rgb.data(), 0, nullptr)) {
-        *error = std::string("PNG decode failed: ") + image.message;
-        png_image_free(&image);
+    if (w > png_uint_32(kMaxPngSide) || h > png_uint_32(kMaxPngSide)) {
+        *error = "PNG of " + std::to_string(w) + "x" + std::to_string(h) + " is larger than " +
+                 std::to_string(kMaxPngSide) + "x" + std::to_string(kMaxPngSide);
         return false;
     }
+    std::vector<std::uint8_t> rgba(std::size_t(w) * h * 4);
+    std::vector<png_bytep> rows(h);
+    for (png_uint_32 y = 0; y < h; ++y) rows[y] = rgba.data() + std::size_t(y) * w * 4;
+    if (!ReadRgbaRows(&reader, w, rows.data())) {
+        *error = std::string("PNG decode failed: ") + reader.message;
+        return false;
+    }
+    Image result(static_cast<int>(w), static_cast<int>(h));
+    for (std::size_t p = 0, n = std::size_t(w) * h; p < n; ++p)
+        std::memcpy(&result.rgb[p * 3], &rgba[p * 4], 3);  // alpha dropped: frames are opaque
     *img = std::move(result);
     return true;
 }
 
 bool ReadFileBytes(const std::string& path, std::vector<std::uint8_t>* bytes, std::string* error) {
-    std::FILE* f = std::fopen(path.c_str(), "rb");
-    if (!f) {
-        *error = "cannot read " + path + ": " + std::strerror(errno);
-        return false;
-    }
-    bytes->clear();
-    std::uint8_t buffer[65536];
-    std::size_t n = 0;
-    while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) bytes->insert(bytes->end(), buffer, buffer + n);
-    const bool ok = !std::ferror(f);
-    std::fclose(f);
-    if (!ok) *error = "read error on " + path;
-    return ok;
+    ReadFailure failure = ReadFailure::None;
+    return ReadRegularFile(path, kMaxPngFileBytes, bytes, &failure, error);
 }
 
 bool ReadPngFile(const std::string& path, Image* img, std::string* error) {
@@ -112,28 +178,5 @@ bool ReadPngFile(const std::string& path, Image* img, std::string* error) {
         *error = path + ": " + *error;
         return false;
     }
-    return true;
-}
-
-bool WriteFileAtomic(const std::string& path, const std::vector<std::uint8_t>& bytes, std::string* error) {
-    // The temporary sits beside the target (same file system, so rename is atomic) and is hidden.
-    const std::size_t slash = path.find_last_of('/');
-    const std::string dir = slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
-    const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
-    const std::string temp = dir + "." + base + ".tmp";
-    const auto fail = [&](const char* what) {
-        *error = "cannot write " + path + " (" + what + " " + temp + "): " + std::strerror(errno);
-        std::remove(temp.c_str());
-        return false;
-    };
-    std::FILE* f = std::fopen(temp.c_str(), "wb");
-    if (!f) {
-        *error = "cannot write " + path + " (creating " + temp + "): " + std::strerror(errno);
-        return false;
-    }
-    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-    const bool closed = std::fclose(f) == 0;
-    if (!written || !closed) return fail("writing");
-    if (std::rename(temp.c_str(), path.c_str()) != 0) return fail("renaming");
     return true;
 }

@@ -3,13 +3,17 @@ add_executable(psb-sweep ${CMAKE_CURRENT_LIST_DIR}/sweep/SweepMain.cpp ${CMAKE_C
                          ${CMAKE_CURRENT_LIST_DIR}/sweep/ProblemsParticle.cpp
                          ${CMAKE_CURRENT_LIST_DIR}/sweep/ProblemsRigid.cpp
                          ${CMAKE_CURRENT_LIST_DIR}/sweep/ProblemsCloth.cpp)
-target_link_libraries(psb-sweep PRIVATE psb_scenes psb_physics psb_options)
+target_link_libraries(psb-sweep PRIVATE psb_scenes psb_physics psb_files psb_options)
 
 # CI runs the small grid and checks what its numbers must show (tests/bench/sweep_quick_test.sh).
 if(PSB_BUILD_TESTS)
   add_test(NAME sweep.quick COMMAND sh ${PROJECT_SOURCE_DIR}/tests/bench/sweep_quick_test.sh
                                     $<TARGET_FILE:psb-sweep> ${CMAKE_CURRENT_BINARY_DIR}/sweep-quick)
   set_tests_properties(sweep.quick PROPERTIES LABELS bench TIMEOUT 600)
+  # The CSV is written whole or not at all: a write failure (file-size limit) is exit 3, no file, no temporary.
+  add_test(NAME sweep.output COMMAND sh ${PROJECT_SOURCE_DIR}/tests/app/sweep_output_test.sh $<TARGET_FILE:psb-sweep>
+                                     ${CMAKE_CURRENT_BINARY_DIR}/sweep-output)
+  set_tests_properties(sweep.output PROPERTIES LABELS bench TIMEOUT 120)
 endif()
 
 # CI runs the shards through GNU parallel and the Slurm script, and checks the merges against one unsharded run

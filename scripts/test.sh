@@ -20,7 +20,10 @@ ctest --test-dir build --output-on-failure -j"$jobs"
 
 if [ "${PSB_SKIP_SANITIZERS:-0}" != "1" ]; then
   step "sanitizer build (ASan + UBSan)"
-  cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPSB_SANITIZE=ON -DPSB_WERROR=ON -DPSB_BUILD_BENCH=OFF
+  # The benchmarks stay out (timings mean nothing under sanitizers); psb-sweep and its CTests (sweep.quick,
+  # sweep.output) are built and run, so its problems and its output path are checked too.
+  cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPSB_SANITIZE=ON -DPSB_WERROR=ON -DPSB_BUILD_BENCH=OFF \
+    -DPSB_BUILD_SWEEP=ON
   cmake --build build-asan -j"$jobs"
   step "tests (ASan + UBSan)"
   # Mesa's llvmpipe is not instrumented; its one-time allocations are not leaks of ours.

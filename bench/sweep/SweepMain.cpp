@@ -1,16 +1,18 @@
 // psb-sweep: runs the reference problems over their settings and writes one CSV row per run (issue 7).
-// Exit codes: 0 done, 1 output file could not be written, 2 bad command line.
+// Exit codes: 0 done, 2 bad command line, 3 the output file could not be written (the message names the path and
+// the system error; the file is written whole through a temporary, never left cut mid-row: docs/sweep.md).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "Physics/ContactSolver.h"
+#include "Platform/Files/AtomicFile.h"
+#include "Platform/Files/TempRegistry.h"
 #include "bench/sweep/Sweep.h"
 
 namespace {
@@ -32,6 +34,16 @@ constexpr const char* kUsage =
     "error,cpu_per_sim_s,stable,steps,sim_s,note ('-' = setting not used by the problem; solver = the contact\n"
     "solver of volume problems, book or accumulated; stable = 1 when every sampled state stayed finite and\n"
     "bounded).\n";
+
+constexpr const char* kHeader =
+    "run,problem,integrator,dt,substeps,iterations,projection,solver,param,error,cpu_per_sim_s,stable,steps,sim_s,"
+    "note\n";
+
+/// A failed write of the CSV: the temporary is already removed; exit 3.
+int WriteFailed(const std::string& message) {
+    std::cerr << "psb-sweep: " << message << "\n";
+    return 3;
+}
 
 int Fail(const std::string& message) {
     std::cerr << "psb-sweep: " << message << "\n" << kUsage;
@@ -68,142 +80,147 @@ bool ParseShard(const std::string& text, int* index, int* count) {
     return true;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    using sweep::Problem;
-    const std::vector<Problem>& problems = sweep::AllProblems();
-    std::vector<const Problem*> selected;
+struct Arguments {
+    std::vector<const sweep::Problem*> selected;
     bool quick = false, list = false;
     int shardIndex = 1, shardCount = 1;
     std::string outPath;
+};
 
+int AddProblem(const std::string& name, Arguments* args) {
+    const std::vector<sweep::Problem>& problems = sweep::AllProblems();
+    const sweep::Problem* found = nullptr;
+    for (const sweep::Problem& p : problems)
+        if (p.name == name) found = &p;
+    if (found == nullptr) {
+        std::string names;
+        for (const sweep::Problem& p : problems) names += (names.empty() ? "" : ", ") + p.name;
+        return Fail("unknown problem '" + name + "'; valid: " + names);
+    }
+    if (std::find(args->selected.begin(), args->selected.end(), found) == args->selected.end())
+        args->selected.push_back(found);
+    return -1;
+}
+
+int SetStepSizes(const std::string& text) {
+    std::vector<double> dts;
+    std::stringstream list(text);
+    std::string item;
+    while (std::getline(list, item, ',')) {
+        char* end = nullptr;
+        const double dt = std::strtod(item.c_str(), &end);
+        if (item.empty() || *end != '\0' || !(dt >= 1e-6 && dt <= 1.0))
+            return Fail("bad --dt value '" + item + "': expected a number of seconds in [1e-6, 1]");
+        dts.push_back(dt);
+    }
+    if (dts.empty()) return Fail("--dt needs at least one step size");
+    sweep::OverrideStepSizes(dts);
+    return -1;
+}
+
+/// Reads the command line into *args. Returns -1 to go on, else the exit code (--help: 0, bad input: 2).
+int ParseArguments(int argc, char** argv, Arguments* args) {
     for (int a = 1; a < argc; ++a) {
         const std::string arg = argv[a];
-        auto value = [&](std::string* out) {
-            if (a + 1 >= argc) return false;
-            *out = argv[++a];
-            return true;
-        };
-        std::string v;
+        const bool hasValue = a + 1 < argc;
+        const std::string v = hasValue ? argv[a + 1] : "";
+        int code = -1;
         if (arg == "--help" || arg == "-h") {
             std::cout << kUsage;
             return 0;
         } else if (arg == "--list") {
-            list = true;
+            args->list = true;
         } else if (arg == "--quick") {
-            quick = true;
+            args->quick = true;
         } else if (arg == "--problem") {
-            if (!value(&v)) return Fail("--problem needs a name");
-            const Problem* found = nullptr;
-            for (const Problem& p : problems)
-                if (p.name == v) found = &p;
-            if (found == nullptr) {
-                std::string names;
-                for (const Problem& p : problems) names += (names.empty() ? "" : ", ") + p.name;
-                return Fail("unknown problem '" + v + "'; valid: " + names);
-            }
-            bool dup = false;
-            for (const Problem* p : selected) dup = dup || p == found;
-            if (!dup) selected.push_back(found);
+            code = hasValue ? AddProblem(v, args) : Fail("--problem needs a name");
         } else if (arg == "--shard") {
-            if (!value(&v)) return Fail("--shard needs I/N");
-            if (!ParseShard(v, &shardIndex, &shardCount))
+            if (!hasValue) return Fail("--shard needs I/N");
+            if (!ParseShard(v, &args->shardIndex, &args->shardCount))
                 return Fail("bad --shard '" + v + "': expected I/N with integers 1 <= I <= N");
         } else if (arg == "--dt") {
-            if (!value(&v)) return Fail("--dt needs a comma-separated list of step sizes");
-            std::vector<double> dts;
-            std::stringstream list(v);
-            std::string item;
-            while (std::getline(list, item, ',')) {
-                char* end = nullptr;
-                const double dt = std::strtod(item.c_str(), &end);
-                if (item.empty() || *end != '\0' || !(dt >= 1e-6 && dt <= 1.0))
-                    return Fail("bad --dt value '" + item + "': expected a number of seconds in [1e-6, 1]");
-                dts.push_back(dt);
-            }
-            if (dts.empty()) return Fail("--dt needs at least one step size");
-            sweep::OverrideStepSizes(dts);
+            code = hasValue ? SetStepSizes(v) : Fail("--dt needs a comma-separated list of step sizes");
         } else if (arg == "--out") {
-            if (!value(&v) || v.empty()) return Fail("--out needs a file name");
-            outPath = v;
+            if (!hasValue || v.empty()) return Fail("--out needs a file name");
+            args->outPath = v;
         } else {
             return Fail("unknown argument '" + arg + "'");
         }
+        if (code >= 0) return code;
+        if (arg == "--problem" || arg == "--shard" || arg == "--dt" || arg == "--out") ++a;
     }
+    return -1;
+}
 
-    if (list) {
-        for (const Problem& p : problems)
-            std::cout << p.name << (p.inDefault ? "" : " (not in the default set)") << "\t" << p.errorUnit << "\t"
-                      << (p.paramName.empty() ? "-" : p.paramName) << "\t" << p.description << "\n";
-        return 0;
-    }
-    if (selected.empty())
-        for (const Problem& p : problems)
-            if (p.inDefault) selected.push_back(&p);
+struct Run {
+    const sweep::Problem* problem;
+    sweep::Settings settings;
+    long index;
+    double weight;
+};
 
-    // The whole selected grid in a fixed order (the run index). Shards: longest-processing-time-first dealing of
-    // an estimated cost, substeps / dt (steps per simulated second) x (1 + iterations / 4) (the solver passes;
-    // measured on the stacks: 1, 5, 20 iterations cost about 0.6 : 1 : 2.7). Every process computes the same
-    // deal, so the shards are disjoint and cover the grid; dealing every N-th run instead put all the 1e-4 s
-    // runs (each inner list has 10 step sizes) on the same shard.
-    struct Run {
-        const Problem* problem;
-        sweep::Settings settings;
-        long index;
-        double weight;
-    };
+// The whole selected grid in a fixed order (the run index). Shards: longest-processing-time-first dealing of
+// an estimated cost, substeps / dt (steps per simulated second) x (1 + iterations / 4) (the solver passes;
+// measured on the stacks: 1, 5, 20 iterations cost about 0.6 : 1 : 2.7). Every process computes the same
+// deal, so the shards are disjoint and cover the grid; dealing every N-th run instead put all the 1e-4 s
+// runs (each inner list has 10 step sizes) on the same shard.
+std::vector<Run> ShardRuns(const Arguments& args) {
     std::vector<Run> all;
-    for (const Problem* p : selected)
-        for (const sweep::Settings& s : p->grid(quick)) {
+    for (const sweep::Problem* p : args.selected)
+        for (const sweep::Settings& s : p->grid(args.quick)) {
             const double iterations = s.iterations > 0 ? double(s.iterations) : 0.0;
             all.push_back({p, s, long(all.size()), double(s.substeps) / s.dt * (1.0 + iterations / 4.0)});
         }
     std::vector<const Run*> order;
     for (const Run& r : all) order.push_back(&r);
     std::stable_sort(order.begin(), order.end(), [](const Run* a, const Run* b) { return a->weight > b->weight; });
-    std::vector<double> load(std::size_t(shardCount), 0.0);
+    std::vector<double> load(std::size_t(args.shardCount), 0.0);
     std::vector<char> mine(all.size(), 0);
     for (const Run* r : order) {
         std::size_t least = 0;
         for (std::size_t k = 1; k < load.size(); ++k)
             if (load[k] < load[least]) least = k;
         load[least] += r->weight;
-        mine[std::size_t(r->index)] = least == std::size_t(shardIndex - 1);
+        mine[std::size_t(r->index)] = least == std::size_t(args.shardIndex - 1);
     }
     std::vector<Run> runs;
     for (const Run& r : all)
         if (mine[std::size_t(r.index)]) runs.push_back(r);
+    return runs;
+}
 
-    std::ofstream file;
-    if (!outPath.empty()) {
-        file.open(outPath);
-        if (!file) {
-            std::cerr << "psb-sweep: cannot write '" << outPath << "'\n";
-            return 1;
-        }
-    }
-    std::ostream& out = outPath.empty() ? std::cout : file;
-    out << "run,problem,integrator,dt,substeps,iterations,projection,solver,param,error,cpu_per_sim_s,stable,steps,"
-           "sim_s,note\n";
+std::string Row(const Run& run, const sweep::Outcome& o) {
+    const sweep::Settings& s = run.settings;
+    const double cost = o.simSeconds > 0.0 ? o.cpuSeconds / o.simSeconds : 0.0;
+    std::ostringstream row;
+    row << run.index << "," << run.problem->name << "," << (s.hasIntegrator ? ToString(s.integrator) : "-") << ","
+        << Number(s.dt) << "," << s.substeps << ","
+        << (s.iterations < 0 ? std::string("-") : std::to_string(s.iterations)) << ","
+        << (s.projection < 0 ? std::string("-") : std::to_string(s.projection)) << ","
+        << (s.solver < 0 ? "-" : ToString(ContactSolver(s.solver))) << ","
+        << (run.problem->paramName.empty() ? std::string("-") : Number(s.param)) << "," << Number(o.error) << ","
+        << Number(cost) << "," << (o.stable ? 1 : 0) << "," << o.steps << "," << Number(o.simSeconds) << ","
+        << CleanNote(o.note) << "\n";
+    return row.str();
+}
 
+/// Runs every run and writes the CSV: to stdout, or with --out whole through a temporary beside the file,
+/// opened before the first run so an unwritable path costs nothing. Exit 0, or 3 on a failed write.
+int RunAndWrite(const std::vector<Run>& runs, const std::string& outPath) {
+    AtomicFile file;
+    std::string error;
+    const auto emit = [&](const std::string& text) {
+        if (outPath.empty()) return bool(std::cout << text << std::flush);
+        return file.Write(text.data(), text.size(), &error);
+    };
+    if (!outPath.empty() && !file.Open(outPath, &error)) return WriteFailed(error);
+    if (!emit(kHeader)) return WriteFailed(outPath.empty() ? "cannot write to standard output" : error);
     const double start = sweep::CpuNow();
     for (std::size_t r = 0; r < runs.size(); ++r) {
         const Run& run = runs[r];
         const sweep::Settings& s = run.settings;
         const sweep::Outcome o = run.problem->run(s);
-        const double cost = o.simSeconds > 0.0 ? o.cpuSeconds / o.simSeconds : 0.0;
-        std::ostringstream row;
-        row << run.index << "," << run.problem->name << "," << (s.hasIntegrator ? ToString(s.integrator) : "-") << ","
-            << Number(s.dt) << "," << s.substeps << ","
-            << (s.iterations < 0 ? std::string("-") : std::to_string(s.iterations)) << ","
-            << (s.projection < 0 ? std::string("-") : std::to_string(s.projection)) << ","
-            << (s.solver < 0 ? "-" : ToString(ContactSolver(s.solver))) << ","
-            << (run.problem->paramName.empty() ? std::string("-") : Number(s.param)) << "," << Number(o.error) << ","
-            << Number(cost) << "," << (o.stable ? 1 : 0) << "," << o.steps << "," << Number(o.simSeconds) << ","
-            << CleanNote(o.note) << "\n";
-        out << row.str();
-        out.flush();
+        if (!emit(Row(run, o))) return WriteFailed(outPath.empty() ? "cannot write to standard output" : error);
         std::cerr << "[" << (r + 1) << "/" << runs.size() << "] " << run.problem->name << " "
                   << (s.hasIntegrator ? ToString(s.integrator) : "")
                   << (s.solver < 0 ? "" : ToString(ContactSolver(s.solver))) << " dt=" << Number(s.dt)
@@ -211,9 +228,25 @@ int main(int argc, char** argv) {
                   << (o.stable ? "" : " UNSTABLE") << "\n";
     }
     std::cerr << "psb-sweep: " << runs.size() << " runs in " << Number(sweep::CpuNow() - start) << " s CPU\n";
-    if (!outPath.empty() && !file) {
-        std::cerr << "psb-sweep: writing '" << outPath << "' failed\n";
-        return 1;
-    }
+    if (!outPath.empty() && !file.Commit(&error)) return WriteFailed(error);
     return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    InstallTemporaryCleanupOnSignals("psb-sweep");
+    Arguments args;
+    const int code = ParseArguments(argc, argv, &args);
+    if (code >= 0) return code;
+    if (args.list) {
+        for (const sweep::Problem& p : sweep::AllProblems())
+            std::cout << p.name << (p.inDefault ? "" : " (not in the default set)") << "\t" << p.errorUnit << "\t"
+                      << (p.paramName.empty() ? "-" : p.paramName) << "\t" << p.description << "\n";
+        return std::cout.flush() ? 0 : WriteFailed("cannot write to standard output");
+    }
+    if (args.selected.empty())
+        for (const sweep::Problem& p : sweep::AllProblems())
+            if (p.inDefault) args.selected.push_back(&p);
+    return RunAndWrite(ShardRuns(args), args.outPath);
 }

@@ -30,7 +30,7 @@ const std::vector<std::string> kBookDemoIds = {
 
 bool HasTemporaries(const std::string& dir) {
     for (const std::string& f : FilesIn(dir))
-        if (f.size() > 4 && f.compare(f.size() - 4, 4, ".tmp") == 0) return true;
+        if (IsTemporaryName(f)) return true;
     return false;
 }
 

@@ -147,3 +147,64 @@ TEST(CommandLine, ErrorsNameTheFlagAndValue) {
     ExpectError({"--demo", "x", "--png-level", "10"}, "--png-level 10");
     ExpectError({"--no-ui=1", "--demo", "x"}, "takes no value");
 }
+
+TEST(CommandLine, EveryIntegerIsRangeCheckedWithoutOverflow) {
+    // 4294967297 = 2^32 + 1 would wrap to 1 in an int; 2147483648 = 2^31 to INT_MIN.
+    for (const char* big : {"4294967297", "2147483648", "9223372036854775808", "99999999999999999999"}) {
+        for (const char* flag : {"--debug-nonfinite-at", "--frames", "--progress", "--tolerance", "--png-level"})
+            ExpectError({"--demo", "x", flag, big}, std::string(flag) + " " + big);
+        ExpectError({"--demo", "x", "--only-frames", big}, "--only-frames");
+        ExpectError({"--demo", "x", "--size", (std::string(big) + "x16").c_str()}, "--size");
+    }
+    ExpectError({"--demo", "x", "--debug-nonfinite-at", "-1"}, "--debug-nonfinite-at -1");
+    ExpectError({"--demo", "x", "--tolerance", "256"}, "--tolerance 256");
+    ExpectError({"--demo", "x", "--frames", "1.5"}, "--frames 1.5");
+    ExpectError({"--demo", "x", "--frames", " 5"}, "--frames  5");
+    Options o;
+    std::string error;
+    ASSERT_EQ(Parse({"--demo", "x", "--frames", "100000000", "--debug-nonfinite-at", "99999999"}, &o, &error),
+              ParseStatus::Ok)
+        << error;
+    EXPECT_EQ(o.frames, 100000000);
+    EXPECT_EQ(o.debugNonFiniteAt, 99999999);
+}
+
+TEST(CommandLine, HelpListsEveryFlagTheParserAccepts) {
+    const std::string help = UsageText();
+    for (const char* flag : {"--help",
+                             "--list",
+                             "--demo",
+                             "--frames",
+                             "--out",
+                             "--size",
+                             "--set",
+                             "--params",
+                             "--state",
+                             "--no-ui",
+                             "--camera-yaw",
+                             "--camera-pitch",
+                             "--camera-zoom",
+                             "--camera-target",
+                             "--orbit",
+                             "--fps",
+                             "--dt",
+                             "--only-frames",
+                             "--compare",
+                             "--update-golden",
+                             "--tolerance",
+                             "--max-diff",
+                             "--png-level",
+                             "--serial-encode",
+                             "--progress",
+                             "--quiet",
+                             "--debug-nonfinite-at"}) {
+        EXPECT_NE(help.find(std::string("  ") + flag + " "), std::string::npos) << flag;
+        Options o;
+        std::string error;
+        Parse({flag}, &o, &error);
+        EXPECT_EQ(error.find("unknown option"), std::string::npos) << flag << ": " << error;
+    }
+    // Ranges in the help come from the same table the parser checks.
+    EXPECT_NE(help.find("[-89, 89]"), std::string::npos);
+    EXPECT_NE(help.find("[0, 255]"), std::string::npos);
+}

@@ -34,18 +34,38 @@ std::string ScratchDir(const std::string& name) {
     return dir;
 }
 
-SandboxResult RunSandboxExe(const std::vector<std::string>& args) {
+namespace {
+
+SandboxResult RunCaptured(const std::string& command) {
     const std::string dir = ScratchDir("run_capture");
-    std::string command = Quote(PSB_SANDBOX_EXE);
-    for (const std::string& a : args) command += " " + Quote(a);
-    command += " >" + Quote(dir + "/out") + " 2>" + Quote(dir + "/err") + " </dev/null";
-    const int status = std::system(command.c_str());
+    const std::string full = command + " >" + Quote(dir + "/out") + " 2>" + Quote(dir + "/err") + " </dev/null";
+    const int status = std::system(full.c_str());
     SandboxResult r;
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     r.out = ReadText(dir + "/out");
     r.err = ReadText(dir + "/err");
     std::filesystem::remove_all(dir);
     return r;
+}
+
+}  // namespace
+
+SandboxResult RunSandboxExe(const std::vector<std::string>& args) { return RunSandboxShell("", args); }
+
+SandboxResult RunSandboxShell(const std::string& shellPrefix, const std::vector<std::string>& args,
+                              const std::string& shellSuffix) {
+    std::string command = "(" + shellPrefix + " " + Quote(PSB_SANDBOX_EXE);
+    for (const std::string& a : args) command += " " + Quote(a);
+    return RunCaptured(command + " " + shellSuffix + ")");
+}
+
+SandboxResult RunShellScript(const std::string& script) {
+    return RunCaptured("PS=" + Quote(PSB_SANDBOX_EXE) + " sh -c " + Quote(script));
+}
+
+bool IsTemporaryName(const std::string& name) {
+    return (name.size() > 1 && name[0] == '.' && name != "..") ||
+           (name.size() > 4 && name.compare(name.size() - 4, 4, ".tmp") == 0);
 }
 
 std::vector<std::string> ListDemoIds() {

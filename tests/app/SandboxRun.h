@@ -12,6 +12,14 @@ struct SandboxResult {
 
 /// Runs PSB_SANDBOX_EXE with args (no shell word splitting surprises: every arg is quoted).
 SandboxResult RunSandboxExe(const std::vector<std::string>& args);
+/// Runs PSB_SANDBOX_EXE with args inside a subshell: "(" + shellPrefix + " exe args " + shellSuffix + ")", e.g.
+/// prefix "ulimit -f 10;" or "timeout --preserve-status -s INT 2", suffix ">/dev/full".
+SandboxResult RunSandboxShell(const std::string& shellPrefix, const std::vector<std::string>& args,
+                              const std::string& shellSuffix = "");
+/// Runs a whole shell command (sh -c) with $PS set to the executable; stdout and stderr captured.
+SandboxResult RunShellScript(const std::string& script);
+/// True for a temporary an interrupted or failed write could leave: a hidden ".NAME.XXXXXX" or a "*.tmp".
+bool IsTemporaryName(const std::string& name);
 /// A fresh, empty scratch directory for one test.
 std::string ScratchDir(const std::string& name);
 /// Ids of the registered demos, from `--list`.

@@ -1,0 +1,255 @@
+#include "Application/RunOutputs.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include "Application/Runner.h"
+#include "Application/StateCsv.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string FrameName(int frame) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%05d.png", frame);
+    return name;
+}
+
+std::string JoinPath(const std::string& dir, const std::string& name) {
+    return dir.empty() || dir.back() == '/' ? dir + name : dir + "/" + name;
+}
+
+int Usage(const std::string& message) {
+    std::fprintf(stderr, "physics-sandbox: %s\n", message.c_str());
+    return kExitUsage;
+}
+
+/// The absolute path with symlinks and ".." resolved as far as it exists, without a trailing separator.
+fs::path Resolved(const std::string& path) {
+    std::error_code ec;
+    fs::path p = fs::weakly_canonical(fs::path(path.empty() ? "." : path), ec);
+    if (ec) p = fs::absolute(path, ec).lexically_normal();
+    if (!p.has_filename() && p.has_parent_path() && p != p.root_path()) p = p.parent_path();
+    return p;
+}
+
+bool SameDirectory(const std::string& a, const std::string& b) {
+    std::error_code ec;
+    return Resolved(a) == Resolved(b) || (fs::equivalent(a, b, ec) && !ec);
+}
+
+/// A name physics-sandbox writes or reads as a frame, a golden or the comparison report.
+bool IsFrameOrReportName(const std::string& name) {
+    const bool frame =
+        name.rfind("frame_", 0) == 0 && name.size() > 10 && name.compare(name.size() - 4, 4, ".png") == 0;
+    return frame || name == "compare.txt";
+}
+
+int CheckStatePath(const Options& o) {
+    std::string error;
+    if (!CheckWritableTarget(o.stateFile, &error)) return Usage("--state: " + error);
+    const fs::path state(o.stateFile);
+    const std::string parent = state.parent_path().empty() ? "." : state.parent_path().string();
+    for (const std::string& dir : {o.updateGolden ? o.compareDir : o.outDir, o.compareDir})
+        if (!dir.empty() && IsFrameOrReportName(state.filename().string()) && SameDirectory(parent, dir))
+            return Usage("--state " + o.stateFile + ": is a frame or golden path in " + dir +
+                         "; the CSV would replace a frame");
+    return kExitOk;
+}
+
+}  // namespace
+
+double CpuSeconds(clockid_t which) {
+    timespec t{};
+    clock_gettime(which, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+int CheckOutputArguments(const Options& o) {
+    if (!o.compareDir.empty() && !o.updateGolden) {
+        std::error_code ec;
+        const fs::file_status status = fs::status(o.compareDir, ec);
+        if (!fs::is_directory(status))
+            return Usage("--compare " + o.compareDir + ": " + (ec ? ec.message() : std::string("not a directory")));
+        if (SameDirectory(o.outDir, o.compareDir))
+            return Usage("--out " + o.outDir + " and --compare " + o.compareDir +
+                         " are the same directory; the frames would overwrite the goldens they are compared with");
+    }
+    return o.stateFile.empty() ? kExitOk : CheckStatePath(o);
+}
+
+RunOutputs::RunOutputs(const Options& options)
+    : o(options),
+      frameDir(options.updateGolden ? options.compareDir : options.outDir),
+      comparing(!options.compareDir.empty() && !options.updateGolden),
+      queue(3, options.encodeThread) {
+    png.level = options.pngLevel;
+}
+
+RunOutputs::~RunOutputs() {
+    queue.Finish(nullptr);
+    state.Abandon();
+    if (keepDirectories) return;
+    std::error_code ec;
+    for (auto dir = createdDirs.rbegin(); dir != createdDirs.rend(); ++dir) fs::remove(*dir, ec);  // only if empty
+}
+
+bool RunOutputs::MakeDirectories(const std::string& dir, std::string* error) {
+    std::error_code ec;
+    std::vector<std::string> missing;  // dir and its missing ancestors, innermost first
+    for (fs::path p = fs::path(dir).lexically_normal(); !p.empty() && !fs::exists(fs::symlink_status(p, ec));
+         p = p.parent_path()) {
+        missing.push_back(p.string());
+        if (p == p.parent_path()) break;
+    }
+    fs::create_directories(dir, ec);
+    {
+        std::lock_guard<std::mutex> lock(dirsMutex);
+        createdDirs.insert(createdDirs.end(), missing.rbegin(), missing.rend());
+    }
+    std::error_code isDirError;
+    if (ec || !fs::is_directory(dir, isDirError)) {
+        *error = "cannot create directory " + dir + ": " + (ec ? ec.message() : "not a directory");
+        return false;
+    }
+    return true;
+}
+
+bool RunOutputs::Open(std::string* error) {
+    if (!frameDir.empty() && !MakeDirectories(frameDir, error)) return false;
+    if (o.stateFile.empty()) return true;
+    return state.Open(o.stateFile, error) && state.Write(StateCsvHeader(), std::string(StateCsvHeader()).size(), error);
+}
+
+EncodeQueue::Job RunOutputs::MakeFrameJob(int frame, Image image) {
+    return [this, name = FrameName(frame), image = std::move(image)](std::string* error) {
+        const Clock::time_point start = Clock::now();
+        const double cpuStart = CpuSeconds(CLOCK_THREAD_CPUTIME_ID);
+        std::vector<std::uint8_t> bytes;
+        if (!EncodePng(image, png, &bytes, error)) return false;
+        if (!frameDir.empty() && !WriteFileAtomic(JoinPath(frameDir, name), bytes, error)) return false;
+        if (comparing && !CompareFrame(name, image, bytes, error)) return false;
+        results.encodeSeconds += std::chrono::duration<double>(Clock::now() - start).count();
+        results.encodeCpuSeconds += CpuSeconds(CLOCK_THREAD_CPUTIME_ID) - cpuStart;
+        return true;
+    };
+}
+
+namespace {
+
+/// Reads the golden for actual. Checks the file (regular, size-limited) and the header's size against the
+/// frame before decoding, so a hostile header never allocates. False with c->golden and c->problem set.
+bool LoadGolden(const std::string& path, const Image& actual, Image* expected, FrameComparison* c) {
+    std::vector<std::uint8_t> bytes;
+    ReadFailure failure = ReadFailure::None;
+    int width = 0, height = 0;
+    if (!ReadRegularFile(path, kMaxPngFileBytes, &bytes, &failure, &c->problem)) {
+        c->golden =
+            failure == ReadFailure::Missing ? FrameComparison::Golden::Missing : FrameComparison::Golden::Unreadable;
+        return false;
+    }
+    if (!ReadPngHeader(bytes, &width, &height, &c->problem)) {
+        c->golden = FrameComparison::Golden::Unreadable;
+        return false;
+    }
+    if (width != actual.width || height != actual.height) {
+        c->golden = FrameComparison::Golden::SizeMismatch;
+        c->problem = "golden is " + std::to_string(width) + "x" + std::to_string(height) + ", the frame " +
+                     std::to_string(actual.width) + "x" + std::to_string(actual.height);
+        return false;
+    }
+    if (!DecodePng(bytes, expected, &c->problem)) {
+        c->golden = FrameComparison::Golden::Unreadable;
+        return false;
+    }
+    return true;
+}
+
+std::string DescribeFrame(const FrameComparison& c, const CompareThresholds& thresholds) {
+    switch (c.golden) {
+        case FrameComparison::Golden::Missing:
+            return "missing golden (FAIL)";
+        case FrameComparison::Golden::Unreadable:
+            return "unreadable golden: " + c.problem + " (FAIL)";
+        case FrameComparison::Golden::SizeMismatch:
+            return "size differs: " + c.problem + " (FAIL)";
+        case FrameComparison::Golden::Compared:
+            break;
+    }
+    return DescribeComparison(c.result, thresholds);
+}
+
+}  // namespace
+
+bool RunOutputs::CompareFrame(const std::string& name, const Image& actual, const std::vector<std::uint8_t>& bytes,
+                              std::string* error) {
+    FrameComparison c;
+    c.name = name;
+    Image expected;
+    if (LoadGolden(JoinPath(o.compareDir, name), actual, &expected, &c))
+        c.result = CompareImages(expected, actual, o.thresholds);
+    if (c.Failed() && !WriteEvidence(name, c, expected, actual, bytes, error)) return false;
+    std::lock_guard<std::mutex> lock(results.mutex);
+    results.comparisons.push_back(std::move(c));
+    return true;
+}
+
+// Evidence for a mismatch: the actual frame, and when the golden decoded, it and a diff image.
+bool RunOutputs::WriteEvidence(const std::string& name, const FrameComparison& c, const Image& expected,
+                               const Image& actual, const std::vector<std::uint8_t>& bytes, std::string* error) {
+    const std::string dir = JoinPath(o.outDir, "mismatch");
+    if (!MakeDirectories(dir, error)) return false;
+    const std::string stem = JoinPath(dir, name.substr(0, name.size() - 4));
+    if (!WriteFileAtomic(stem + ".actual.png", bytes, error)) return false;
+    if (c.golden != FrameComparison::Golden::Compared) return true;
+    std::vector<std::uint8_t> other;
+    return EncodePng(expected, png, &other, error) && WriteFileAtomic(stem + ".expected.png", other, error) &&
+           EncodePng(MakeDiffImage(expected, actual, o.thresholds), png, &other, error) &&
+           WriteFileAtomic(stem + ".diff.png", other, error);
+}
+
+int RunOutputs::Finish(int code) {
+    std::string error;
+    if (!queue.Finish(&error)) {
+        std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
+        code = kExitFailure;
+    }
+    if (state.IsOpen() && code == kExitOk && !state.Commit(&error)) {
+        std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
+        code = kExitFailure;
+    }
+    if (code != kExitOk) state.Abandon();
+    keepDirectories = code == kExitOk;
+    return code;
+}
+
+int RunOutputs::ReportComparisons(int code) {
+    if (!comparing) return code;
+    // Per-frame metric summary, in frame order, on stderr and in OUT/compare.txt.
+    std::string lines;
+    int failures = 0;
+    for (const FrameComparison& c : results.comparisons) {
+        lines += c.name + ": " + DescribeFrame(c, o.thresholds) + "\n";
+        if (c.Failed()) ++failures;
+    }
+    char counts[160];
+    std::snprintf(counts, sizeof counts, ": %d frame(s), %d mismatch(es); tolerance %d, max fraction %g\n",
+                  int(results.comparisons.size()), failures, o.thresholds.channelTolerance,
+                  o.thresholds.maxDifferingFraction);
+    const std::string report = "compare with " + o.compareDir + counts + lines;
+    std::string error;
+    if (!WriteFileAtomic(JoinPath(o.outDir, "compare.txt"), std::vector<std::uint8_t>(report.begin(), report.end()),
+                         &error)) {
+        std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
+        return kExitFailure;
+    }
+    if (!o.quiet || failures) std::fputs(report.c_str(), stderr);
+    if (failures == 0) return code;
+    std::fprintf(stderr, "physics-sandbox: %d frame(s) differ from %s; see %s/mismatch/\n", failures,
+                 o.compareDir.c_str(), o.outDir.c_str());
+    return kExitMismatch;
+}
