@@ -64,6 +64,7 @@ struct Flag {
     double min, max;  ///< inclusive range of Int, Float and Rational values (and of each Size side, list entry)
     const char* help;
     void (*apply)(Options& o, const FlagValue& v);
+    const char* choices = nullptr;  ///< Text flags with a fixed set of values: "a|b|c"
 };
 
 constexpr double kMaxFrames = 100000000;
@@ -77,7 +78,7 @@ const Flag kFlags[] = {
      [](Options& o, const FlagValue& v) { o.demo = v.text; }},
     {"--frames", "N", ValueType::Int, 1, kMaxFrames,
      "output frames to run (default 1); one frame = 1/60 s of simulated time",
-     [](Options& o, const FlagValue& v) { o.frames = int(v.integer); }},
+     [](Options& o, const FlagValue& v) { o.frames = int(v.integer), o.framesGiven = true; }},
     {"--out", "DIR", ValueType::Text, 0, 0,
      "write DIR/frame_00000.png ... (DIR is created); without it nothing is written",
      [](Options& o, const FlagValue& v) { o.outDir = v.text; }},
@@ -95,6 +96,17 @@ const Flag kFlags[] = {
      "write CSV: frame,time,body,kind,x,y,z,vx,vy,vz (one row per body per frame); FILE must not exist or be a "
      "regular file",
      [](Options& o, const FlagValue& v) { o.stateFile = v.text; }},
+    {"--video", "FILE", ValueType::Text, 0, 0,
+     "also record every frame into FILE (.mp4 H.264, .webm VP9 or .gif) through the ffmpeg program; the file "
+     "appears when the run succeeds",
+     [](Options& o, const FlagValue& v) { o.videoFile = v.text; }},
+    {"--backend", "NAME", ValueType::Text, 0, 0,
+     "headless GL: osmesa, egl, or auto (OSMesa when built in, else EGL); goldens are pinned to llvmpipe",
+     [](Options& o, const FlagValue& v) { o.backend = v.text; }, "auto|osmesa|egl"},
+    {"--window", "", ValueType::None, 0, 0,
+     "open the book's interactive 800x600 window instead (needs a display); --demo picks the first demo, "
+     "--frames N closes it after N frames",
+     [](Options& o, const FlagValue&) { o.window = true; }},
     {"--no-ui", "", ValueType::None, 0, 0, "hide the ImGui panels",
      [](Options& o, const FlagValue&) { o.noUi = true; }},
     {"--camera-yaw", "DEG", ValueType::Float, -360, 360, "orbit camera yaw (rotation.x), replaces the demo's preset",
@@ -171,6 +183,13 @@ std::string Expected(const Flag& f) {
             return "expected x,y,z";
         case ValueType::KeyValue:
             return "expected key=value";
+        case ValueType::Text:
+            if (f.choices != nullptr) {
+                std::string list = f.choices;
+                std::replace(list.begin(), list.end(), '|', ',');
+                return "expected one of " + list;
+            }
+            return "expected a non-empty value";
         default:
             return "expected a non-empty value";
     }
@@ -202,6 +221,8 @@ bool ParseValue(const Flag& f, const std::string& text, FlagValue* v) {
                    v->rational.ToDouble() <= f.max;
         case ValueType::Text:
             v->text = text;
+            if (f.choices != nullptr)
+                return ("|" + std::string(f.choices) + "|").find("|" + text + "|") != std::string::npos;
             return !text.empty();
         case ValueType::KeyValue:
             v->text = text;
@@ -229,8 +250,26 @@ bool ParseValue(const Flag& f, const std::string& text, FlagValue* v) {
 }
 
 /// Checks the combinations a single flag cannot (after every flag was read).
+/// The first headless-only flag given with --window, or nullptr.
+const char* HeadlessOnlyFlag(const Options& o) {
+    if (!o.outDir.empty()) return "--out";
+    if (!o.compareDir.empty()) return "--compare";
+    if (!o.stateFile.empty()) return "--state";
+    if (!o.videoFile.empty()) return "--video";
+    if (!o.onlyFrames.empty()) return "--only-frames";
+    if (o.showParams) return "--params";
+    return nullptr;
+}
+
 bool CheckCombinations(const Options& o, std::string* error) {
     if (o.mode != Options::Mode::Run) return true;
+    if (o.window) {
+        if (const char* flag = HeadlessOnlyFlag(o)) {
+            *error = std::string("--window shows frames on the screen; ") + flag + " is for headless runs";
+            return false;
+        }
+        return true;  // no --demo: the book's start screen
+    }
     if (o.demo.empty())
         *error = "no --demo given (see --list for the ids, --help for usage)";
     else if (o.updateGolden && o.compareDir.empty())
@@ -283,8 +322,10 @@ ParseStatus ParseCommandLine(int argc, const char* const* argv, Options* o, std:
 std::string UsageText() {
     std::string text =
         "Usage: physics-sandbox --demo ID [options]\n"
+        "       physics-sandbox --window [--demo ID] [--frames N] [--set KEY=VALUE]...\n"
         "       physics-sandbox --list | --help\n\n"
-        "Renders a demo of the Game Physics Cookbook (ch. 14-16) off-screen (OSMesa, llvmpipe) to PNG frames.\n\n";
+        "Renders a demo of the Game Physics Cookbook (ch. 14-16) off-screen (OSMesa or EGL, llvmpipe) to PNG frames\n"
+        "or a video, or runs it in the book's interactive window.\n\n";
     for (const Flag& f : kFlags) {
         std::string head = std::string("  ") + f.name + (*f.metavar ? " " : "") + f.metavar;
         head.resize(std::max<std::size_t>(head.size() + 2, 25), ' ');

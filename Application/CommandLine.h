@@ -14,16 +14,21 @@
 struct Options {
     enum class Mode { Run, List, Help };
     Mode mode = Mode::Run;
+    /// --window: the interactive desktop window instead of headless frames (Application/WindowedRunner.h).
+    bool window = false;
 
     std::string demo;
     int frames = 1;
-    std::string outDir;  ///< "" = frames are rendered but not written
+    bool framesGiven = false;  ///< --frames was on the command line (--window then closes after that many)
+    std::string outDir;        ///< "" = frames are rendered but not written
     int width = 800;
     int height = 600;
     std::vector<std::pair<std::string, std::string>> sets;  ///< --set key=value, in order
     bool noUi = false;
     bool showParams = false;  ///< --params: print the demo's parameters (after --set) and exit
     std::string stateFile;
+    std::string videoFile;         ///< --video: every frame into an .mp4, .webm or .gif (Platform/VideoEncoder.h)
+    std::string backend = "auto";  ///< --backend: "auto", "osmesa" or "egl" (Platform/HeadlessContext.h)
 
     // Camera (the orbit camera's yaw = rotation.x, pitch = rotation.y, in degrees; zoom = distance).
     bool hasYaw = false, hasPitch = false, hasZoom = false, hasTarget = false;

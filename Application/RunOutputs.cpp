@@ -61,6 +61,24 @@ int CheckStatePath(const Options& o) {
     return kExitOk;
 }
 
+/// --video: a known extension, the ffmpeg program, and a target the run may write (as --state); exit 2 if not.
+int CheckVideoPath(const Options& o) {
+    VideoEncoder::Format format;
+    if (!VideoEncoder::FormatOf(o.videoFile, &format))
+        return Usage("--video " + o.videoFile + ": the name must end in .mp4, .webm or .gif");
+    std::string error;
+    if (!VideoEncoder::FfmpegAvailable(&error)) return Usage(error);
+    if (!CheckWritableTarget(o.videoFile, &error)) return Usage("--video: " + error);
+    const fs::path video(o.videoFile);
+    std::error_code ec;
+    const fs::path parent = video.parent_path().empty() ? fs::path(".") : video.parent_path();
+    if (!fs::is_directory(parent, ec))
+        return Usage("--video " + o.videoFile + ": directory " + parent.string() + " does not exist");
+    if (!o.stateFile.empty() && fs::absolute(video).lexically_normal() == fs::absolute(o.stateFile).lexically_normal())
+        return Usage("--video and --state name the same file " + o.videoFile);
+    return kExitOk;
+}
+
 }  // namespace
 
 double CpuSeconds(clockid_t which) {
@@ -79,6 +97,7 @@ int CheckOutputArguments(const Options& o) {
             return Usage("--out " + o.outDir + " and --compare " + o.compareDir +
                          " are the same directory; the frames would overwrite the goldens they are compared with");
     }
+    if (!o.videoFile.empty() && CheckVideoPath(o) != kExitOk) return kExitUsage;
     return o.stateFile.empty() ? kExitOk : CheckStatePath(o);
 }
 
@@ -121,6 +140,10 @@ bool RunOutputs::MakeDirectories(const std::string& dir, std::string* error) {
 
 bool RunOutputs::Open(std::string* error) {
     if (!frameDir.empty() && !MakeDirectories(frameDir, error)) return false;
+    if (!o.videoFile.empty()) {
+        const double fps = 1.0 / o.frameTime.ToDouble();
+        if (!video.Open(o.videoFile, o.width, o.height, fps, error)) return false;
+    }
     if (o.stateFile.empty()) return true;
     return state.Open(o.stateFile, error) && state.Write(StateCsvHeader(), std::string(StateCsvHeader()).size(), error);
 }
@@ -136,6 +159,16 @@ EncodeQueue::Job RunOutputs::MakeFrameJob(int frame, Image image) {
         results.encodeSeconds += std::chrono::duration<double>(Clock::now() - start).count();
         results.encodeCpuSeconds += CpuSeconds(CLOCK_THREAD_CPUTIME_ID) - cpuStart;
         return true;
+    };
+}
+
+EncodeQueue::Job RunOutputs::MakeVideoJob(std::shared_ptr<const Image> image) {
+    return [this, image = std::move(image)](std::string* error) {
+        const double cpuStart = CpuSeconds(CLOCK_THREAD_CPUTIME_ID);
+        const bool ok = video.WriteFrame(*image, error);
+        results.encodeCpuSeconds += CpuSeconds(CLOCK_THREAD_CPUTIME_ID) - cpuStart;
+        if (!ok) *error = "--video " + o.videoFile + ": " + *error;
+        return ok;
     };
 }
 
@@ -222,7 +255,11 @@ int RunOutputs::Finish(int code) {
         std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
         code = kExitFailure;
     }
-    if (code != kExitOk) state.Abandon();
+    if (video.IsOpen() && code == kExitOk && !video.Finish(&error)) {
+        std::fprintf(stderr, "physics-sandbox: --video %s: %s\n", o.videoFile.c_str(), error.c_str());
+        code = kExitFailure;
+    }
+    if (code != kExitOk) state.Abandon(), video.Abort();
     keepDirectories = code == kExitOk;
     return code;
 }

@@ -6,6 +6,7 @@
 
 #include <time.h>
 
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "Platform/Files/AtomicFile.h"
 #include "Platform/ImageCompare.h"
 #include "Platform/PngCodec.h"
+#include "Platform/VideoEncoder.h"
 
 /// CPU seconds of a clock (CLOCK_THREAD_CPUTIME_ID, CLOCK_PROCESS_CPUTIME_ID).
 double CpuSeconds(clockid_t which);
@@ -23,6 +25,7 @@ double CpuSeconds(clockid_t which);
 /// must be a directory (a symlink loop or an over-long name is reported, not thrown), must not be --out itself
 /// (also through a symlink or ".."), and --state must be writable as a regular file and must not be a frame
 /// or golden path. Returns kExitOk or kExitUsage (message printed).
+/// --video must name an .mp4, .webm or .gif in an existing directory, with the ffmpeg program installed.
 int CheckOutputArguments(const Options& o);
 
 /// One frame's golden comparison, filled in by the encode thread.
@@ -45,10 +48,16 @@ public:
 
     /// Creates the frame directory and opens the --state temporary with its header. False with *error.
     bool Open(std::string* error);
-    /// Frames are read back when they are written or compared.
-    bool WantsPixels() const { return !frameDir.empty() || comparing; }
+    /// Frames are read back when they are written, compared or recorded.
+    bool WantsPixels() const { return !frameDir.empty() || comparing || Recording(); }
+    /// PNG frames (written or compared) are wanted: --out or --compare.
+    bool WantsFrames() const { return !frameDir.empty() || comparing; }
+    /// --video: every frame goes to the video, --only-frames or not.
+    bool Recording() const { return !o.videoFile.empty(); }
     /// The encode-write-compare job of one frame; it depends only on the image and this object.
     EncodeQueue::Job MakeFrameJob(int frame, Image image);
+    /// Sends one frame to ffmpeg (in frame order: the queue runs jobs in order).
+    EncodeQueue::Job MakeVideoJob(std::shared_ptr<const Image> image);
     /// Ends the run: waits for the jobs, then commits --state on success or abandons it. Returns code, or
     /// kExitFailure when a job or the commit failed (message printed).
     int Finish(int code);
@@ -65,6 +74,7 @@ public:
     };
 
     AtomicFile state;
+    VideoEncoder video;  ///< open while --video records; the file appears at Finish on success
     JobResults results;
 
 private:

@@ -20,6 +20,9 @@
 
 #include "Application/RunOutputs.h"
 #include "Application/StateCsv.h"
+#if PSB_HAVE_WINDOW
+#include "Application/WindowedRunner.h"
+#endif
 #include "Demos/DemoBase.h"
 #include "Demos/DemoRegistry.h"
 #include "Platform/Files/TempRegistry.h"
@@ -106,18 +109,30 @@ int CheckDemoId(const std::string& id) {
     return kExitUsage;
 }
 
-// One OSMesa context, ImGui with its OpenGL2 back end (no ini file, fixed display size and delta time, the
+// --backend names a back end this build has (exit 2 otherwise).
+int CheckBackend(const Options& o) {
+    HeadlessBackend backend = HeadlessBackend::Auto;
+    if (ParseHeadlessBackend(o.backend, &backend) && HeadlessBackendBuilt(backend)) return kExitOk;
+    std::fprintf(stderr, "physics-sandbox: --backend %s: this build has no %s back end (CMake PSB_WITH_%s)\n",
+                 o.backend.c_str(), o.backend.c_str(), backend == HeadlessBackend::Egl ? "EGL" : "OSMESA");
+    return kExitUsage;
+}
+
+// One headless context, ImGui with its OpenGL2 back end (no ini file, fixed display size and delta time, the
 // book's look: book.md 1.7), the window and the demo. Exit 3 when the context or the demo cannot start.
 int StartSession(const Options& o, Session* s, RunStats* stats) {
     PinSoftwareRasterizer();
     HeadlessInfo info;
     std::string error;
-    s->context = CreateHeadlessContext(o.width, o.height, &info, &error);
+    HeadlessBackend backend = HeadlessBackend::Auto;
+    ParseHeadlessBackend(o.backend, &backend);  // the command line accepts only valid names
+    s->context = CreateHeadlessContext(o.width, o.height, backend, &info, &error);
     if (!s->context) {
-        std::fprintf(stderr, "physics-sandbox: no OpenGL context: %s\n", error.c_str());
+        std::fprintf(stderr, "physics-sandbox: no OpenGL context (--backend %s): %s\n", o.backend.c_str(),
+                     error.c_str());
         return kExitFailure;
     }
-    stats->renderer = info.renderer;
+    stats->renderer = info.renderer + " via " + info.backend + (info.device.empty() ? "" : " " + info.device);
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     s->imgui = true;
@@ -252,15 +267,20 @@ void RenderFrame(RunLoop& r) {
     glFinish();
 }
 
-// Reads the frame back and queues its encode, write and comparison. False once a job has failed.
-bool QueueFrame(RunLoop& r, int frame) {
+// Reads the frame back and queues its encode, write and comparison (a selected frame) and its video frame
+// (--video). False once a job has failed.
+bool QueueFrame(RunLoop& r, int frame, bool selected) {
     const Clock::time_point readStart = Clock::now();
     Image image;
     ReadFrame(r.o.width, r.o.height, &r.scratch, &image);
     r.stats->readbackSeconds += Since(readStart);
-    EncodeQueue::Job job = r.outputs.MakeFrameJob(frame, std::move(image));
     const double pushCpu = CpuSeconds(CLOCK_THREAD_CPUTIME_ID);
-    const bool queued = r.outputs.queue.Push(std::move(job));
+    bool queued = true;
+    if (r.outputs.Recording()) {
+        auto shared = std::make_shared<const Image>(selected ? image : std::move(image));
+        queued = r.outputs.queue.Push(r.outputs.MakeVideoJob(std::move(shared)));
+    }
+    if (queued && selected) queued = r.outputs.queue.Push(r.outputs.MakeFrameJob(frame, std::move(image)));
     r.queueCpu += CpuSeconds(CLOCK_THREAD_CPUTIME_ID) - pushCpu;
     return queued;
 }
@@ -279,7 +299,8 @@ bool RunFrame(RunLoop& r, int frame, std::string* failure) {
     }
     RenderFrame(r);
     r.stats->renderSeconds += Since(renderStart);
-    if (r.outputs.WantsPixels() && Selected(r, frame) && !QueueFrame(r, frame)) return false;
+    const bool selected = r.outputs.WantsFrames() && Selected(r, frame);
+    if ((selected || r.outputs.Recording()) && !QueueFrame(r, frame, selected)) return false;
     if (blownUp) {
         *failure = "frame " + std::to_string(frame) + ": unstable simulation, stopped: " + report;
         return false;
@@ -331,6 +352,7 @@ int RunUnguarded(const Options& o, RunStats* stats) {
     const Clock::time_point wallStart = Clock::now();
     const double processCpuStart = CpuSeconds(CLOCK_PROCESS_CPUTIME_ID);
     int code = CheckDemoId(o.demo);
+    if (code == kExitOk) code = CheckBackend(o);
     if (code == kExitOk) code = CheckOutputArguments(o);
     if (code != kExitOk) return code;
     Session session;
@@ -378,6 +400,25 @@ int RunSandbox(const Options& options, RunStats* stats) {
     return kExitFailure;
 }
 
+static int RunWindow(const Options& o) {
+#if PSB_HAVE_WINDOW
+    WindowedOptions w;
+    w.demo = o.demo;
+    w.sets = o.sets;
+    w.frames = o.framesGiven ? o.frames : 0;
+    w.width = o.width;
+    w.height = o.height;
+    w.step = o.step.ToDouble();
+    w.noUi = o.noUi;
+    w.quiet = o.quiet;
+    return RunWindowed(w);
+#else
+    (void)o;
+    std::fprintf(stderr, "physics-sandbox: --window: this build has no window (CMake PSB_WITH_WINDOW, libglfw3-dev)\n");
+    return kExitUsage;
+#endif
+}
+
 int RunCommandLine(int argc, const char* const* argv) {
     InstallTemporaryCleanupOnSignals("physics-sandbox");
     Options options;
@@ -394,6 +435,7 @@ int RunCommandLine(int argc, const char* const* argv) {
         for (const DemoInfo& d : AllDemos()) std::printf("%s\t%s\n", d.id.c_str(), d.title.c_str());
         return FinishStdout();
     }
+    if (options.window) return RunWindow(options);
     RunStats stats;
     return RunSandbox(options, &stats);
 }
