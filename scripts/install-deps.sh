@@ -15,6 +15,8 @@ packages=(
   libpng-dev          # PNG encoder for frames
   gnuplot-nox         # speed/accuracy plots (bench/)
   ccache              # faster rebuilds (optional at build time)
+  clang               # libFuzzer targets (scripts/fuzz.sh, docs/testing.md)
+  libclang-rt-14-dev  # clang 14's libFuzzer and sanitizer runtimes (only Recommended by clang, so named here)
 )
 
 missing=()
