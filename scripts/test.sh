@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds and runs every test: installs dependencies (Debian 12 packages), a Release build with warnings as
 # errors and the full CTest suite (unit, physics, app, golden frames), then an AddressSanitizer +
-# UndefinedBehaviorSanitizer build running the same suite. This is the README's test command and what CI runs.
+# UndefinedBehaviorSanitizer build running the same suite, then the libFuzzer targets for a fixed time
+# (scripts/fuzz.sh, docs/testing.md). This is the README's test command and what CI runs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -31,4 +32,9 @@ if [ "${PSB_SKIP_SANITIZERS:-0}" != "1" ]; then
   LSAN_OPTIONS="suppressions=$PWD/scripts/lsan.supp" \
   UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
     ctest --test-dir build-asan --output-on-failure -j"$jobs"
+fi
+
+if [ "${PSB_SKIP_FUZZ:-0}" != "1" ]; then
+  step "fuzzing (libFuzzer, ${PSB_FUZZ_SECONDS:-60} s a target)"
+  bash scripts/fuzz.sh "${PSB_FUZZ_SECONDS:-60}"
 fi
