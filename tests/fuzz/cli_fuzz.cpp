@@ -22,7 +22,10 @@ void Require(bool ok, const char* what) {
 
 void CheckAccepted(const Options& o) {
     if (o.mode != Options::Mode::Run) return;
-    Require(!o.demo.empty(), "a run names a demo");
+    Require(!o.demo.empty() || o.window, "a headless run names a demo");
+    Require(!o.window || (o.outDir.empty() && o.compareDir.empty() && o.stateFile.empty() && o.videoFile.empty()),
+            "--window takes no headless outputs");
+    Require(o.backend == "auto" || o.backend == "osmesa" || o.backend == "egl", "a known back end");
     Require(o.frames >= 1, "at least one frame");
     Require(o.width >= 16 && o.width <= 8192 && o.height >= 16 && o.height <= 8192, "size within 16..8192");
     for (std::size_t i = 1; i < o.onlyFrames.size(); ++i)
