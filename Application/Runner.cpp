@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <numeric>
 #include <vector>
 
 #include "Application/StateCsv.h"
@@ -241,9 +242,17 @@ int RunSandbox(const Options& o, RunStats* stats) {
     double encodeCpuSeconds = 0.0;
     EncodeQueue queue(3, o.encodeThread);
 
-    FrameClock clock(o.frameTime, o.step);
+    // The host's fixed step is the demo's physics step when it asks for one (DemoBase::PhysicsStep, e.g. --set
+    // dt=0.01), else --dt: whole physics steps run inside host time, so simulated time follows it at any step.
+    Rational step = o.step;
+    if (const double demoStep = double(demo.PhysicsStep()); demoStep > 0.0 && std::isfinite(demoStep)) {
+        const std::int64_t micros = std::llround(demoStep * 1e6);  // exact to 1 us; 0.03f -> 3/100 as --dt 0.03
+        if (micros > 0) step = {micros / std::gcd(micros, std::int64_t(1000000)),
+                                std::int64_t(1000000) / std::gcd(micros, std::int64_t(1000000))};
+    }
+    FrameClock clock(o.frameTime, step);
     const float frameDt = float(o.frameTime.ToDouble());
-    const float stepDt = float(o.step.ToDouble());
+    const float stepDt = float(step.ToDouble());
     const bool wantPixels = !frameDir.empty() || comparing;
     std::vector<std::uint8_t> scratch;
     std::vector<BodyState> bodies;

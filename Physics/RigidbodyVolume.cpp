@@ -129,7 +129,7 @@ mat3 RigidbodyVolume::InvTensor() const {
     return RotateDiagonal(ToMat3(orientation), inv);
 }
 
-void RigidbodyVolume::AddLinearImpulse(const vec3& impulse) { velocity += impulse; }
+void RigidbodyVolume::AddVelocityChange(const vec3& deltaVelocity) { velocity += deltaVelocity; }
 
 void RigidbodyVolume::AddRotationalImpulse(const vec3& point, const vec3& impulse) {
     angVel += MultiplyVector(Cross(point - position, impulse), InvTensor());

@@ -66,8 +66,9 @@ public:
     /// World-space inverse inertia tensor R^T I^-1 R (zero for static bodies); the diagonal is inverted per
     /// element, so small or light bodies keep their true inverse (erratum 5.2-10).
     mat3 InvTensor() const;
-    /// velocity += impulse (the book's convention: mass is not divided out).
-    void AddLinearImpulse(const vec3& impulse);
+    /// velocity += deltaVelocity (m/s): a velocity change, the mass is not divided out (the book's
+    /// AddLinearImpulse, which is not an impulse; docs/STYLE.md, "Renames in the engine").
+    void AddVelocityChange(const vec3& deltaVelocity);
     /// angVel += I^-1_world ((point - position) x impulse); point in world space.
     void AddRotationalImpulse(const vec3& point, const vec3& impulse);
     /// Damping factor for a step of dt seconds: damping itself when dt >= referenceStep or referenceStep <= 0,

@@ -23,4 +23,3 @@ void IWindow::Resize(int w, int h) {
     OnResize(width, height);
 }
 
-void IWindow::SetTargetFPS(int fps) { targetFPS = std::clamp(fps, 15, 120); }

@@ -98,8 +98,8 @@ struct SolverSetup {
 
 Result Run(World& w, int steps, const SolverSetup& setup) {
     PhysicsSystem system;
-    system.contactSolver = setup.solver;
-    system.ImpulseIteration = setup.iterations;
+    system.settings.contactSolver = setup.solver;
+    system.settings.solverIterations = setup.iterations;
     for (RigidbodyVolume& b : w.bodies) {
         w.start.push_back(b.position);
         system.AddRigidbody(&b);
@@ -140,8 +140,8 @@ void Bounce(float e, float damping, const SolverSetup& setup) {
     w.bodies.push_back(s);
     w.bodies[0].cor = 1.0f;
     PhysicsSystem system;
-    system.contactSolver = setup.solver;
-    system.ImpulseIteration = setup.iterations;
+    system.settings.contactSolver = setup.solver;
+    system.settings.solverIterations = setup.iterations;
     for (RigidbodyVolume& b : w.bodies) system.AddRigidbody(&b);
     const float h0 = 10.0f;
     std::vector<float> apex;

@@ -15,7 +15,8 @@
 struct Ch14Params {
     int particles = 50;  ///< the book's numParticles; the panel allows 1..300, the benchmark more
     Integrator integrator = Integrator::SemiImplicitEuler;  ///< the book's shipped integrator
-    float dt = 0.03f;                                       ///< s per step (the book's 0.03, erratum 5.2-16)
+    /// s: the physics step the demo asks its host for (book: 0.03, erratum 5.2-16); Step(dt) takes the step.
+    float dt = 0.03f;
     std::uint32_t seed = 1;                                 ///< MsvcRand seed; the book never seeds (1)
 };
 
@@ -31,12 +32,10 @@ public:
     /// Rebuilds the world from params (the book's ResetDemo): constraints, then the particles in order, each
     /// drawing x, y, z, bounce from a fresh MsvcRand(seed). particles < 1 is treated as 1.
     void Reset(const Ch14Params& params);
-    /// One fixed step of Params().dt, then the book's y < -5 clamp.
-    void Step();
+    /// One physics step of dt seconds, then the book's y < -5 clamp. dt <= 0 or non-finite does nothing.
+    void Step(float dt);
     /// Switches the integrator without a reset (the particles keep their state).
     void SetIntegrator(Integrator integrator);
-    /// Changes the step length used by Step(); non-positive or non-finite values are ignored.
-    void SetDt(float dt);
 
     const Ch14Params& Params() const { return params; }
     PhysicsSystem& System() { return *system; }

@@ -25,7 +25,7 @@ public:
     explicit Ch15Scene(const Ch15Params& params = {});
     /// Rebuilds the three bodies (the book's ResetDemo), volumes synced; the panel values are kept.
     void Reset();
-    /// Copies the panel values into the system, then one step of dt seconds.
+    /// Copies the panel values into the system, then one physics step of dt seconds.
     void Step(float dt);
     /// Registers projection, slop, iterations, linear-projection, debug and the reset action on *set.
     void AddParameters(ParameterSet* set);

@@ -20,7 +20,7 @@ struct Ch16Params {
     float k = -3.0f;        ///< book k for structural, shear and bend springs, -5..0
     float damping = 0.0f;   ///< book spring damping d (no widget in the book)
     Integrator integrator = Integrator::SemiImplicitEuler;
-    float dt = 0.03f;  ///< fixed step (book: 0.03 s, erratum 5.2-16)
+    float dt = 0.03f;  ///< s: the physics step the demo asks its host for (book: 0.03, erratum 5.2-16)
 };
 
 class Ch16Scene {
@@ -37,12 +37,9 @@ public:
     void Reset(const Ch16Params& params);
     /// Rebuilds from the current (panel) values, the integrator taken from the "integrator" choice.
     void Reset();
-    /// One fixed step of params.dt, then the stability check. False once unstable.
-    bool Step();
-
-    /// Runs the steps of params.dt due after `elapsed` host seconds (StepAccumulator); stops once unstable.
-    /// Returns the number of steps run.
-    int Advance(float elapsed);
+    /// One physics step of dt seconds, then the stability check. False once unstable.
+    /// Nothing once unstable, or for dt <= 0 or non-finite.
+    bool Step(float dt);
     /// Registers the panel values and the "reset" action on *set; --set resets the scene.
     void AddParameters(ParameterSet* set);
 

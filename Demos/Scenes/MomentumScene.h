@@ -24,6 +24,7 @@ public:
     explicit MomentumScene(const MomentumParams& params = {});
     /// Rebuilds the spheres and ground (the book's ResetDemo), volumes synced (erratum 5.2-28).
     void Reset();
+    /// One physics step of dt seconds.
     void Step(float dt);
     /// Registers the reset action on *set.
     void AddParameters(ParameterSet* set);

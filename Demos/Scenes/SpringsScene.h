@@ -20,7 +20,7 @@ struct SpringsParams {
     float b = 0.5f;           ///< book damping, 0..1
     float restLength = 1.0f;  ///< m, 0..5
     Integrator integrator = Integrator::SemiImplicitEuler;
-    float dt = 0.03f;  ///< fixed step (book: 0.03 s, erratum 5.2-16)
+    float dt = 0.03f;  ///< s: the physics step the demo asks its host for (book: 0.03, erratum 5.2-16)
 };
 
 class SpringsScene {
@@ -34,12 +34,9 @@ public:
     void Reset(const SpringsParams& params);
     /// Rebuilds from the current (panel) values, the integrator taken from the "integrator" choice.
     void Reset();
-    /// One fixed step of params.dt, the y >= -5 clamp, then the stability check. False once unstable.
-    bool Step();
-
-    /// Runs the steps of params.dt due after `elapsed` host seconds (StepAccumulator); stops once unstable.
-    /// Returns the number of steps run.
-    int Advance(float elapsed);
+    /// One physics step of dt seconds, the y >= -5 clamp, then the stability check. False once unstable.
+    /// Nothing once unstable, or for dt <= 0 or non-finite.
+    bool Step(float dt);
     /// Registers the panel values and the "reset" action on *set; --set resets the scene.
     void AddParameters(ParameterSet* set);
 

@@ -29,9 +29,9 @@ struct VolumeWorld {
 
     explicit VolumeWorld(const Settings& s, std::size_t capacity) {
         bodies.reserve(capacity);
-        if (s.iterations >= 0) system.ImpulseIteration = s.iterations;
-        if (s.projection >= 0) system.DoLinearProjection = s.projection != 0;
-        if (s.solver >= 0) system.contactSolver = ContactSolver(s.solver);
+        if (s.iterations >= 0) system.settings.solverIterations = s.iterations;
+        if (s.projection >= 0) system.settings.linearProjection = s.projection != 0;
+        if (s.solver >= 0) system.settings.contactSolver = ContactSolver(s.solver);
     }
     RigidbodyVolume& Add(RigidbodyType type, const vec3& position, float mass) {
         bodies.emplace_back(type);

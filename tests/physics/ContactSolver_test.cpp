@@ -26,8 +26,8 @@ struct Scene {
     PhysicsSystem system;
 
     Scene(ContactSolver solver, int iterations) {
-        system.contactSolver = solver;
-        system.ImpulseIteration = iterations;
+        system.settings.contactSolver = solver;
+        system.settings.solverIterations = iterations;
     }
     void Add() {
         for (RigidbodyVolume& b : bodies) {
@@ -97,7 +97,7 @@ TEST(ContactSolver, NamesRoundTrip) {
     EXPECT_FALSE(ParseContactSolver("", &untouched));
     EXPECT_EQ(untouched, ContactSolver::Accumulated);
     EXPECT_EQ(ContactSolverIds(), "book, accumulated");
-    EXPECT_EQ(PhysicsSystem().contactSolver, ContactSolver::Book) << "the book's solver must stay the default";
+    EXPECT_EQ(PhysicsSystem().settings.contactSolver, ContactSolver::Book) << "the book's solver must stay the default";
 }
 
 // Why the option exists: the book's solver (erratum 5.2-15) with the same settings, even at 10 passes, lets a
@@ -157,7 +157,7 @@ TEST(ContactSolver, AccumulatedRestingBoxStaysWithinSlop) {
     }
     std::printf("accumulated resting box: deepest sink %.4f m, max late speed %.3g m/s, drift %.3g m\n", 1.0f - lowest,
                 maxLateSpeed, s.MaxDrift());
-    EXPECT_GE(lowest, 1.0f - (s.system.PenetrationSlack + 0.005f));
+    EXPECT_GE(lowest, 1.0f - (s.system.settings.penetrationSlop + 0.005f));
     EXPECT_LT(maxLateSpeed, 1e-3f);
     EXPECT_LT(s.MaxDrift(), 1e-3f);
 }
@@ -185,8 +185,8 @@ TEST(ContactSolver, AccumulatedSlidingFrictionIsMuG) {
 // out as e = 0.5 times itself.
 TEST(ContactSolver, AccumulatedSphereCollisionConservesMomentum) {
     PhysicsSystem system;
-    system.contactSolver = ContactSolver::Accumulated;
-    system.ImpulseIteration = 10;
+    system.settings.contactSolver = ContactSolver::Accumulated;
+    system.settings.solverIterations = 10;
     RigidbodyVolume a(RigidbodyType::Sphere), b(RigidbodyType::Sphere);
     a.position = vec3(0, 0, 0);
     b.position = vec3(2.05f, 0.3f, 0);  // off-centre: the normal is not along the velocity

@@ -47,7 +47,7 @@ TEST(PhysicsSystemVolumes, RestingBoxDoesNotSink) {
         if (i >= 540) maxLateSpeed = std::fmax(maxLateSpeed, lastSpeed);
     }
     std::printf("resting box: deepest sink %.4f m, max speed in last second %.4f m/s\n", 1.0f - lowest, maxLateSpeed);
-    EXPECT_GE(lowest, 1.0f - (system.PenetrationSlack + 0.01f));
+    EXPECT_GE(lowest, 1.0f - (system.settings.penetrationSlop + 0.01f));
     EXPECT_LT(maxLateSpeed, 0.05f);
     EXPECT_LT(std::fabs(box.position.x) + std::fabs(box.position.z), 0.05f);
     EXPECT_GT(BestUpAlignment(box), 0.9999f);
@@ -208,7 +208,7 @@ TEST(PhysicsSystemVolumes, LinearProjectionUsesFullPenetrationForEveryShape) {
         EXPECT_NEAR(body.position.y, 0.8f + (0.2f - 0.01f) * 0.45f, 1e-4f) << static_cast<int>(kind);
         body.position.y = 0.8f;
         body.SynchCollisionVolumes();
-        system.DoLinearProjection = false;
+        system.settings.linearProjection = false;
         system.Update(kDt);
         EXPECT_NEAR(body.position.y, 0.8f, 1e-6f);
     }
@@ -240,7 +240,7 @@ std::vector<unsigned char> RunStack(int steps, bool guards = true) {
     bodies.push_back(MakeSphere(vec3(0.5f, 12, 0.2f), 1.0f, 1.0f));
     PhysicsSystem system;
     if (!guards) {
-        system.MaxVolumeSubsteps = 1;
+        system.settings.maxVolumeSubsteps = 1;
         for (RigidbodyVolume& b : bodies) b.referenceStep = 0.0f;
     }
     for (RigidbodyVolume& b : bodies) system.AddRigidbody(&b);
