@@ -135,7 +135,7 @@ void Bounce(float e, float damping, const SolverSetup& setup) {
     RigidbodyVolume s(RigidbodyType::Sphere);
     s.position = vec3(0, 11, 0);
     s.cor = e;
-    s.damping = damping;
+    s.velocityRetention = damping;
     s.SynchCollisionVolumes();
     w.bodies.push_back(s);
     w.bodies[0].cor = 1.0f;

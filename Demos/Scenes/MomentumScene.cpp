@@ -14,7 +14,7 @@ void MomentumScene::Reset() {
         RigidbodyVolume& s = bodies[i];
         const float spacing = (1.0f + 0.00001f) * (i < kSpheres - 1 ? 2.0f : 3.0f);
         s.position = vec3(static_cast<float>(i) * spacing, 1.16f, 0.0f);
-        s.damping = params.damping;
+        s.velocityRetention = params.damping;
         if (!params.gravity) s.gravity = vec3();
     }
     RigidbodyVolume& last = bodies[kSpheres - 1];

@@ -38,7 +38,7 @@ struct VolumeWorld {
         RigidbodyVolume& b = bodies.back();
         b.position = position;
         b.mass = mass;
-        b.damping = 1.0f;
+        b.velocityRetention = 1.0f;
         b.velocityEpsilon = 0.0f;
         b.SynchCollisionVolumes();
         return b;

@@ -257,7 +257,7 @@ TEST(ExtremesTest, MassRatioHeadOnCollisionConservesMomentum) {
         RigidbodyVolume& b = w.Add(RigidbodyType::Sphere, vec3(0.05f, 0.0f, 0.0f), ratio, 0.5f);
         for (RigidbodyVolume* s : {&a, &b}) {
             s->gravity = vec3();
-            s->damping = 1.0f;
+            s->velocityRetention = 1.0f;
         }
         a.velocity = vec3(2.0f, 0.0f, 0.0f);
         w.Finish();
@@ -301,7 +301,7 @@ TEST(ExtremesTest, ThousandMetresPerSecondVolumesStayFinite) {
     wall.box.size = vec3(20.0f, 5.0f, 5.0f);
     RigidbodyVolume& ball = w.Add(RigidbodyType::Sphere, vec3(-11.0f, 0.0f, 0.0f), 1.0f, 0.5f);
     ball.gravity = vec3();
-    ball.damping = 1.0f;
+    ball.velocityRetention = 1.0f;
     ball.velocity = vec3(1000.0f, 0.0f, 0.0f);
     w.Finish();
     ASSERT_TRUE(w.Run(1.0f / 60.0f, 30));
