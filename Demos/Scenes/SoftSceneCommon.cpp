@@ -31,7 +31,10 @@ Integrator IntegratorAt(int index) {
 void AddStepParameters(ParameterSet* set, int* integratorIndex, float* dt, const std::function<void()>& onChange) {
     set->AddChoice("integrator", integratorIndex, IntegratorChoices(),
                    "particle integrator for springs, cloth and joints (book: euler)", onChange);
-    set->AddFloat("dt", dt, kMinSceneDt, kMaxSceneDt, "physics step in s (book: 0.03); the host runs whole steps of it", onChange);
+    // No rebuild: the scene holds nothing that depends on its step, and a rebuild would draw new spawns from a
+    // generator the book never reseeds (joints).
+    set->AddFloat("dt", dt, kMinSceneDt, kMaxSceneDt,
+                  "physics step in s (book: 0.03); the host runs whole steps of it");
 }
 
 void ClampAboveFloor(std::vector<Particle>* particles, float floorY) {

@@ -20,8 +20,9 @@ Integrator IntegratorAt(int index);
 constexpr float kMinSceneDt = 0.0005f;
 constexpr float kMaxSceneDt = 0.1f;
 
-/// Registers "integrator" (choice bound to *integratorIndex) and "dt" (s, bound to *dt) on *set; onChange runs
-/// after --set (the scenes reset, as the book's widgets take effect on Reset).
+/// Registers "integrator" (choice bound to *integratorIndex) and "dt" (s, bound to *dt) on *set. onChange runs
+/// after --set integrator= (the scenes reset, as the book's widgets take effect on Reset); dt needs no reset: it
+/// is the step the host runs (DemoBase::PhysicsStep).
 void AddStepParameters(ParameterSet* set, int* integratorIndex, float* dt, const std::function<void()>& onChange);
 
 /// The "integrator" choice behind a chapter 16 scene's panel. The scene owns its params; this holds the rest.
