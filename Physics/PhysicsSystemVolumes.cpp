@@ -119,7 +119,7 @@ void PhysicsSystem::IntegrateVolumes(const StepContext& ctx) {
 
 void PhysicsSystem::ApplyLinearProjection(const StepContext& ctx) {
     // Positional correction (book.md 3.4 step 5) with the manifolds found before integration. Depth is the
-    // full penetration for every pair type (see FindCollisionFeatures(RigidbodyVolume&, ...)).
+    // full penetration for every pair type (CollisionManifold::depth).
     for (std::size_t i = 0; i < resultCount; ++i) {
         RigidbodyVolume& a = *results[i].a;
         RigidbodyVolume& b = *results[i].b;

@@ -219,10 +219,7 @@ void FindCollisionFeatures(RigidbodyVolume& ra, RigidbodyVolume& rb, CollisionMa
         FindCollisionFeatures(ra.box, rb.sphere, out);
     } else {
         FindCollisionFeatures(ra.box, rb.box, out);
-        return;
     }
-    // Sphere manifolds carry half the penetration (book.md 3.5, erratum 5.2-32); box-box carries all of it.
-    if (out->colliding) out->depth *= 2.0f;
 }
 
 CollisionManifold FindCollisionFeatures(RigidbodyVolume& ra, RigidbodyVolume& rb) {
