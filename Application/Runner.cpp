@@ -247,8 +247,9 @@ int RunSandbox(const Options& o, RunStats* stats) {
     Rational step = o.step;
     if (const double demoStep = double(demo.PhysicsStep()); demoStep > 0.0 && std::isfinite(demoStep)) {
         const std::int64_t micros = std::llround(demoStep * 1e6);  // exact to 1 us; 0.03f -> 3/100 as --dt 0.03
-        if (micros > 0) step = {micros / std::gcd(micros, std::int64_t(1000000)),
-                                std::int64_t(1000000) / std::gcd(micros, std::int64_t(1000000))};
+        if (micros > 0)
+            step = {micros / std::gcd(micros, std::int64_t(1000000)),
+                    std::int64_t(1000000) / std::gcd(micros, std::int64_t(1000000))};
     }
     FrameClock clock(o.frameTime, step);
     const float frameDt = float(o.frameTime.ToDouble());

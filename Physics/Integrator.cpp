@@ -143,7 +143,7 @@ void IntegrateParticleStates(Integrator method, Particle* const* particles, std:
                 const vec3 a = Scale(p.forces, InvMassOf(p));
                 const vec3 aPrev = SameBits(p.oldPosition, p.position) ? a : scratch[i].a0;
                 const vec3 history = Mad(Scale(p.velocity, dt), aPrev, -0.5f * dtSq);  // x0 - x_prev
-                const vec3 step = Mad(Scale(history, Retained(p)), a, dtSq);            // x1 - x0
+                const vec3 step = Mad(Scale(history, Retained(p)), a, dtSq);           // x1 - x0
                 p.oldPosition = p.position;
                 p.position = Add(p.position, step);
                 // Velocity at x1 to second order: the mean velocity over the step plus half the step's a dt. It

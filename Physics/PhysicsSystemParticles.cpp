@@ -17,8 +17,8 @@ void PhysicsSystem::AccumulateParticleForces() {
 void PhysicsSystem::IntegrateParticles(const StepContext& ctx) {
     if (integratorScratch.size() < allParticles.size()) integratorScratch.resize(allParticles.size());
     ForceEvaluator evaluate = [](void* self) { static_cast<PhysicsSystem*>(self)->AccumulateParticleForces(); };
-    IntegrateParticleStates(ctx.settings.integrator, allParticles.data(), allParticles.size(),
-                            integratorScratch.data(), ctx.dt, ctx.settings.particleRetentionStep, evaluate, this);
+    IntegrateParticleStates(ctx.settings.integrator, allParticles.data(), allParticles.size(), integratorScratch.data(),
+                            ctx.dt, ctx.settings.particleRetentionStep, evaluate, this);
 }
 
 void PhysicsSystem::SolveParticleConstraints() {

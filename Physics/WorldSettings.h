@@ -64,10 +64,10 @@ struct StepContext {
     float invDt = 0.0f;  ///< 1/s
     /// s, one volume substep (dt / substepCount; dt itself when substepCount is 1, bit for bit).
     float h = 0.0f;
-    float invH = 0.0f;      ///< 1/s
-    int substepCount = 1;   ///< volume substeps of this step
-    int substep = 0;        ///< index of the current volume substep, 0..substepCount-1
-    long long step = 0;     ///< steps taken before this one (PhysicsSystem::StepCount())
+    float invH = 0.0f;     ///< 1/s
+    int substepCount = 1;  ///< volume substeps of this step
+    int substep = 0;       ///< index of the current volume substep, 0..substepCount-1
+    long long step = 0;    ///< steps taken before this one (PhysicsSystem::StepCount())
     /// Volume substeps taken before the current one over the world's life (one per step without volumes): the
     /// Accumulated solver carries impulses over only from the substep just before.
     long long substepSerial = 0;

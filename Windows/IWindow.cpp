@@ -22,4 +22,3 @@ void IWindow::Resize(int w, int h) {
     height = std::max(1, h);
     OnResize(width, height);
 }
-

@@ -17,7 +17,7 @@ struct Ch14Params {
     Integrator integrator = Integrator::SemiImplicitEuler;  ///< the book's shipped integrator
     /// s: the physics step the demo asks its host for (book: 0.03, erratum 5.2-16); Step(dt) takes the step.
     float dt = 0.03f;
-    std::uint32_t seed = 1;                                 ///< MsvcRand seed; the book never seeds (1)
+    std::uint32_t seed = 1;  ///< MsvcRand seed; the book never seeds (1)
 };
 
 class Ch14Scene {

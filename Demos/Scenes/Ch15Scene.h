@@ -11,9 +11,9 @@
 
 /// The "Chapter 15 Demo" panel values (book defaults: 0.45 / 0.01 / 8, projection on, debug off).
 struct Ch15Params {
-    float projection = 0.45f;  ///< LinearProjectionPercent, 0.2..0.8 (the panel's "Porjection")
-    float slop = 0.01f;        ///< PenetrationSlack, 0.01..0.1 m
-    int iterations = 8;        ///< ImpulseIteration, 1..20
+    float projection = 0.45f;  ///< WorldSettings::projectionFraction, 0.2..0.8 (the panel's "Porjection")
+    float slop = 0.01f;        ///< WorldSettings::penetrationSlop, 0.01..0.1 m
+    int iterations = 8;        ///< WorldSettings::solverIterations, 1..20
     bool linearProjection = true;
     bool debug = false;  ///< DebugRender: edges and manifolds
     /// Not a book widget: 0 = the book's per-contact solver, 1 = accumulated impulses (ContactSolver.h).

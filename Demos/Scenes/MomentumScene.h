@@ -12,8 +12,9 @@
 /// The demo has only a Reset button. damping and gravity are not panel values: tests use them to isolate
 /// the impulses from the book's per-step damping (0.98) and from ground contact.
 struct MomentumParams {
-    float damping = 0.98f;  ///< velocity kept per 0.03 s by every sphere (RigidbodyVolume::velocityRetention, book 0.98)
-    bool gravity = true;    ///< false: no gravity, so the spheres never touch the ground (0.01 m gap)
+    float damping =
+        0.98f;            ///< velocity kept per 0.03 s by every sphere (RigidbodyVolume::velocityRetention, book 0.98)
+    bool gravity = true;  ///< false: no gravity, so the spheres never touch the ground (0.01 m gap)
 };
 
 class MomentumScene {

@@ -37,6 +37,7 @@ public:
     void AddParameters(ParameterSet* set, float* dt, const std::function<void()>& onChange) {
         AddStepParameters(set, &integratorIndex, dt, onChange);
     }
+
 private:
     int integratorIndex = 0;
 };

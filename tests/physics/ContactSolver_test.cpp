@@ -1,8 +1,8 @@
 // ContactSolver: the Accumulated solver (sequential impulses with an arbiter) against the book's, as whole scenes.
 // Settings unless a test says otherwise: dt 1/60 s, ImpulseIteration 10, the book's damping (velocityRetention 0.98)
 // and velocity threshold applied per 1/60 s step (referenceStep 1/60: the rate these thresholds were measured at;
-// at the default per-0.03 s rate a tower of 10 drifts 8 cm), cor 0.5, friction 0.6, slack 0.01, linear projection on (0.45), unit boxes (half-size 1,
-// mass 1) on a static slab whose top face is y = 0.
+// at the default per-0.03 s rate a tower of 10 drifts 8 cm), cor 0.5, friction 0.6, slack 0.01, linear projection on
+// (0.45), unit boxes (half-size 1, mass 1) on a static slab whose top face is y = 0.
 #include "Physics/ContactSolver.h"
 
 #include <gtest/gtest.h>
