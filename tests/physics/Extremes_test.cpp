@@ -158,7 +158,7 @@ TEST(ExtremesTest, HugeStepVolumeStackStaysFinite) {
 // Volumes have no continuous collision: one 0.5 s step moves a box resting on the ground 1.2 m down, past the
 // contact that existed at the start of the step; once a box's centre is past the slab's mid plane the manifold
 // pushes it out of the far side and the stack fell for ever (1,400 m and 130 m/s after 20 s), even on a 10 m
-// slab. PhysicsSystem::Update now splits such a step into volume substeps (PhysicsSystem::MaxVolumeSubsteps).
+// slab. PhysicsSystem::Update now splits such a step into volume substeps (WorldSettings::maxVolumeSubsteps).
 // With linear projection (the book's default) the stack stays on the ground at 0.5 s steps. Without it the book
 // solver has nothing that removes penetration, and a stack of three sinks through a 1 m slab at EVERY step size
 // (60 Hz: the bottom box is 0.4 m into the slab after 14 s and through it at 16 s; issue 5: "linear projection
@@ -191,7 +191,7 @@ TEST(ExtremesTest, HugeStepVolumeStackIsSubdividedAndBounded) {
     EXPECT_TRUE(w.system.LastError().empty()) << w.system.LastError();
 }
 
-// Beyond MaxVolumeSubsteps the step is clamped (not refused: the world still advances) and LastError says so,
+// Beyond settings.maxVolumeSubsteps the step is clamped (not refused: the world still advances) and LastError says so,
 // naming dt; the state stays finite.
 TEST(ExtremesTest, StepNeedingTooManySubstepsIsClampedAndReported) {
     Volumes w;
@@ -219,7 +219,7 @@ TEST(ExtremesTest, TinyStepVolumeSettlesOnTheGround) {
 
 // The book's velocityEpsilon (0.001 m/s) zeroes every velocity component below it AFTER gravity is added, so for
 // g dt < 0.001 (dt < 1.02e-4 s) a body released from rest never started to fall: at dt = 1e-5 it hung in the air
-// for ever. Below 1/60 s the threshold and the per-step damping are now converted to the step
+// for ever. Away from their 0.03 s reference step the threshold and the retention are now converted to the step
 // (RigidbodyVolume::referenceStep).
 TEST(ExtremesTest, TinyStepVolumeReleasedFromRestFalls) {
     Volumes w;
@@ -468,7 +468,7 @@ TEST(ExtremesTest, MillionMetreVolumesStayFinite) {
 
 // ---------------------------------------------------------------------------------------------------------
 // The guards above (substeps, converted damping and threshold, validation) leave the book's 0.03 s step alone:
-// the three chapter-15 demo scenes run 200 steps bit for bit as with every guard off (MaxVolumeSubsteps 1, the
+// the three chapter-15 demo scenes run 200 steps bit for bit as with every guard off (maxVolumeSubsteps 1, the
 // book's per-step damping at every dt), and never subdivide.
 
 template <typename Scene, typename Step>
