@@ -15,7 +15,9 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <cstdint>
 #include <new>
+#include <numeric>
 #include <vector>
 
 #include "Application/RunOutputs.h"
@@ -186,6 +188,17 @@ float ApplyCamera(const Options& o, DemoBase& demo) {
 
 // ---- The run loop.
 
+/// The host's fixed step: the demo's physics step when it asks for one (DemoBase::PhysicsStep, e.g. --set
+/// dt=0.01), else --dt. Whole physics steps run inside host time, so simulated time follows it at any step.
+Rational HostStep(const Options& o, const DemoBase& demo) {
+    const double demoStep = double(demo.PhysicsStep());
+    if (!(demoStep > 0.0) || !std::isfinite(demoStep)) return o.step;
+    const std::int64_t micros = std::llround(demoStep * 1e6);  // exact to 1 us; 0.03f -> 3/100 as --dt 0.03
+    if (micros <= 0) return o.step;
+    const std::int64_t g = std::gcd(micros, std::int64_t(1000000));
+    return {micros / g, std::int64_t(1000000) / g};
+}
+
 /// Everything the frame loop carries from one frame to the next.
 struct RunLoop {
     const Options& o;
@@ -193,6 +206,7 @@ struct RunLoop {
     DemoBase& demo;
     RunOutputs& outputs;
     RunStats* stats;
+    const Rational step;  ///< the host's fixed step (HostStep)
     FrameClock clock;
     float baseYaw = 0.0f;
     ProgressLine progress;
@@ -208,7 +222,8 @@ struct RunLoop {
           demo(d),
           outputs(out),
           stats(s),
-          clock(o.frameTime, o.step),
+          step(HostStep(o, d)),
+          clock(o.frameTime, step),
           baseYaw(yaw),
           progress(o) {}
 };
@@ -230,7 +245,7 @@ void SimulateFrame(RunLoop& r, int frame) {
     }
     r.window.OnUpdate(float(r.o.frameTime.ToDouble()));
     r.demo.ScriptFrame(frame);
-    const float stepDt = float(r.o.step.ToDouble());
+    const float stepDt = float(r.step.ToDouble());
     for (int n = r.clock.AdvanceFrame(); n > 0; --n) r.window.OnFixedUpdate(stepDt);
     if (r.o.orbitDegreesPerFrame != 0.0f) {
         const float yaw = std::fmod(r.baseYaw + r.o.orbitDegreesPerFrame * float(frame), 360.0f);

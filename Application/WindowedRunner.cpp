@@ -128,7 +128,8 @@ int RunWindowed(const WindowedOptions& o) {
     ReportDemo(o, shownDemo);
 
     using Clock = std::chrono::steady_clock;
-    const auto frameBudget = std::chrono::milliseconds(1000 / window.GetTargetFPS());  // the book's SKIP_TICKS
+    // The book's frame limiter: SKIP_TICKS = 1000 / 60 whole milliseconds (docs/book-reference.md §1.2).
+    const auto frameBudget = std::chrono::milliseconds(1000 / 60);
     double last = DesktopWindow::Seconds(), fixedElapsed = 0.0;
     int frames = 0;
     long long steps = 0;
@@ -146,11 +147,14 @@ int RunWindowed(const WindowedOptions& o) {
         const float framerate = ImGui::GetIO().Framerate;
         if (framerate > 0.0f) window.SetNominalFrameTime(1000.0f / framerate);
         window.OnUpdate(float(deltaTime));
-        // The book's accumulator (strict >), docs/book-reference.md §1.2.
+        // The book's accumulator (strict >), docs/book-reference.md §1.2, stepping the running demo's own
+        // physics step when it asks for one (DemoBase::PhysicsStep), else --dt.
+        const DemoBase* demo = window.CurrentDemo();
+        const double step = demo != nullptr && demo->PhysicsStep() > 0.0f ? double(demo->PhysicsStep()) : o.step;
         fixedElapsed += deltaTime;
-        while (fixedElapsed > o.step) {
-            window.OnFixedUpdate(float(o.step));
-            fixedElapsed -= o.step;
+        while (fixedElapsed > step) {
+            window.OnFixedUpdate(float(step));
+            fixedElapsed -= step;
             ++steps;
         }
         window.OnRender();

@@ -14,7 +14,7 @@ struct WindowedOptions {
     std::vector<std::pair<std::string, std::string>> sets;  ///< --set, applied to the first demo
     int frames = 0;                                         ///< close after this many frames; 0 = when closed
     int width = 800, height = 600;
-    double step = 0.03;  ///< fixed physics step in seconds (the book's 0.03)
+    double step = 0.03;  ///< s: the fixed step when the running demo names none (DemoBase::PhysicsStep); book 0.03
     bool vsync = true;
     bool noUi = false;
     bool quiet = false;  ///< no "demo: ID" lines and no summary

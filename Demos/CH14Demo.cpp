@@ -39,8 +39,7 @@ CH14Demo::CH14Demo() {
     for (Integrator i : kAllIntegrators) ids.push_back(ToString(i));
     params.AddChoice("integrator", &integratorIndex, ids, "particle integrator (book: euler)",
                      [this] { scene.SetIntegrator(kAllIntegrators[integratorIndex]); });
-    params.AddFloat("dt", &stepDt, 0.0f, kMaxSceneDt, "physics step in s; 0 = the host's fixed step (book: 0.03)",
-                    [this] { scene.SetDt(stepDt); });
+    params.AddFloat("dt", &stepDt, 0.0f, kMaxSceneDt, "physics step in s; 0 = the host's fixed step (book: 0.03)");
     params.AddInt("seed", &seed, 0, 2147483647, "MSVC rand() seed of the spawns (book: 1); on reset", resetIfFresh);
     AddShowHelpButton();
 }
@@ -62,11 +61,9 @@ void CH14Demo::Initialize(int width, int height) {
 
 void CH14Demo::Update(float dt) {
     DemoBase::Update(dt);
-    const float step = stepDt > 0.0f ? stepDt : dt;
-    deltas.push_back(step * 1000.0f);
+    deltas.push_back(dt * 1000.0f);
     while (deltas.size() > kDeltaHistory) deltas.pop_front();
-    scene.SetDt(step);
-    scene.Step();
+    scene.Step(dt);
 }
 
 void CH14Demo::Render() {

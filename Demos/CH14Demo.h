@@ -17,10 +17,11 @@ public:
     void Initialize(int width, int height) override;
     /// Origin axes, light (0, 1, 0, 0), then the physics system (red particles, blue ground, green boards).
     void Render() override;
-    /// Camera, then one physics step and the y < -5 clamp. The step is the `dt` parameter (s) if set, else
-    /// the host's fixed delta (book: 0.03). The panel's "Simulation delta" averages these steps in ms
-    /// (deterministic; the book measured wall-clock time between fixed updates).
+    /// Camera, then one physics step of dt seconds and the y < -5 clamp. The panel's "Simulation delta"
+    /// averages these steps in ms (deterministic; the book measured wall-clock time between fixed updates).
     void Update(float dt) override;
+    /// The `dt` parameter (s) if set, else 0: the host's own fixed step (book: 0.03).
+    float PhysicsStep() const override { return stepDt; }
     /// "Chapter 14 Demo" panel drawn from the table: delta, particle count slider, Reset, Show Help.
     void ImGUI() override;
     /// One "particle" row per particle, in spawn order.

@@ -15,7 +15,7 @@ void CH16Demo::Initialize(int width, int height) {
 
 void CH16Demo::Update(float dt) {
     DemoBase::Update(dt);
-    scene.Advance(dt);
+    scene.Step(dt);
     ReportOnce(scene.Monitor(), "ch16", &reported);
 }
 

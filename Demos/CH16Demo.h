@@ -14,8 +14,11 @@ public:
     /// Origin, light (0, 1, 0, 0), the four posts drawn thin (half-size 0.1, 0.5, 0.1) in green although they
     /// collide at 0.3, the ground in blue, the cloth as red one-sided triangles (book.md 2.7).
     void Render() override;
-    /// Camera, then the scene's steps due after dt; stops and prints the report once the monitor fails.
+    /// Camera, then one physics step of dt seconds (the host runs whole steps of PhysicsStep()); stops and
+    /// prints the report once the stability monitor fails.
     void Update(float dt) override;
+    /// The scene's dt (s): the host runs whole physics steps of it.
+    float PhysicsStep() const override { return scene.Params().dt; }
     /// "Chapter 16 Demo" panel (DrawSoftDemoPanel) from the table: Count, Distance, Spring k (width 50), Reset.
     void ImGUI() override;
     /// One "cloth-particle" row per cloth particle, index z*N + x.

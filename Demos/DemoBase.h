@@ -33,8 +33,13 @@ public:
     virtual void Resize(int width, int height);
     /// Draws the origin axes (no depth test, unlit).
     virtual void Render();
-    /// Camera control from the mouse state (right rotates, middle zooms, left pans), then camera.Update(dt).
+    /// The host's fixed update: one physics step of dt seconds. Here camera control from the mouse state (right
+    /// rotates, middle zooms, left pans), then camera.Update(dt); subclasses then step their scene by dt.
     virtual void Update(float dt);
+    /// The physics step (s) this demo asks its host for: the host's fixed-step accumulator then runs whole
+    /// steps of it, so simulated time follows host time at any step. 0 (the default) takes the host's own
+    /// step (--dt, book 0.03 s).
+    virtual float PhysicsStep() const { return 0.0f; }
     /// The help window ("How to use"); subclasses draw their panel and call this.
     virtual void ImGUI();
     virtual void Shutdown() {}

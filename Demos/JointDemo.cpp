@@ -21,7 +21,7 @@ void JointDemo::Initialize(int width, int height) {
 
 void JointDemo::Update(float dt) {
     DemoBase::Update(dt);
-    scene.Advance(dt);
+    scene.Step(dt);
     ReportOnce(scene.Monitor(), "joints", &reported);
 }
 

@@ -14,8 +14,11 @@ public:
     void Initialize(int width, int height) override;
     /// Origin, light (0, 1, 0, 0), the physics system: red particles, blue ground, green boards, joint lines.
     void Render() override;
-    /// Camera, then the scene's steps due after dt with the y >= -5 clamp; stops and reports on a blow-up.
+    /// Camera, then one physics step of dt seconds (the host runs whole steps of PhysicsStep()); stops and
+    /// prints the report once the stability monitor fails.
     void Update(float dt) override;
+    /// The scene's dt (s): the host runs whole physics steps of it.
+    float PhysicsStep() const override { return scene.Params().dt; }
     /// "Joint Demo" panel (DrawSoftDemoPanel) from the table: particle count slider, Reset, Show Help.
     void ImGUI() override;
     /// One "particle" row per particle, in spawn order.

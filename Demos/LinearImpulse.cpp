@@ -24,7 +24,7 @@ void LinearImpulse::Render() {
 
 void LinearImpulse::Update(float dt) {
     DemoBase::Update(dt);
-    scene.Update(dt);
+    scene.Step(dt);
 }
 
 void LinearImpulse::ImGUI() {

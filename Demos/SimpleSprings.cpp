@@ -18,7 +18,7 @@ void SimpleSprings::Initialize(int width, int height) {
 
 void SimpleSprings::Update(float dt) {
     DemoBase::Update(dt);
-    scene.Advance(dt);
+    scene.Step(dt);
     ReportOnce(scene.Monitor(), "springs", &reported);
 }
 

@@ -14,9 +14,11 @@ public:
     void Initialize(int width, int height) override;
     /// Origin, light (0, 1, 0, 0), the physics system: red particles, blue ground, the spring line.
     void Render() override;
-    /// Camera, then the scene's steps due after dt (one 0.03 s step per 0.03 s by default) with the y >= -5
-    /// clamp; stops and prints the report to stderr once the stability monitor fails.
+    /// Camera, then one physics step of dt seconds (the host runs whole steps of PhysicsStep()); stops and
+    /// prints the report once the stability monitor fails.
     void Update(float dt) override;
+    /// The scene's dt (s): the host runs whole physics steps of it.
+    float PhysicsStep() const override { return scene.Params().dt; }
     /// "Simple Springs Demo" panel (DrawSoftDemoPanel) from the table: k, b, l sliders, Reset, Show Help.
     void ImGUI() override;
     /// One "particle" row per particle: 0 heavy, 1 light.

@@ -1,7 +1,7 @@
 #pragma once
 // Sweep-and-prune on the world x axis (Baraff's sort-and-sweep) for scenes with many volumes. The sort order is
 // kept between steps, so an insertion sort of a nearly sorted list costs O(n). Small scenes never use it:
-// PhysicsSystem tests all pairs below PhysicsSystem::BroadphaseMinVolumes.
+// PhysicsSystem tests all pairs below WorldSettings::broadphaseMinVolumes.
 
 #include <utility>
 #include <vector>

@@ -6,7 +6,7 @@ constexpr float kDefaultK = -1.0f;
 constexpr float kDefaultB = 0.0f;
 constexpr float kParticleMass = 1.0f;
 constexpr float kParticleBounce = 0.0f;
-constexpr float kParticleFriction = 0.9f;  // per-step velocity damping
+constexpr float kParticleRetention = 0.9f;  // velocity kept per book step (the book's particle "friction")
 
 Spring MakeSpring(Particle* a, Particle* b) {
     Spring s(kDefaultK, kDefaultB, Magnitude(b->GetPosition() - a->GetPosition()));
@@ -39,7 +39,7 @@ void Cloth::Initialize(int gridSize, float distance, const vec3& position) {
             p.SetVelocity(vec3());
             p.SetMass(kParticleMass);
             p.SetBounce(kParticleBounce);
-            p.SetFriction(kParticleFriction);
+            p.SetVelocityRetention(kParticleRetention);
         }
     }
     auto at = [&](int x, int z) { return &verts[z * n + x]; };
@@ -72,6 +72,6 @@ void Cloth::SetParticleMass(float mass) {
     for (Particle& p : verts) p.SetMass(mass);
 }
 
-void Cloth::SetParticleFriction(float friction) {
-    for (Particle& p : verts) p.SetFriction(friction);
+void Cloth::SetParticleVelocityRetention(float retention) {
+    for (Particle& p : verts) p.SetVelocityRetention(retention);
 }

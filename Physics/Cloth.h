@@ -25,6 +25,7 @@ public:
     void SetShearSprings(float k, float b);
     void SetBendSprings(float k, float b);
     void SetParticleMass(float mass);
-    void SetParticleFriction(float friction);
+    /// Particle::SetVelocityRetention on every particle (the book's SetParticleFriction; book cloth: 0.9).
+    void SetParticleVelocityRetention(float retention);
     int GridSize() const { return static_cast<int>(clothSize); }
 };

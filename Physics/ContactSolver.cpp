@@ -9,6 +9,7 @@
 
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
+#include "Physics/WorldSettings.h"
 
 namespace {
 
@@ -82,7 +83,7 @@ void AccumulatedContactSolver::Clear() {
     previousArbiters.clear();
     previousContacts.clear();
     warmStarted = 0;
-    lastStep = -2;
+    lastSubstep = -2;
 }
 
 float AccumulatedContactSolver::TotalNormalImpulse() const {
@@ -195,12 +196,14 @@ void AccumulatedContactSolver::Prepare(const std::vector<RigidbodyVolume*>& volu
 }
 
 void AccumulatedContactSolver::Solve(const std::vector<RigidbodyVolume*>& volumes, const CollisionPair* pairs,
-                                     std::size_t count, int iterations, float dt, float slop, long long step,
-                                     const AccumulatedSolverSettings& settings) {
-    // Impulses carry over only between consecutive steps: after a step without contacts (Solve not called)
+                                     std::size_t count, const StepContext& ctx) {
+    // Impulses carry over only between consecutive substeps: after one without contacts (Solve not called)
     // the kept contacts describe an older state.
-    Prepare(volumes, pairs, count, dt, slop, step == lastStep + 1, settings);
-    lastStep = step;
+    const WorldSettings& world = ctx.settings;
+    Prepare(volumes, pairs, count, ctx.h, world.penetrationSlop, ctx.substepSerial == lastSubstep + 1,
+            world.accumulated);
+    lastSubstep = ctx.substepSerial;
+    const int iterations = world.solverIterations;
 
     // Warm start: apply last step's matched totals once, before the passes.
     for (const Arbiter& arb : arbiters) {

@@ -5,7 +5,7 @@
 //                nothing kept between steps; erratum 5.2-15). The default: every book demo behaves as printed.
 //   Accumulated  sequential impulses with an arbiter (the "proper arbiter system" the book's README lists as
 //                future work, book.md 6): each colliding pair keeps its contacts across steps; per contact a
-//                normal and two tangent impulses are accumulated over the ImpulseIteration passes and the
+//                normal and two tangent impulses are accumulated over the solverIterations passes and the
 //                running totals are clamped (normal >= 0, friction inside the Coulomb cone mu*jn), not the
 //                increments; impulses are warm-started from the previous step's matched contacts. Stacks stand.
 // docs/ch15.md has the design notes and the measured figures.
@@ -19,6 +19,7 @@
 
 class RigidbodyVolume;
 struct CollisionPair;
+struct StepContext;
 
 enum class ContactSolver {
     Book,         ///< per-contact impulses divided by the contact count, no memory (the book's solver)
@@ -34,13 +35,14 @@ std::string ContactSolverIds();
 /// Every solver, in enum order.
 constexpr ContactSolver kAllContactSolvers[] = {ContactSolver::Book, ContactSolver::Accumulated};
 
-/// Settings of the Accumulated solver. Iterations and slop come from PhysicsSystem (ImpulseIteration,
-/// PenetrationSlack); linear projection still runs after integration when PhysicsSystem::DoLinearProjection is on.
+/// Settings of the Accumulated solver (WorldSettings::accumulated). Iterations and slop are WorldSettings'
+/// solverIterations and penetrationSlop; linear projection still runs after integration when
+/// WorldSettings::linearProjection is on.
 struct AccumulatedSolverSettings {
-    /// Fraction of last step's matched impulse applied before the first pass (0 = no warm start).
+    /// Fraction (0..1) of last step's matched impulse applied before the first pass (0 = no warm start).
     float warmStartFactor = 1.0f;
-    /// Baumgarte factor: a contact deeper than the slop gets a target separating speed of
-    /// baumgarte * (depth - slop) / dt. 0 leaves position error to linear projection alone.
+    /// Baumgarte factor (dimensionless, per step): a contact deeper than the slop gets a target separating speed
+    /// of baumgarte * (depth - slop) / dt. 0 leaves position error to linear projection alone.
     float baumgarte = 0.0f;
     /// Restitution is applied only when the closing speed exceeds this (m/s); slower contacts are inelastic, so
     /// resting bodies do not bounce on gravity's g*dt.
@@ -57,10 +59,11 @@ struct AccumulatedSolverSettings {
 class AccumulatedContactSolver {
 public:
     /// Solves the velocities of `volumes` for pairs[0..count), which must be sorted by (indexA, indexB) as
-    /// PhysicsSystem::FindCollisions writes them. `step` is PhysicsSystem::StepCount(): impulses are carried over
-    /// only from the step just before. dt is the step (s), used by the Baumgarte bias.
+    /// PhysicsSystem::FindCollisions writes them, over one volume substep of ctx.h seconds (the Baumgarte bias)
+    /// with ctx.settings' solverIterations, penetrationSlop and accumulated. Impulses are carried over only from
+    /// the substep just before (ctx.substepSerial is one more than at the last Solve), not from an older one.
     void Solve(const std::vector<RigidbodyVolume*>& volumes, const CollisionPair* pairs, std::size_t count,
-               int iterations, float dt, float slop, long long step, const AccumulatedSolverSettings& settings);
+               const StepContext& ctx);
     /// Forgets every kept contact (the next Solve starts cold).
     void Clear();
 
@@ -98,5 +101,5 @@ private:
     std::vector<mat3> invInertia;               // per volume index: world R^T I^-1 R, this step
     std::vector<unsigned char> matchedScratch;  // per previous contact of one pair
     std::size_t warmStarted = 0;
-    long long lastStep = -2;
+    long long lastSubstep = -2;  // ctx.substepSerial of the last Solve
 };

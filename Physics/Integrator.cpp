@@ -3,6 +3,7 @@
 #include "Physics/Integrator.h"
 
 #include "Physics/Particle.h"
+#include "Physics/WorldSettings.h"
 
 namespace {
 
@@ -60,18 +61,29 @@ int ForceEvaluations(Integrator integrator) {
 }
 
 void IntegrateParticleStates(Integrator method, Particle* const* particles, std::size_t count,
-                             IntegratorScratch* scratch, float dt, ForceEvaluator evaluate, void* context) {
+                             IntegratorScratch* scratch, float dt, float retentionStep, ForceEvaluator evaluate,
+                             void* context) {
     // Particle::InvMass inlined (it is out of line): 0 for mass 0.
     auto InvMassOf = [](const Particle& p) { return p.GetMass() == 0.0f ? 0.0f : 1.0f / p.GetMass(); };
     if (count == 0 || !(dt > 0.0f)) return;
+    // The retention over this step, FactorOverStep(velocityRetention, retentionStep, dt). Particles of a scene
+    // share one value, so pow runs once per distinct retention in a row, not once per particle.
+    float lastRetention = -1.0f, lastFactor = 1.0f;
+    auto Retained = [&](const Particle& p) {
+        if (p.velocityRetention != lastRetention) {
+            lastRetention = p.velocityRetention;
+            lastFactor = FactorOverStep(lastRetention, retentionStep, dt);
+        }
+        return lastFactor;
+    };
     const float halfDt = 0.5f * dt;
     switch (method) {
         case Integrator::ExplicitEuler:
-            // Forward Euler with the step's damping on the carried velocity: v0 = v f; x += v0 dt; v = v0 + a dt.
+            // Forward Euler with the step's retention on the carried velocity: v0 = v f; x += v0 dt; v = v0 + a dt.
             evaluate(context);
             for (std::size_t i = 0; i < count; ++i) {
                 Particle& p = *particles[i];
-                const vec3 v0 = Scale(p.velocity, p.friction);
+                const vec3 v0 = Scale(p.velocity, Retained(p));
                 const vec3 a = Scale(p.forces, InvMassOf(p));
                 p.oldPosition = p.position;
                 p.position = Mad(p.position, v0, dt);
@@ -86,7 +98,7 @@ void IntegrateParticleStates(Integrator method, Particle* const* particles, std:
                 Particle& p = *particles[i];
                 const vec3 a = Scale(p.forces, InvMassOf(p));
                 p.oldPosition = p.position;
-                p.velocity = Mad(Scale(p.velocity, p.friction), a, dt);
+                p.velocity = Mad(Scale(p.velocity, Retained(p)), a, dt);
                 p.position = Mad(p.position, p.velocity, dt);
             }
             break;
@@ -99,7 +111,7 @@ void IntegrateParticleStates(Integrator method, Particle* const* particles, std:
                 Particle& p = *particles[i];
                 IntegratorScratch& s = scratch[i];
                 s.x0 = p.position;
-                s.v0 = Scale(p.velocity, p.friction);
+                s.v0 = Scale(p.velocity, Retained(p));
                 s.a0 = Scale(p.forces, InvMassOf(p));
                 p.position = Mad(s.x0, Mad(s.v0, s.a0, halfDt), dt);
                 p.velocity = Mad(s.v0, s.a0, dt);  // predicted, for velocity-dependent forces
@@ -131,7 +143,7 @@ void IntegrateParticleStates(Integrator method, Particle* const* particles, std:
                 const vec3 a = Scale(p.forces, InvMassOf(p));
                 const vec3 aPrev = SameBits(p.oldPosition, p.position) ? a : scratch[i].a0;
                 const vec3 history = Mad(Scale(p.velocity, dt), aPrev, -0.5f * dtSq);  // x0 - x_prev
-                const vec3 step = Mad(Scale(history, p.friction), a, dtSq);            // x1 - x0
+                const vec3 step = Mad(Scale(history, Retained(p)), a, dtSq);           // x1 - x0
                 p.oldPosition = p.position;
                 p.position = Add(p.position, step);
                 // Velocity at x1 to second order: the mean velocity over the step plus half the step's a dt. It
@@ -149,7 +161,7 @@ void IntegrateParticleStates(Integrator method, Particle* const* particles, std:
                 Particle& p = *particles[i];
                 IntegratorScratch& s = scratch[i];
                 s.x0 = p.position;
-                s.v0 = Scale(p.velocity, p.friction);
+                s.v0 = Scale(p.velocity, Retained(p));
                 p.velocity = s.v0;
             }
             evaluate(context);  // k1 at (x0, v0)

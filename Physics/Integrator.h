@@ -1,7 +1,8 @@
 #pragma once
 // Particle integrators, chosen at run time per PhysicsSystem (not by #define as in the book).
-// Every integrator keeps Particle::velocity in m/s at the particle's position and applies the book's per-step
-// damping `friction` (f) so that f = 1 gives the pure method; docs/ch14.md has the table and the details.
+// Every integrator keeps Particle::velocity in m/s at the particle's position and applies the particle's velocity
+// retention (the book's per-step "friction"), converted to the step in use, as a factor f on the carried velocity,
+// so that f = 1 gives the pure method; docs/ch14.md has the table and the details.
 
 #include <cstddef>
 #include <string>
@@ -41,10 +42,14 @@ struct IntegratorScratch {
 using ForceEvaluator = void (*)(void* context);
 
 /// Advances particles[0..count) together by dt seconds with `method`; scratch must hold `count` entries.
+/// Each particle's velocityRetention is defined per step of retentionStep seconds (WorldSettings::
+/// particleRetentionStep) and applied as FactorOverStep(retention, retentionStep, dt): the book's factor itself
+/// at its step, the same fraction per second at any other.
 /// `evaluate(context)` is called once per force evaluation (1, 2 or 4 times, ForceEvaluations) with every
 /// particle set to the stage's state, so coupled position- and velocity-dependent forces (springs) are
 /// re-evaluated at intermediate states. Afterwards oldPosition = start-of-step position (the segment the
 /// constraint solver tests) and velocity is in m/s. Mass 0 means no acceleration (InvMass 0). dt <= 0 or
 /// count 0 does nothing.
 void IntegrateParticleStates(Integrator method, Particle* const* particles, std::size_t count,
-                             IntegratorScratch* scratch, float dt, ForceEvaluator evaluate, void* context);
+                             IntegratorScratch* scratch, float dt, float retentionStep, ForceEvaluator evaluate,
+                             void* context);

@@ -5,6 +5,8 @@
 #include <cfloat>
 #include <cmath>
 
+#include "Physics/WorldSettings.h"
+
 namespace {
 
 inline float Dot3(const vec3& a, const vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
@@ -110,10 +112,10 @@ Particle::Particle() : Rigidbody(RigidbodyType::Particle) {}
 void Particle::ApplyForces() { forces = gravity * mass; }
 
 void Particle::Update(float dt) {
-    // The book's shipped EULER_INTEGRATION step (semi-implicit Euler with per-step damping).
+    // The book's shipped EULER_INTEGRATION step (semi-implicit Euler with its velocity retention per 0.03 s).
     oldPosition = position;
     const vec3 acceleration = forces * InvMass();
-    velocity = velocity * friction + acceleration * dt;
+    velocity = velocity * FactorOverStep(velocityRetention, kBookStep, dt) + acceleration * dt;
     position = position + velocity * dt;
 }
 
@@ -152,5 +154,5 @@ void Particle::ResolveHit(const vec3& point, const vec3& normal) {
 }
 
 void Particle::SetPosition(const vec3& pos) { position = oldPosition = pos; }
-void Particle::AddImpulse(const vec3& impulse) { velocity += impulse; }
+void Particle::AddVelocityChange(const vec3& deltaVelocity) { velocity += deltaVelocity; }
 float Particle::InvMass() const { return mass == 0.0f ? 0.0f : 1.0f / mass; }

@@ -1,6 +1,7 @@
 #pragma once
 // A point mass with no volume (book.md 3.2): falls under gravity, bounces off OBB constraints, never
-// tunnels. `friction` is the book's per-step velocity damping factor, not contact friction.
+// tunnels. `velocityRetention` is the book's particle "friction": the fraction of velocity kept per book step
+// (0.03 s), not contact friction (docs/STYLE.md, "Renames in the engine").
 
 #include <cstddef>
 #include <vector>
@@ -26,7 +27,8 @@ public:
 
     /// forces = gravity * mass (the repo's fix of erratum 5.1-6).
     void ApplyForces() override;
-    /// One step with the book's shipped integrator (semi-implicit Euler) using the current `forces`.
+    /// One step with the book's shipped integrator (semi-implicit Euler) using the current `forces`, retaining
+    /// FactorOverStep(velocityRetention, kBookStep, dt) of the velocity.
     void Update(float dt) override;
     /// Tests the segment travelled this step (oldPosition -> position, world space) against every OBB and
     /// resolves the earliest hit: the particle is put kContactOffset off the surface and the approaching normal
@@ -42,8 +44,9 @@ public:
     vec3 GetOldPosition() const { return oldPosition; }
     void SetBounce(float b) { bounce = b; }
     float GetBounce() const { return bounce; }
-    /// Adds a velocity change (m/s), whatever the integrator.
-    void AddImpulse(const vec3& impulse);
+    /// Adds a velocity change (m/s), whatever the integrator; the mass is not divided out (the book's
+    /// AddImpulse, which is not an impulse).
+    void AddVelocityChange(const vec3& deltaVelocity);
     /// 1/mass, 0 for mass 0 (immovable).
     float InvMass() const;
     void SetMass(float m) { mass = m; }
@@ -51,8 +54,10 @@ public:
     /// Velocity in m/s for every integrator (position Verlet derives it from the last step).
     vec3 GetVelocity() const { return velocity; }
     void SetVelocity(const vec3& v) { velocity = v; }
-    void SetFriction(float f) { friction = f; }
-    float GetFriction() const { return friction; }
+    /// Fraction of velocity kept per step of WorldSettings::particleRetentionStep (book: 0.95 per 0.03 s, its
+    /// "friction"); 1 keeps all of it. Other steps keep the same fraction per second.
+    void SetVelocityRetention(float retention) { velocityRetention = retention; }
+    float GetVelocityRetention() const { return velocityRetention; }
     void SetGravity(const vec3& g) { gravity = g; }
     vec3 GetGravity() const { return gravity; }
     vec3 GetForces() const { return forces; }
@@ -60,14 +65,14 @@ public:
 
 protected:
     friend class PhysicsSystem;
-    friend void IntegrateParticleStates(Integrator, Particle* const*, std::size_t, IntegratorScratch*, float,
+    friend void IntegrateParticleStates(Integrator, Particle* const*, std::size_t, IntegratorScratch*, float, float,
                                         ForceEvaluator, void*);
     vec3 position;
     vec3 oldPosition;
     vec3 velocity;
     vec3 forces;
     vec3 gravity{0.0f, -9.82f, 0.0f};
-    float friction = 0.95f;
+    float velocityRetention = 0.95f;  ///< per book step (0.03 s); the book's "friction"
     float bounce = 0.7f;
     float mass = 1.0f;
 

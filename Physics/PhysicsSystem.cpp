@@ -14,33 +14,40 @@ PhysicsSystem::~PhysicsSystem() = default;
 
 void PhysicsSystem::Update(float deltaTime) {
     if (!(deltaTime > 0.0f) || !std::isfinite(deltaTime)) return;
-    const bool hasVolumes = !volumes.empty();
+    StepContext ctx{settings};
+    ctx.dt = deltaTime;
+    ctx.invDt = 1.0f / deltaTime;
+    ctx.step = stepCount;
 
     // Book order (book.md 3.4): collisions, forces, impulses, integrate, linear projection, constraints.
     // Spring forces are evaluated inside particle integration (erratum 5.2-20: a force over the step, not
     // a dt-free impulse after it), so every integrator sees them at its own intermediate states.
     // Volumes step in n equal substeps when one step would carry a volume through another (VolumeSubsteps);
     // n = 1 is the book's single step, with dt passed through unchanged.
-    if (hasVolumes) {
+    if (!volumes.empty()) {
         const int n = VolumeSubsteps(deltaTime);
-        const float h = n == 1 ? deltaTime : deltaTime / static_cast<float>(n);
+        ctx.substepCount = n;
+        ctx.h = n == 1 ? deltaTime : deltaTime / static_cast<float>(n);
+        ctx.invH = 1.0f / ctx.h;
         lastVolumeSubsteps = n;
         for (int s = 0; s < n; ++s) {
-            FindCollisions();
-            ApplyVolumeForces(h);
-            if (resultCount > 0) ApplyImpulses();
-            IntegrateVolumes(h);
-            if (DoLinearProjection && resultCount > 0) ApplyLinearProjection();
-            ++volumeSubstepCount;
+            ctx.substep = s;
+            ctx.substepSerial = volumeSubstepSerial;
+            FindCollisions(ctx);
+            ApplyVolumeForces(ctx);
+            if (resultCount > 0) ApplyImpulses(ctx);
+            IntegrateVolumes(ctx);
+            if (settings.linearProjection && resultCount > 0) ApplyLinearProjection(ctx);
+            ++volumeSubstepSerial;
         }
     } else {
         resultCount = 0;
         lastVolumeSubsteps = 1;
-        ++volumeSubstepCount;
+        ++volumeSubstepSerial;
     }
     for (Rigidbody* body : others) body->ApplyForces();
     for (Rigidbody* body : others) body->Update(deltaTime);
-    if (!allParticles.empty()) IntegrateParticles(deltaTime);
+    if (!allParticles.empty()) IntegrateParticles(ctx);
     if (!constraints.empty() || !joints.empty()) SolveParticleConstraints();
     for (Rigidbody* body : others) body->SolveConstraints(constraints);
     ++stepCount;

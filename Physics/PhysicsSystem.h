@@ -19,6 +19,7 @@
 #include "Physics/Geometry/Geometry3D.h"
 #include "Physics/Integrator.h"
 #include "Physics/Rigidbody.h"
+#include "Physics/WorldSettings.h"
 
 class Particle;
 struct ParticleConstraint;
@@ -37,35 +38,18 @@ struct CollisionPair {
 
 class PhysicsSystem {
 public:
-    // The book's public parameters, with its defaults.
-    float LinearProjectionPercent = 0.45f;  ///< 0.2-0.8: smaller jitters less and sinks more
-    float PenetrationSlack = 0.01f;         ///< 0.01-0.1: penetration left uncorrected
-    int ImpulseIteration = 5;               ///< passes over every contact per step
-    bool DoLinearProjection = true;
+    /// Engine settings (units and the book's defaults in WorldSettings.h); read by every stage of each step.
+    WorldSettings settings;
     bool DebugRender = false;         ///< read by the drawing layer only
     bool RenderRandomColors = false;  ///< read by the drawing layer only
-    /// How particles (free, cloth and jointed) are integrated. The book ships semi-implicit Euler.
-    Integrator integrator = Integrator::SemiImplicitEuler;
-    /// Volume pairs are found by sweep-and-prune (Broadphase.h) from this many volumes up; all pairs below.
-    std::size_t BroadphaseMinVolumes = 32;
-    /// How contact impulses are solved (ContactSolver.h). Book (default) is the book's per-contact solver;
-    /// Accumulated keeps contacts across steps and lets stacks stand (docs/ch15.md).
-    ContactSolver contactSolver = ContactSolver::Book;
-    /// Settings of the Accumulated solver (iterations and slop are ImpulseIteration and PenetrationSlack).
-    AccumulatedSolverSettings accumulated;
-    /// Volumes have no continuous collision, so a step in which a dynamic volume would travel (|v| dt + |g| dt^2 / 2)
-    /// more than SubstepTravelFraction * (its smallest half extent + the smallest in the world) is split into n
-    /// equal volume substeps, n <= MaxVolumeSubsteps (beyond, clamped with a LastError() warning; docs/ch15.md,
-    /// "Extremes"). 1 turns it off. At the book's 0.03 s and its demos' speeds n is 1.
-    int MaxVolumeSubsteps = 64;
-    float SubstepTravelFraction = 0.75f;
 
     PhysicsSystem();
     ~PhysicsSystem();
     PhysicsSystem(const PhysicsSystem&) = delete;
     PhysicsSystem& operator=(const PhysicsSystem&) = delete;
 
-    /// Advances the world by dt seconds (one fixed step). dt <= 0 or non-finite does nothing.
+    /// Advances the world by one fixed step of dt seconds: builds the step's StepContext and hands it to every
+    /// stage. dt <= 0 or non-finite does nothing.
     void Update(float deltaTime);
 
     /// Adds a body by pointer (not owned). Particles, volumes (sphere/box), distance joints and other
@@ -95,35 +79,36 @@ public:
     /// Colliding pairs found at the start of the last step (debug drawing of manifolds).
     const std::vector<CollisionPair>& Collisions() const { return results; }
     std::size_t CollisionCount() const { return resultCount; }
-    /// The Accumulated solver's kept contacts and impulses (empty while contactSolver is Book).
+    /// The Accumulated solver's kept contacts and impulses (empty while settings.contactSolver is Book).
     const AccumulatedContactSolver& AccumulatedSolver() const { return accumulatedSolver; }
     /// Number of Update calls that advanced the world.
     long long StepCount() const { return stepCount; }
-    /// Volume substeps the last Update took (1 unless it had to subdivide; see MaxVolumeSubsteps).
+    /// Volume substeps the last Update took (1 unless it had to subdivide; see WorldSettings::maxVolumeSubsteps).
     int LastVolumeSubsteps() const { return lastVolumeSubsteps; }
-    /// The last refusal (AddRigidbody) or warning (a step that needed more than MaxVolumeSubsteps substeps),
+    /// The last refusal (AddRigidbody) or warning (a step that needed more than maxVolumeSubsteps substeps),
     /// naming the bad value; empty if none since construction or ClearError().
     const std::string& LastError() const { return lastError; }
     void ClearError() { lastError.clear(); }
 
 private:
     // ---- ch14: PhysicsSystemParticles.cpp
-    /// Integrates every particle (free and cloth) with `integrator`; multi-stage integrators re-evaluate
-    /// AccumulateParticleForces at their intermediate states.
-    void IntegrateParticles(float dt);
+    /// Integrates every particle (free and cloth) with settings.integrator over ctx.dt; multi-stage integrators
+    /// re-evaluate AccumulateParticleForces at their intermediate states.
+    void IntegrateParticles(const StepContext& ctx);
     /// Gravity on every particle, then spring forces (AccumulateSpringForces).
     void AccumulateParticleForces();
     /// Free particles, then joints, then cloth particles against the constraints (book order).
     void SolveParticleConstraints();
 
-    // ---- ch15: PhysicsSystemVolumes.cpp
-    void FindCollisions();  ///< pair search over volumes only; fills results[0..resultCount)
-    /// Gravity on every volume, turned into this step's velocity change before the impulses (ch15 note N1).
-    void ApplyVolumeForces(float dt);
-    void ApplyImpulses();
-    void IntegrateVolumes(float dt);
-    void ApplyLinearProjection();
-    /// Number of equal volume substeps for a step of dt (1..MaxVolumeSubsteps); records a warning when clamped.
+    // ---- ch15: PhysicsSystemVolumes.cpp (each runs once per volume substep of ctx.h seconds)
+    void FindCollisions(const StepContext& ctx);  ///< pair search over volumes only; fills results[0..resultCount)
+    /// Gravity on every volume, turned into this substep's velocity change before the impulses (ch15 note N1).
+    void ApplyVolumeForces(const StepContext& ctx);
+    void ApplyImpulses(const StepContext& ctx);
+    void IntegrateVolumes(const StepContext& ctx);
+    void ApplyLinearProjection(const StepContext& ctx);
+    /// Number of equal volume substeps for a step of dt (1..settings.maxVolumeSubsteps); records a warning when
+    /// clamped.
     int VolumeSubsteps(float dt);
 
     // ---- ch16: PhysicsSystemSoft.cpp
@@ -148,12 +133,11 @@ private:
 
     std::vector<CollisionPair> results;  // capacity reused; only [0, resultCount) is valid
     std::size_t resultCount = 0;
-    Broadphase broadphase;                            // used only from BroadphaseMinVolumes volumes up
+    Broadphase broadphase;                            // used only from settings.broadphaseMinVolumes volumes up
     std::vector<std::pair<int, int>> candidatePairs;  // broadphase output, capacity reused
     long long stepCount = 0;
     AccumulatedContactSolver accumulatedSolver;  // ch15: arbiter state of ContactSolver::Accumulated
-    float volumeStepDt = 0.0f;                   // this step's dt, kept by ApplyVolumeForces for the solver
-    long long volumeSubstepCount = 0;  // one per volume substep (one per Update without volumes): solver carry-over
+    long long volumeSubstepSerial = 0;           // volume substeps so far (one per Update without volumes): StepContext
     int lastVolumeSubsteps = 1;
     std::string lastError;
 };

@@ -14,11 +14,11 @@ void PhysicsSystem::AccumulateParticleForces() {
     if (!springs.empty() || !cloths.empty()) AccumulateSpringForces();
 }
 
-void PhysicsSystem::IntegrateParticles(float dt) {
+void PhysicsSystem::IntegrateParticles(const StepContext& ctx) {
     if (integratorScratch.size() < allParticles.size()) integratorScratch.resize(allParticles.size());
     ForceEvaluator evaluate = [](void* self) { static_cast<PhysicsSystem*>(self)->AccumulateParticleForces(); };
-    IntegrateParticleStates(integrator, allParticles.data(), allParticles.size(), integratorScratch.data(), dt,
-                            evaluate, this);
+    IntegrateParticleStates(ctx.settings.integrator, allParticles.data(), allParticles.size(), integratorScratch.data(),
+                            ctx.dt, ctx.settings.particleRetentionStep, evaluate, this);
 }
 
 void PhysicsSystem::SolveParticleConstraints() {

@@ -1,5 +1,5 @@
 // Rigid-volume stages of PhysicsSystem::Update (book.md 3.4 steps 1-5): pair search with manifolds, forces,
-// ImpulseIteration passes of ApplyImpulse over every contact, integration, linear projection.
+// settings.solverIterations passes of ApplyImpulse over every contact, integration, linear projection.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -23,7 +23,7 @@ bool CanInteract(const RigidbodyVolume& a, const RigidbodyVolume& b) {
 
 }  // namespace
 
-void PhysicsSystem::FindCollisions() {
+void PhysicsSystem::FindCollisions(const StepContext& ctx) {
     resultCount = 0;
     // Test one pair, writing into the next slot of `results`; a slot is kept (with its contact capacity) even
     // when the pair does not collide, so the steady state allocates nothing.
@@ -40,7 +40,7 @@ void PhysicsSystem::FindCollisions() {
     };
 
     const std::size_t n = volumes.size();
-    if (n < BroadphaseMinVolumes) {
+    if (n < ctx.settings.broadphaseMinVolumes) {
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t j = i + 1; j < n; ++j)
                 if (CanInteract(*volumes[i], *volumes[j])) test(i, j);
@@ -52,7 +52,7 @@ void PhysicsSystem::FindCollisions() {
             test(static_cast<std::size_t>(p.first), static_cast<std::size_t>(p.second));
 }
 
-void PhysicsSystem::ApplyVolumeForces(float dt) {
+void PhysicsSystem::ApplyVolumeForces(const StepContext& ctx) {
     // ch15 note N1 (docs/ERRATA.md, Chapter 15): the book applies the impulses to the velocity of the previous step
     // and only then adds this step's gravity and moves the body, so the tangential part of g dt always
     // reaches the position before friction can see it: a box creeps down any incline at about g sin(theta) dt
@@ -60,23 +60,21 @@ void PhysicsSystem::ApplyVolumeForces(float dt) {
     // order is kept (forces, impulses, integration), but the forces stage already turns this step's forces
     // into velocity (semi-implicit Euler's first half), so the impulses act on the velocity that will move
     // the body.
-    volumeStepDt = dt;
     for (RigidbodyVolume* body : volumes) {
         body->ApplyForces();
-        body->IntegrateVelocity(dt);
+        body->IntegrateVelocity(ctx.h);
     }
 }
 
-void PhysicsSystem::ApplyImpulses() {
-    if (contactSolver == ContactSolver::Accumulated) {
+void PhysicsSystem::ApplyImpulses(const StepContext& ctx) {
+    if (ctx.settings.contactSolver == ContactSolver::Accumulated) {
         // Sequential impulses with an arbiter (ContactSolver.h); results are in increasing (indexA, indexB)
         // order, which the arbiter's lookup relies on.
-        // volumeSubstepCount: impulses carry over between consecutive substeps (it equals stepCount when n = 1).
-        accumulatedSolver.Solve(volumes, results.data(), resultCount, ImpulseIteration, volumeStepDt, PenetrationSlack,
-                                volumeSubstepCount, accumulated);
+        // Impulses carry over between consecutive substeps (ctx.substepSerial).
+        accumulatedSolver.Solve(volumes, results.data(), resultCount, ctx);
         return;
     }
-    for (int k = 0; k < ImpulseIteration; ++k) {
+    for (int k = 0; k < ctx.settings.solverIterations; ++k) {
         for (std::size_t i = 0; i < resultCount; ++i) {
             const CollisionPair& pair = results[i];
             const int contacts = static_cast<int>(pair.manifold.contacts.size());
@@ -91,9 +89,10 @@ int PhysicsSystem::VolumeSubsteps(float dt) {
     // then pushes it out of the far side (a 0.5 s step drops a resting box 1.2 m; issue 7 item 4). Per dynamic
     // volume, the travel bound |v| dt + |g| dt^2 / 2 is compared with its own half extent plus the thinnest half
     // extent in the world (the thinnest thing it could meet); n keeps every substep's travel within
-    // SubstepTravelFraction of that sum. Spin is not counted. One pass over the volumes; n = 1 at the book's
+    // settings.substepTravelFraction of that sum. Spin is not counted. One pass over the volumes; n = 1 at the book's
     // 0.03 s in all its demos (ch15: ratio 0.23, momentum: 0.52 at the 20 m/s launch).
-    if (MaxVolumeSubsteps <= 1) return 1;
+    const int maxSubsteps = settings.maxVolumeSubsteps;
+    if (maxSubsteps <= 1) return 1;
     float thinnest = std::numeric_limits<float>::infinity();
     for (const RigidbodyVolume* body : volumes) thinnest = std::min(thinnest, HalfExtent(*body));
     float ratio = 0.0f;
@@ -102,25 +101,25 @@ int PhysicsSystem::VolumeSubsteps(float dt) {
         const float travel = Magnitude(body->velocity) * dt + 0.5f * Magnitude(body->gravity) * dt * dt;
         ratio = std::max(ratio, travel / (HalfExtent(*body) + thinnest));
     }
-    const float wanted = std::ceil(ratio / SubstepTravelFraction);
+    const float wanted = std::ceil(ratio / settings.substepTravelFraction);
     if (!(wanted > 1.0f)) return 1;
-    if (wanted <= static_cast<float>(MaxVolumeSubsteps)) return static_cast<int>(wanted);
+    if (wanted <= static_cast<float>(maxSubsteps)) return static_cast<int>(wanted);
     char text[256];
     std::snprintf(text, sizeof text,
                   "Update: dt = %g s needs %g volume substeps (a volume travels %g times its half extent plus the "
-                  "thinnest one); clamped to MaxVolumeSubsteps = %d, so fast volumes may pass through thin ones",
-                  static_cast<double>(dt), static_cast<double>(wanted), static_cast<double>(ratio), MaxVolumeSubsteps);
+                  "thinnest one); clamped to maxVolumeSubsteps = %d, so fast volumes may pass through thin ones",
+                  static_cast<double>(dt), static_cast<double>(wanted), static_cast<double>(ratio), maxSubsteps);
     lastError.assign(text);  // capacity is reused: no allocation once the longest message has been written
-    return MaxVolumeSubsteps;
+    return maxSubsteps;
 }
 
-void PhysicsSystem::IntegrateVolumes(float dt) {
-    for (RigidbodyVolume* body : volumes) body->IntegratePosition(dt);
+void PhysicsSystem::IntegrateVolumes(const StepContext& ctx) {
+    for (RigidbodyVolume* body : volumes) body->IntegratePosition(ctx.h);
 }
 
-void PhysicsSystem::ApplyLinearProjection() {
+void PhysicsSystem::ApplyLinearProjection(const StepContext& ctx) {
     // Positional correction (book.md 3.4 step 5) with the manifolds found before integration. Depth is the
-    // full penetration for every pair type (see FindCollisionFeatures(RigidbodyVolume&, ...)).
+    // full penetration for every pair type (CollisionManifold::depth).
     for (std::size_t i = 0; i < resultCount; ++i) {
         RigidbodyVolume& a = *results[i].a;
         RigidbodyVolume& b = *results[i].b;
@@ -131,8 +130,8 @@ void PhysicsSystem::ApplyLinearProjection() {
         const float invSum = invA + invB;
         if (invSum == 0.0f) continue;
         const CollisionManifold& m = results[i].manifold;
-        const float depth = std::max(m.depth - PenetrationSlack, 0.0f);
-        const vec3 correction = m.normal * (depth / invSum * LinearProjectionPercent);
+        const float depth = std::max(m.depth - ctx.settings.penetrationSlop, 0.0f);
+        const vec3 correction = m.normal * (depth / invSum * ctx.settings.projectionFraction);
         a.position -= correction * invA;
         b.position += correction * invB;
         a.SynchCollisionVolumes();

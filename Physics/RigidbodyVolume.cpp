@@ -33,29 +33,29 @@ void RigidbodyVolume::Update(float dt) {
     IntegratePosition(dt);
 }
 
-float RigidbodyVolume::StepDamping(float dt) const {
-    if (!(referenceStep > 0.0f) || dt >= referenceStep) return damping;
-    if (dampingKey[0] != damping || dampingKey[1] != referenceStep || dampingKey[2] != dt) {
-        dampingKey[0] = damping;
-        dampingKey[1] = referenceStep;
-        dampingKey[2] = dt;
-        dampingValue = std::pow(damping, dt / referenceStep);
+float RigidbodyVolume::StepRetention(float dt) const {
+    if (!(referenceStep > 0.0f) || dt == referenceStep) return velocityRetention;
+    if (retentionKey[0] != velocityRetention || retentionKey[1] != referenceStep || retentionKey[2] != dt) {
+        retentionKey[0] = velocityRetention;
+        retentionKey[1] = referenceStep;
+        retentionKey[2] = dt;
+        retentionValue = FactorOverStep(velocityRetention, referenceStep, dt);
     }
-    return dampingValue;
+    return retentionValue;
 }
 
 float RigidbodyVolume::StepVelocityEpsilon(float dt) const {
-    if (!(referenceStep > 0.0f) || dt >= referenceStep) return velocityEpsilon;
+    if (!(referenceStep > 0.0f) || dt == referenceStep) return velocityEpsilon;
     return velocityEpsilon * (dt / referenceStep);
 }
 
 void RigidbodyVolume::IntegrateVelocity(float dt) {
     // Book order (book.md 3.3): accelerate, damp, zero tiny components. The book's damping (0.98) and threshold
-    // (0.001 m/s) are per step; applied per step at tiny dt they stop free motion: at dt = 1e-5 the threshold
-    // exceeds g dt and zeroes a body released from rest every step (it hangs in the air), and 0.98 per step caps
-    // free fall at 49 g dt = 5 mm/s. Below referenceStep (1/60 s) both are converted to the step in use; at and
-    // above it they are the book's values bit for bit (docs/ch15.md, "Extremes").
-    const float stepDamping = StepDamping(dt);
+    // (0.001 m/s) are per step of its 0.03 s; applied per step at tiny dt they stop free motion: at dt = 1e-5 the
+    // threshold exceeds g dt and zeroes a body released from rest every step (it hangs in the air), and 0.98 per
+    // step caps free fall at 49 g dt = 5 mm/s. At any step other than referenceStep (0.03 s) both are converted
+    // to the same per-second rates; at it they are the book's values bit for bit (docs/ch15.md, "Extremes").
+    const float stepDamping = StepRetention(dt);
     const float epsilon = StepVelocityEpsilon(dt);
     velocity += forces * InvMass() * dt;
     velocity *= stepDamping;
@@ -129,7 +129,7 @@ mat3 RigidbodyVolume::InvTensor() const {
     return RotateDiagonal(ToMat3(orientation), inv);
 }
 
-void RigidbodyVolume::AddLinearImpulse(const vec3& impulse) { velocity += impulse; }
+void RigidbodyVolume::AddVelocityChange(const vec3& deltaVelocity) { velocity += deltaVelocity; }
 
 void RigidbodyVolume::AddRotationalImpulse(const vec3& point, const vec3& impulse) {
     angVel += MultiplyVector(Cross(point - position, impulse), InvTensor());
@@ -195,8 +195,8 @@ bool ValidateVolume(const RigidbodyVolume& body, std::string* error) {
     if (!std::isfinite(body.cor) || body.cor < 0.0f) return Refuse(error, "cor", body.cor, "must be finite and >= 0");
     if (!std::isfinite(body.friction) || body.friction < 0.0f)
         return Refuse(error, "friction", body.friction, "must be finite and >= 0");
-    if (!(body.damping >= 0.0f && body.damping <= 1.0f))
-        return Refuse(error, "damping", body.damping, "must be in [0, 1]");
+    if (!(body.velocityRetention >= 0.0f && body.velocityRetention <= 1.0f))
+        return Refuse(error, "velocityRetention", body.velocityRetention, "must be in [0, 1]");
     if (!std::isfinite(body.velocityEpsilon) || body.velocityEpsilon < 0.0f)
         return Refuse(error, "velocityEpsilon", body.velocityEpsilon, "must be finite and >= 0");
     if (!std::isfinite(body.referenceStep) || body.referenceStep < 0.0f)
@@ -219,10 +219,7 @@ void FindCollisionFeatures(RigidbodyVolume& ra, RigidbodyVolume& rb, CollisionMa
         FindCollisionFeatures(ra.box, rb.sphere, out);
     } else {
         FindCollisionFeatures(ra.box, rb.box, out);
-        return;
     }
-    // Sphere manifolds carry half the penetration (book.md 3.5, erratum 5.2-32); box-box carries all of it.
-    if (out->colliding) out->depth *= 2.0f;
 }
 
 CollisionManifold FindCollisionFeatures(RigidbodyVolume& ra, RigidbodyVolume& rb) {

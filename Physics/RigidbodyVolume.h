@@ -8,13 +8,10 @@
 #include "Math/quaternion.h"
 #include "Physics/Geometry/Geometry3D.h"
 #include "Physics/Rigidbody.h"
+#include "Physics/WorldSettings.h"
 
 /// The book's GRAVITY_CONST, m/s^2.
 constexpr vec3 kVolumeGravity{0.0f, -9.82f, 0.0f};
-/// Shortest step (s) at which the book's per-step damping and velocity threshold are used as they are (60 Hz, the
-/// step of every ch15 test and benchmark; the book's demos step 0.03 s). Shorter steps convert them (see
-/// RigidbodyVolume::referenceStep).
-constexpr float kPerStepDampingMinDt = 1.0f / 60.0f;
 
 class RigidbodyVolume : public Rigidbody {
 public:
@@ -30,17 +27,19 @@ public:
     OBB box;
     Sphere sphere;
     vec3 gravity = kVolumeGravity;  ///< ApplyForces sets forces = gravity * mass
-    /// The book's per-step velocity damping factor (not per second; see referenceStep); 1 disables damping.
-    float damping = 0.98f;
-    /// Velocity components (linear and angular) below this magnitude are zeroed after damping (book: 0.001 m/s;
-    /// see referenceStep).
+    /// Fraction of linear and angular velocity kept per step of referenceStep (book: 0.98 per 0.03 s, its
+    /// "damping"); 1 keeps all of it. The same concept as Particle::velocityRetention.
+    float velocityRetention = 0.98f;
+    /// m/s (rad/s): velocity components below this are zeroed after the retention, per step of referenceStep
+    /// (book: 0.001).
     float velocityEpsilon = 0.001f;
-    /// Steps dt >= referenceStep apply `damping` and `velocityEpsilon` per step, as the book does. A shorter step
-    /// uses damping^(dt/referenceStep) and velocityEpsilon * dt/referenceStep, i.e. the per-second rates of a
-    /// referenceStep step, so the body does not freeze as dt -> 0: per step, the threshold exceeds g dt below
-    /// dt = 1.02e-4 s (a body released from rest never falls) and 0.98 caps free fall at 49 g dt (5 mm/s at
-    /// 1e-5 s). 0 applies them per step at every dt (the book).
-    float referenceStep = kPerStepDampingMinDt;
+    /// s: the step at which velocityRetention and velocityEpsilon are defined (book: 0.03, its fixed step). A step
+    /// of exactly referenceStep applies them as they are; any other step of dt uses
+    /// velocityRetention^(dt/referenceStep) and velocityEpsilon * dt/referenceStep, the same per-second rates, so
+    /// a body neither freezes as dt -> 0 (per step, the threshold exceeds g dt below dt = 1.02e-4 s and 0.98
+    /// caps free fall at 49 g dt) nor moves in slow motion or damps faster at another step. 0 applies them per
+    /// step at every dt (the book).
+    float referenceStep = kBookStep;
 
     RigidbodyVolume() = default;
     explicit RigidbodyVolume(RigidbodyType bodyType) : Rigidbody(bodyType) {}
@@ -66,14 +65,15 @@ public:
     /// World-space inverse inertia tensor R^T I^-1 R (zero for static bodies); the diagonal is inverted per
     /// element, so small or light bodies keep their true inverse (erratum 5.2-10).
     mat3 InvTensor() const;
-    /// velocity += impulse (the book's convention: mass is not divided out).
-    void AddLinearImpulse(const vec3& impulse);
+    /// velocity += deltaVelocity (m/s): a velocity change, the mass is not divided out (the book's
+    /// AddLinearImpulse, which is not an impulse; docs/STYLE.md, "Renames in the engine").
+    void AddVelocityChange(const vec3& deltaVelocity);
     /// angVel += I^-1_world ((point - position) x impulse); point in world space.
     void AddRotationalImpulse(const vec3& point, const vec3& impulse);
-    /// Damping factor for a step of dt seconds: damping itself when dt >= referenceStep or referenceStep <= 0,
-    /// else damping^(dt/referenceStep).
-    float StepDamping(float dt) const;
-    /// Velocity threshold for a step of dt seconds (m/s, rad/s): velocityEpsilon itself when dt >= referenceStep
+    /// Fraction of velocity kept over a step of dt seconds: velocityRetention itself when dt == referenceStep or
+    /// referenceStep <= 0, else velocityRetention^(dt/referenceStep) (FactorOverStep).
+    float StepRetention(float dt) const;
+    /// Velocity threshold for a step of dt seconds (m/s, rad/s): velocityEpsilon itself when dt == referenceStep
     /// or referenceStep <= 0, else velocityEpsilon * dt/referenceStep.
     float StepVelocityEpsilon(float dt) const;
     /// Sets the orientation from the book's Euler angles in radians (x pitch, y yaw, z roll), converted as the
@@ -81,9 +81,10 @@ public:
     void SetEulerOrientation(const vec3& radians);
 
 private:
-    // StepDamping's last (damping, referenceStep, dt) and result: pow once per body per distinct step, not per step.
-    mutable float dampingKey[3] = {-1.0f, -1.0f, -1.0f};
-    mutable float dampingValue = 1.0f;
+    // StepRetention's last (velocityRetention, referenceStep, dt) and result: pow once per body per distinct
+    // step, not per step.
+    mutable float retentionKey[3] = {-1.0f, -1.0f, -1.0f};
+    mutable float retentionValue = 1.0f;
 };
 
 /// True when `body` can be simulated: a sphere or box with finite, non-negative mass (0 = static); finite

@@ -24,10 +24,9 @@ constexpr ChapterButton kChapterButtons[3] = {
 };
 }  // namespace
 
-DemoWindow::DemoWindow(const std::string& windowTitle, int w, int h) : GLWindow(windowTitle, w, h) {
-    fixedFPS = 30;
-    targetFPS = 60;
-}
+// The book's fixedFPS / targetFPS were never read: the host's fixed step is the demo's physics step
+// (DemoBase::PhysicsStep) or --dt, and the frame time is --fps.
+DemoWindow::DemoWindow(const std::string& windowTitle, int w, int h) : GLWindow(windowTitle, w, h) {}
 
 DemoWindow::~DemoWindow() { StopDemo(); }
 

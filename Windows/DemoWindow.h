@@ -24,7 +24,9 @@ public:
     void OnResize(int width, int height) override;
     /// The "Physics Demo" panel, then the demo's own panels (only when the UI is visible).
     void OnUpdate(float deltaTime) override;
-    /// Forwards the mouse state (delta as a fraction of the window size), then demo->Update(dt).
+    /// One physics step of fixedDeltaTime seconds (the host runs whole steps of CurrentDemo()->PhysicsStep(), or
+    /// its own step when that is 0): forwards the mouse state (delta as a fraction of the window size), then
+    /// demo->Update(fixedDeltaTime).
     void OnFixedUpdate(float fixedDeltaTime) override;
     void OnShutdown() override;
 

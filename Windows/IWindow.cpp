@@ -22,5 +22,3 @@ void IWindow::Resize(int w, int h) {
     height = std::max(1, h);
     OnResize(width, height);
 }
-
-void IWindow::SetTargetFPS(int fps) { targetFPS = std::clamp(fps, 15, 120); }

@@ -47,11 +47,6 @@ public:
     /// Asks the loop to stop after the current frame.
     void Close() { quit = true; }
     bool GetQuitFlag() const { return quit; }
-    /// Clamped to 15..120, as the book.
-    void SetTargetFPS(int fps);
-    int GetTargetFPS() const { return targetFPS; }
-    /// The book's fixed rate; its loop steps GetFixedFPS()/1000 = 0.03 s (erratum 5.2-16), not 1/30.
-    int GetFixedFPS() const { return fixedFPS; }
     void MarkAsShown() { shown = true; }
     bool WasWindowShown() const { return shown; }
 
@@ -63,6 +58,4 @@ protected:
     bool shown = false;
     std::string title;
     bool titleDirty = true;
-    int targetFPS = 30;
-    int fixedFPS = 30;
 };

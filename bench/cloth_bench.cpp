@@ -44,7 +44,7 @@ bool StableAt(int n, Integrator integrator, float dt) {
     Ch16Scene scene(Params(n, integrator, dt));
     const int steps = static_cast<int>(std::ceil(kSimTime / dt));
     for (int i = 0; i < steps; ++i)
-        if (!scene.Step()) return false;
+        if (!scene.Step(scene.Params().dt)) return false;
     return true;
 }
 

@@ -37,7 +37,7 @@ struct Extras {
     void Add(int extra, PhysicsSystem& system) {
         if (extra == kEmptyCloth) system.AddCloth(&cloth);
         if (extra == kFarVolume) system.AddRigidbody(&far);
-        if (extra == kForcedBroadphase) system.BroadphaseMinVolumes = 0;
+        if (extra == kForcedBroadphase) system.settings.broadphaseMinVolumes = 0;
     }
 };
 
@@ -45,8 +45,8 @@ void BM_Ch14Step(benchmark::State& state) {
     Ch14Scene scene;  // 50 particles, semi-implicit Euler, 0.03 s (the book's demo)
     Extras extras;
     extras.Add(int(state.range(0)), scene.System());
-    for (int i = 0; i < 100; ++i) scene.Step();  // past the spawn transient
-    for (auto _ : state) scene.Step();
+    for (int i = 0; i < 100; ++i) scene.Step(scene.Params().dt);  // past the spawn transient
+    for (auto _ : state) scene.Step(scene.Params().dt);
     state.SetLabel(ExtraName(int(state.range(0))));
 }
 
@@ -70,7 +70,7 @@ void BM_Ch16Step(benchmark::State& state) {
             extras.Add(int(state.range(0)), scene.System());
         }
         state.ResumeTiming();
-        scene.Step();
+        scene.Step(scene.Params().dt);
     }
     state.SetLabel(ExtraName(int(state.range(0))));
 }

@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
             for (int r = 0; r < opt.repeats; ++r) {
                 Ch14Scene scene(params);
                 const auto start = std::chrono::steady_clock::now();
-                for (int s = 0; s < opt.steps; ++s) scene.Step();
+                for (int s = 0; s < opt.steps; ++s) scene.Step(scene.Params().dt);
                 const auto end = std::chrono::steady_clock::now();
                 msPerStep.push_back(std::chrono::duration<double, std::milli>(end - start).count() / opt.steps);
                 below = 0;

@@ -40,8 +40,8 @@ struct SolverSetup {
 
 Result Run(RigidWorld& w, int steps, const SolverSetup& setup) {
     PhysicsSystem& system = w.system;
-    system.contactSolver = setup.solver;
-    system.ImpulseIteration = setup.iterations;
+    system.settings.contactSolver = setup.solver;
+    system.settings.solverIterations = setup.iterations;
     Result r;
     r.steps = steps;
     const auto t0 = std::chrono::steady_clock::now();
@@ -69,8 +69,8 @@ void Print(const char* name, int size, const SolverSetup& setup, const Result& r
 void Bounce(float e, float damping, const SolverSetup& setup) {
     RigidWorld w(BounceScene(e, damping));
     PhysicsSystem& system = w.system;
-    system.contactSolver = setup.solver;
-    system.ImpulseIteration = setup.iterations;
+    system.settings.contactSolver = setup.solver;
+    system.settings.solverIterations = setup.iterations;
     const float h0 = 10.0f;
     std::vector<float> apex;
     float prevVy = 0, maxPen = 0;

@@ -20,7 +20,7 @@ void Ch14Scene::Reset(const Ch14Params& p) {
     if (params.particleCount < 1) params.particleCount = 1;
     if (!(params.dt > 0.0f) || !std::isfinite(params.dt)) params.dt = Ch14Params().dt;
     system = std::make_unique<PhysicsSystem>();
-    system->integrator = params.integrator;
+    system->settings.integrator = params.integrator;
     for (const OBB& box : Constraints()) system->AddConstraint(box);
 
     bodies.clear();
@@ -43,8 +43,9 @@ void Ch14Scene::Reset(const Ch14Params& p) {
     for (Particle& particle : bodies) system->AddRigidbody(&particle);
 }
 
-void Ch14Scene::Step() {
-    system->Update(params.dt);
+void Ch14Scene::Step(float dt) {
+    if (!(dt > 0.0f) || !std::isfinite(dt)) return;
+    system->Update(dt);
     for (Particle& particle : bodies) {
         const vec3 pos = particle.GetPosition();
         if (pos.y < kBookFloorY) particle.SetPosition(vec3(pos.x, kBookFloorY, pos.z));
@@ -53,9 +54,5 @@ void Ch14Scene::Step() {
 
 void Ch14Scene::SetIntegrator(Integrator integrator) {
     params.integrator = integrator;
-    system->integrator = integrator;
-}
-
-void Ch14Scene::SetDt(float dt) {
-    if (dt > 0.0f && std::isfinite(dt)) params.dt = dt;
+    system->settings.integrator = integrator;
 }

@@ -16,8 +16,9 @@
 struct Ch14Params {
     int particleCount = 50;  ///< the book's numParticles (the panel's range is CH14Demo's table; benchmarks go beyond)
     Integrator integrator = Integrator::SemiImplicitEuler;  ///< the book's shipped integrator
-    float dt = kBookStep;                                   ///< s per step
-    std::uint32_t seed = 1;                                 ///< MsvcRand seed; the book never seeds (1)
+    /// s: the physics step the demo asks its host for (book: 0.03, erratum 5.2-16); Step(dt) takes the step.
+    float dt = kBookStep;
+    std::uint32_t seed = 1;  ///< MsvcRand seed; the book never seeds (1)
 };
 
 class Ch14Scene {
@@ -30,12 +31,10 @@ public:
     /// Rebuilds the world from params (the book's ResetDemo): constraints, then the particles in order, each
     /// drawing x, y, z, bounce from a fresh MsvcRand(seed). particles < 1 is treated as 1.
     void Reset(const Ch14Params& params);
-    /// One fixed step of Params().dt, then the book's y < -5 clamp.
-    void Step();
+    /// One physics step of dt seconds, then the book's y < -5 clamp. dt <= 0 or non-finite does nothing.
+    void Step(float dt);
     /// Switches the integrator without a reset (the particles keep their state).
     void SetIntegrator(Integrator integrator);
-    /// Changes the step length used by Step(); non-positive or non-finite values are ignored.
-    void SetDt(float dt);
 
     const Ch14Params& Params() const { return params; }
     PhysicsSystem& System() { return *system; }

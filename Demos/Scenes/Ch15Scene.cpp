@@ -31,12 +31,12 @@ void Ch15Scene::Reset() {
 }
 
 void Ch15Scene::ApplySettings() {
-    system->LinearProjectionPercent = params.projectionFraction;
-    system->PenetrationSlack = params.penetrationSlop;
-    system->ImpulseIteration = params.iterations;
-    system->DoLinearProjection = params.linearProjection;
+    system->settings.projectionFraction = params.projectionFraction;
+    system->settings.penetrationSlop = params.penetrationSlop;
+    system->settings.solverIterations = params.iterations;
+    system->settings.linearProjection = params.linearProjection;
     system->DebugRender = params.debugRender;
-    system->contactSolver = params.solver == 0 ? ContactSolver::Book : ContactSolver::Accumulated;
+    system->settings.contactSolver = params.solver == 0 ? ContactSolver::Book : ContactSolver::Accumulated;
 }
 
 void Ch15Scene::Step(float dt) {

@@ -12,11 +12,12 @@
 /// The "Chapter 15 Demo" panel values (book defaults: 0.45 / 0.01 / 8, projection on, debug off). Ranges
 /// and labels are in AddParameters, the one table.
 struct Ch15Params {
-    /// Fraction (not percent) of the penetration beyond the slop removed per step by moving the bodies apart.
-    /// The book's LinearProjectionPercent, panel "Porjection" [sic]; `--set projection-fraction` (alias projection).
+    /// WorldSettings::projectionFraction: the fraction (not percent) of the penetration beyond the slop removed
+    /// per step. The book's LinearProjectionPercent, panel "Porjection" [sic]; `--set projection-fraction`
+    /// (alias projection).
     float projectionFraction = 0.45f;
-    float penetrationSlop = 0.01f;  ///< m of penetration left uncorrected (the book's PenetrationSlack, "Slop")
-    int iterations = 8;             ///< impulse passes over every contact per step (ImpulseIteration, "Iteration")
+    float penetrationSlop = 0.01f;  ///< WorldSettings::penetrationSlop, m (the book's PenetrationSlack, "Slop")
+    int iterations = 8;             ///< WorldSettings::solverIterations (ImpulseIteration, "Iteration")
     bool linearProjection = true;   ///< positional correction on (DoLinearProjection, "Linear Projection")
     bool debugRender = false;       ///< draw box edges and manifolds (DebugRender, "Debug Render")
     /// Not a book widget: 0 = the book's per-contact solver, 1 = accumulated impulses (ContactSolver.h).
@@ -28,7 +29,7 @@ public:
     explicit Ch15Scene(const Ch15Params& params = {});
     /// Rebuilds the three bodies (the book's ResetDemo), volumes synced; the panel values are kept.
     void Reset();
-    /// Copies the panel values into the system, then one step of dt seconds.
+    /// Copies the panel values into the system, then one physics step of dt seconds.
     void Step(float dt);
     /// Registers the panel's widgets in panel order (projection-fraction, slop, iterations, reset, debug,
     /// linear-projection) and the solver choice on *set.

@@ -1,5 +1,7 @@
 #include "Demos/Scenes/Ch16Scene.h"
 
+#include <cmath>
+
 #include "Physics/Spring.h"
 
 Ch16Scene::Ch16Scene(const Ch16Params& p) { Reset(p); }
@@ -32,14 +34,9 @@ void Ch16Scene::Reset() {
     Build();
 }
 
-int Ch16Scene::Advance(float elapsed) {
-    return stepping.Advance(elapsed, params.dt, monitor, [this] { Step(); });
-}
-
 void Ch16Scene::Build() {
-    stepping.Clear();
     system = std::make_unique<PhysicsSystem>();
-    system->integrator = params.integrator;
+    system->settings.integrator = params.integrator;
     cloth = std::make_unique<Cloth>();
     cloth->Initialize(params.particlesPerSide, params.particleSpacing, vec3(0.0f, kClothHeight, 0.0f));
     const float k = FromBookSpringConstant(params.springK);
@@ -54,8 +51,9 @@ void Ch16Scene::Build() {
     monitor.Start(*system);
 }
 
-bool Ch16Scene::Step() {
-    system->Update(params.dt);
+bool Ch16Scene::Step(float dt) {
+    if (!monitor.Stable() || !(dt > 0.0f) || !std::isfinite(dt)) return false;
+    system->Update(dt);
     return monitor.Check(*system);
 }
 

@@ -22,7 +22,7 @@ struct Ch16Params {
     float springK = -3.0f;         ///< book k of every cloth spring: N/m x 0.03 s ("Spring k")
     float springDamping = 0.0f;    ///< book spring damping d: N s/m x 0.03 s (no widget in the book)
     Integrator integrator = Integrator::SemiImplicitEuler;
-    float dt = kBookStep;  ///< s per fixed step
+    float dt = kBookStep;  ///< s: the physics step the demo asks its host for (book: 0.03, erratum 5.2-16)
 };
 
 class Ch16Scene {
@@ -39,12 +39,9 @@ public:
     void Reset(const Ch16Params& params);
     /// Rebuilds from the current (panel) values, the integrator taken from the "integrator" choice.
     void Reset();
-    /// One fixed step of params.dt, then the stability check. False once unstable.
-    bool Step();
-
-    /// Runs the steps of params.dt due after `elapsed` host seconds (StepAccumulator); stops once unstable.
-    /// Returns the number of steps run.
-    int Advance(float elapsed);
+    /// One physics step of dt seconds, then the stability check. False once unstable.
+    /// Nothing once unstable, or for dt <= 0 or non-finite.
+    bool Step(float dt);
     /// Registers the panel values and the "reset" action on *set; --set resets the scene.
     void AddParameters(ParameterSet* set);
 

@@ -1,5 +1,7 @@
 #include "Demos/Scenes/JointScene.h"
 
+#include <cmath>
+
 JointScene::JointScene(const JointParams& p, MsvcRand* r) : rng(r != nullptr ? r : &ownRng) { Reset(p); }
 
 std::vector<OBB> JointScene::Constraints() {
@@ -23,14 +25,9 @@ void JointScene::Reset() {
     Build();
 }
 
-int JointScene::Advance(float elapsed) {
-    return stepping.Advance(elapsed, params.dt, monitor, [this] { Step(); });
-}
-
 void JointScene::Build() {
-    stepping.Clear();
     system = std::make_unique<PhysicsSystem>();
-    system->integrator = params.integrator;
+    system->settings.integrator = params.integrator;
     for (const OBB& c : Constraints()) system->AddConstraint(c);
 
     // erratum 5.2-23: the book rounds the SLIDER value up when it is odd and creates the odd count, leaving
@@ -59,8 +56,9 @@ void JointScene::Build() {
     monitor.Start(*system);
 }
 
-bool JointScene::Step() {
-    system->Update(params.dt);
+bool JointScene::Step(float dt) {
+    if (!monitor.Stable() || !(dt > 0.0f) || !std::isfinite(dt)) return false;
+    system->Update(dt);
     ClampAboveFloor(&particles, kBookFloorY);
     return monitor.Check(*system);
 }

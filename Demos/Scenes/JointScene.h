@@ -19,7 +19,7 @@
 struct JointParams {
     int particleCount = 50;  ///< particles (the book's numParticles, an odd count rounds up); applied on Reset
     Integrator integrator = Integrator::SemiImplicitEuler;
-    float dt = kBookStep;  ///< s per fixed step
+    float dt = kBookStep;  ///< s: the physics step the demo asks its host for (book: 0.03, erratum 5.2-16)
 };
 
 class JointScene {
@@ -33,12 +33,9 @@ public:
     void Reset(const JointParams& params);
     /// Rebuilds from the current (panel) values, the integrator taken from the "integrator" choice.
     void Reset();
-    /// One fixed step of params.dt, the y >= -5 clamp, then the stability check. False once unstable.
-    bool Step();
-
-    /// Runs the steps of params.dt due after `elapsed` host seconds (StepAccumulator); stops once unstable.
-    /// Returns the number of steps run.
-    int Advance(float elapsed);
+    /// One physics step of dt seconds, the y >= -5 clamp, then the stability check. False once unstable.
+    /// Nothing once unstable, or for dt <= 0 or non-finite.
+    bool Step(float dt);
     /// Registers the panel values and the "reset" action on *set; --set resets the scene.
     void AddParameters(ParameterSet* set);
 

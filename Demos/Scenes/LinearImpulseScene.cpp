@@ -9,12 +9,13 @@ void LinearImpulseScene::Reset() {
     const RigidbodyType kind = params.spheres ? RigidbodyType::Sphere : RigidbodyType::Box;
     bodies.assign(3, RigidbodyVolume(kind));
 
-    // book.md 2.3: defaults everywhere (mass 1, radius 1, half-size 1). AddLinearImpulse adds to velocity.
+    // book.md 2.3: defaults everywhere (mass 1, radius 1, half-size 1). AddVelocityChange (the book's AddLinearImpulse)
+    // adds to velocity.
     if (!params.drop) {
         bodies[0].position = vec3(-10.0f, 1.5f, -5.0f);
         bodies[1].position = vec3(5.0f, 1.5f, 2.5f);
-        bodies[0].AddLinearImpulse(vec3(15.0f, 5.0f, 7.5f));
-        bodies[1].AddLinearImpulse(vec3(-15.0f, 5.0f, -7.5f));
+        bodies[0].AddVelocityChange(vec3(15.0f, 5.0f, 7.5f));
+        bodies[1].AddVelocityChange(vec3(-15.0f, 5.0f, -7.5f));
     } else {
         bodies[0].position = vec3(0.0f, 1.2f, 0.0f);
         bodies[1].position = vec3(0.0f, 4.0f, 0.0f);
@@ -32,7 +33,7 @@ void LinearImpulseScene::Reset() {
 
 void LinearImpulseScene::RequestSteps() { pendingSteps = params.frames; }
 
-void LinearImpulseScene::Update(float dt) {
+void LinearImpulseScene::Step(float dt) {
     if (!params.pause) {
         system->Update(dt);
     } else if (pendingSteps > 0) {

@@ -26,8 +26,8 @@ public:
     void Reset();
     /// The "Step" button: queue `frames` single steps to run while paused.
     void RequestSteps();
-    /// The book's Update: one step of dt unless paused; while paused, one queued step if any.
-    void Update(float dt);
+    /// The book's Update: one physics step of dt seconds unless paused; while paused, one queued step if any.
+    void Step(float dt);
     /// Registers the panel's widgets (docs/book-reference.md §2.3) on *set: step, frames, reset, pause, spheres, drop.
     void AddParameters(ParameterSet* set);
 

@@ -5,7 +5,7 @@ MomentumScene::MomentumScene(const MomentumParams& p) : params(p) { Reset(); }
 void MomentumScene::Reset() {
     system = std::make_unique<PhysicsSystem>();
     system->RenderRandomColors = true;
-    system->ImpulseIteration = 20;
+    system->settings.solverIterations = 20;
     bodies.assign(kSpheres + 1, RigidbodyVolume(RigidbodyType::Sphere));
 
     // book.md 2.4: x = i * 2.00002 for i = 0..3 and 4 * 3.00003 for the last; y = 1.16 puts the bottoms 0.01
@@ -14,12 +14,12 @@ void MomentumScene::Reset() {
         RigidbodyVolume& s = bodies[i];
         const float spacing = (1.0f + 0.00001f) * (i < kSpheres - 1 ? 2.0f : 3.0f);
         s.position = vec3(static_cast<float>(i) * spacing, 1.16f, 0.0f);
-        s.damping = params.velocityFactorPerStep;
+        s.velocityRetention = params.velocityRetention;
         if (!params.gravity) s.gravity = vec3();
     }
     RigidbodyVolume& last = bodies[kSpheres - 1];
     // The book normalises the direction towards x = 0 along the row: (-20, 0, 0).
-    last.AddLinearImpulse(Normalized(vec3(-last.position.x, 0.0f, 0.0f)) * kLaunchSpeed);
+    last.AddVelocityChange(Normalized(vec3(-last.position.x, 0.0f, 0.0f)) * kLaunchSpeed);
 
     RigidbodyVolume& ground = bodies[kSpheres];
     ground.type = RigidbodyType::Box;

@@ -9,11 +9,12 @@
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
 
-/// The demo has only a Reset button. velocityFactorPerStep and gravity are not panel values: tests use them to isolate
+/// The demo has only a Reset button. velocityRetention and gravity are not panel values: tests use them to isolate
 /// the impulses from the book's per-step damping (0.98) and from ground contact.
 struct MomentumParams {
-    float velocityFactorPerStep = 0.98f;  ///< each sphere's velocity is multiplied by this every step (book damping)
-    bool gravity = true;                  ///< false: no gravity, so the spheres never touch the ground (0.01 m gap)
+    /// Velocity kept per 0.03 s by every sphere (RigidbodyVolume::velocityRetention; the book's damping 0.98).
+    float velocityRetention = 0.98f;
+    bool gravity = true;  ///< false: no gravity, so the spheres never touch the ground (0.01 m gap)
 };
 
 class MomentumScene {
@@ -24,6 +25,7 @@ public:
     explicit MomentumScene(const MomentumParams& params = {});
     /// Rebuilds the spheres and ground (the book's ResetDemo), volumes synced (erratum 5.2-28).
     void Reset();
+    /// One physics step of dt seconds.
     void Step(float dt);
     /// Registers the reset action, the panel's only widget (docs/book-reference.md §2.4), on *set.
     void AddParameters(ParameterSet* set);

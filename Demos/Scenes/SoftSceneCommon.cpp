@@ -31,17 +31,10 @@ Integrator IntegratorAt(int index) {
 void AddStepParameters(ParameterSet* set, int* integratorIndex, float* dt, const std::function<void()>& onChange) {
     set->AddChoice("integrator", integratorIndex, IntegratorChoices(),
                    "particle integrator for springs, cloth and joints (book: euler)", onChange);
-    set->AddFloat("dt", dt, kMinSceneDt, kMaxSceneDt, "physics step in s (book: 0.03)", onChange);
-}
-
-int StepAccumulator::Advance(double elapsed, double dt) {
-    if (!(dt > 0.0) || !(elapsed > 0.0)) return 0;
-    accumulated += elapsed;
-    // A relative slack so 0.03 host steps run exactly one 0.03 step despite rounding.
-    const int steps = static_cast<int>((accumulated + dt * 1e-6) / dt);
-    accumulated -= steps * dt;
-    if (accumulated < 0.0) accumulated = 0.0;
-    return steps;
+    // No rebuild: the scene holds nothing that depends on its step, and a rebuild would draw new spawns from a
+    // generator the book never reseeds (joints).
+    set->AddFloat("dt", dt, kMinSceneDt, kMaxSceneDt,
+                  "physics step in s (book: 0.03); the host runs whole steps of it");
 }
 
 void ClampAboveFloor(std::vector<Particle>* particles, float floorY) {

@@ -1,5 +1,7 @@
 #include "Demos/Scenes/SpringsScene.h"
 
+#include <cmath>
+
 SpringsScene::SpringsScene(const SpringsParams& p) { Reset(p); }
 
 OBB SpringsScene::Ground() { return OBB(vec3(0.0f, 0.0f, 0.0f), vec3(10.0f, 0.15f, 10.0f)); }
@@ -15,14 +17,9 @@ void SpringsScene::Reset() {
     Build();
 }
 
-int SpringsScene::Advance(float elapsed) {
-    return stepping.Advance(elapsed, params.dt, monitor, [this] { Step(); });
-}
-
 void SpringsScene::Build() {
-    stepping.Clear();
     system = std::make_unique<PhysicsSystem>();
-    system->integrator = params.integrator;
+    system->settings.integrator = params.integrator;
     system->AddConstraint(Ground());
 
     // Book.md 2.6: p0 at (0,6,0) with mass 50, p1 at (2,6,0) with mass 1; bounce/friction stay default.
@@ -40,8 +37,9 @@ void SpringsScene::Build() {
     monitor.Start(*system);
 }
 
-bool SpringsScene::Step() {
-    system->Update(params.dt);
+bool SpringsScene::Step(float dt) {
+    if (!monitor.Stable() || !(dt > 0.0f) || !std::isfinite(dt)) return false;
+    system->Update(dt);
     ClampAboveFloor(&particles, kBookFloorY);
     return monitor.Check(*system);
 }

@@ -22,7 +22,7 @@ struct SpringsParams {
     float springDamping = 0.5f;  ///< book damping b: N s/m x 0.03 s (panel "b")
     float restLength = 1.0f;     ///< m (panel "l")
     Integrator integrator = Integrator::SemiImplicitEuler;
-    float dt = kBookStep;  ///< s per fixed step
+    float dt = kBookStep;  ///< s: the physics step the demo asks its host for (book: 0.03, erratum 5.2-16)
 };
 
 class SpringsScene {
@@ -35,12 +35,9 @@ public:
     void Reset(const SpringsParams& params);
     /// Rebuilds from the current (panel) values, the integrator taken from the "integrator" choice.
     void Reset();
-    /// One fixed step of params.dt, the y >= -5 clamp, then the stability check. False once unstable.
-    bool Step();
-
-    /// Runs the steps of params.dt due after `elapsed` host seconds (StepAccumulator); stops once unstable.
-    /// Returns the number of steps run.
-    int Advance(float elapsed);
+    /// One physics step of dt seconds, the y >= -5 clamp, then the stability check. False once unstable.
+    /// Nothing once unstable, or for dt <= 0 or non-finite.
+    bool Step(float dt);
     /// Registers the panel values and the "reset" action on *set; --set resets the scene.
     void AddParameters(ParameterSet* set);
 

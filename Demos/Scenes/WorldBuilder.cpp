@@ -37,7 +37,7 @@ RigidbodyVolume MakeBody(const BodySpec& spec) {
     b.mass = spec.mass;
     b.friction = spec.friction;
     b.cor = spec.restitution;
-    b.damping = spec.damping;
+    b.velocityRetention = spec.velocityRetention;
     b.velocityEpsilon = spec.velocityEpsilon;
     const vec3& e = spec.eulerRadians;
     if (e.x != 0.0f || e.y != 0.0f || e.z != 0.0f) {
@@ -148,12 +148,12 @@ std::vector<BodySpec> TowerScene(int height) {
     return WithGround(GroundSpec(vec3(10.0f, 0.5f, 10.0f)), Tower(height, BodySpec()));
 }
 
-std::vector<BodySpec> BounceScene(float e, float damping) {
+std::vector<BodySpec> BounceScene(float e, float retention) {
     BodySpec ground = GroundSpec(vec3(10.0f, 0.5f, 10.0f));
     ground.restitution = 1.0f;
     BodySpec ball = SphereSpec(vec3(0.0f, 11.0f, 0.0f));
     ball.restitution = e;
-    ball.damping = damping;
+    ball.velocityRetention = retention;
     return {ground, ball};
 }
 

@@ -10,7 +10,7 @@
 #include "Physics/RigidbodyVolume.h"
 
 /// One rigid body of a scene definition. Defaults are RigidbodyVolume's (the book's): a unit-half-extent box of
-/// 1 kg, friction 0.6, restitution 0.5, damping 0.98 per step.
+/// 1 kg, friction 0.6, restitution 0.5, velocity retention 0.98 per 0.03 s.
 struct BodySpec {
     RigidbodyType shape = RigidbodyType::Box;  ///< Box or Sphere
     vec3 position;                             ///< centre, world, m
@@ -23,8 +23,8 @@ struct BodySpec {
     float mass = 1.0f;         ///< kg; 0 = static
     float friction = 0.6f;     ///< Coulomb coefficient; pairs combine as sqrt(muA * muB)
     float restitution = 0.5f;  ///< coefficient of restitution (RigidbodyVolume::cor); pairs use the smaller
-    /// This engine's per-step velocity factor (RigidbodyVolume::damping, not per second); 1 = undamped.
-    float damping = 0.98f;
+    /// Fraction of velocity kept per 0.03 s (RigidbodyVolume::velocityRetention, the book's damping); 1 = undamped.
+    float velocityRetention = 0.98f;
     /// This engine's velocity threshold (RigidbodyVolume::velocityEpsilon), m/s and rad/s; 0 = none.
     float velocityEpsilon = 0.001f;
 };
@@ -76,8 +76,8 @@ std::vector<BodySpec> PyramidScene(int base);
 /// Tower(height) of default cubes on a ground of half width 10.
 std::vector<BodySpec> TowerScene(int height);
 /// A default sphere (radius 1, 1 kg) whose bottom is 10 m above a ground of half width 10, restitution e and
-/// per-step damping `damping`; the ground's restitution is 1, so the pair uses e.
-std::vector<BodySpec> BounceScene(float e, float damping);
+/// velocity retention `retention` per 0.03 s; the ground's restitution is 1, so the pair uses e.
+std::vector<BodySpec> BounceScene(float e, float retention);
 
 /// Bodies built from a scene definition and the PhysicsSystem they are added to. The bodies are built once, in
 /// spec order, and never move in memory (the system holds pointers to them); the system keeps its defaults, so

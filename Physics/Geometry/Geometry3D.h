@@ -95,6 +95,7 @@ void ResetRaycastResult(RaycastResult* outResult);
 struct CollisionManifold {
     bool colliding = false;
     vec3 normal{0, 0, 1};
+    /// m: how far B must move along `normal` to stop touching A, the whole penetration for every pair type.
     float depth = 3.402823466e+38f;
     std::vector<vec3> contacts;  ///< reused across calls: Reset clears without freeing
 };
@@ -185,10 +186,12 @@ void ClipEdgesToOBB(const std::array<Line, 12>& edges, const OBB& obb, std::vect
 float PenetrationDepth(const OBB& o1, const OBB& o2, const vec3& axis, bool* outShouldFlip);
 
 // ---- Collision manifolds, chapter 15 (Manifolds.cpp). Normal from A to B. ----------------------------
-/// depth = half the overlap, contact at A + n*(rA - depth) (erratum 5.2-1 fixed).
+/// depth = the whole overlap rA + rB - |AB| (m; the book's is half), contact at A + n*(rA - depth/2), the middle
+/// of the overlap (erratum 5.2-1 fixed).
 CollisionManifold FindCollisionFeatures(const Sphere& A, const Sphere& B);
-/// Normal from the box surface to the sphere centre (centre inside: nearest face, erratum 5.2-32); depth = half
-/// the penetration; one contact.
+/// Normal from the box surface to the sphere centre (centre inside: nearest face, erratum 5.2-32); depth = the
+/// whole penetration (m; the book's is half); one contact, halfway between the box surface and the sphere's
+/// deepest point.
 CollisionManifold FindCollisionFeatures(const OBB& A, const Sphere& B);
 /// SAT with A x B edge axes (5.2-2), no sign-losing zeroing (5.2-3); contacts from edge clipping projected
 /// onto the mid plane, duplicates removed. Coincident centres and deep overlaps give a finite manifold.

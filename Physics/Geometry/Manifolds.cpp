@@ -1,6 +1,7 @@
 // Collision manifolds of book ch.15 (sphere-sphere, OBB-sphere, OBB-OBB). World space; the normal is a unit
-// vector pointing from A to B. Sphere pairs report HALF the penetration as `depth` (the book's convention),
-// the box pair the full overlap on the SAT axis (also the book's). Every colliding manifold has at least one
+// vector pointing from A to B. `depth` is the whole penetration for every pair: how far B must move along the
+// normal to stop touching A (the book reports half of it for sphere pairs and the whole for boxes; docs/STYLE.md,
+// "Renames in the engine"). Every colliding manifold has at least one
 // contact and only finite numbers, including for coincident centres and boxes inside boxes.
 #include <algorithm>
 #include <cmath>
@@ -70,9 +71,9 @@ void FindCollisionFeatures(const Sphere& A, const Sphere& B, CollisionManifold* 
     const vec3 normal = dist > 1e-6f ? d * (1.0f / dist) : kFallbackNormal;
     out->colliding = true;
     out->normal = normal;
-    out->depth = (r - dist) * 0.5f;  // half the penetration (book convention for spheres)
+    out->depth = r - dist;
     // Middle of the overlap along the normal: A's surface point minus half the penetration.
-    out->contacts.push_back(A.position + normal * (A.radius - out->depth));
+    out->contacts.push_back(A.position + normal * (A.radius - out->depth * 0.5f));
 }
 
 void FindCollisionFeatures(const OBB& A, const Sphere& B, CollisionManifold* out) {
@@ -112,11 +113,11 @@ void FindCollisionFeatures(const OBB& A, const Sphere& B, CollisionManifold* out
         penetration = B.radius - dist;
         surface = closest;
     }
-    // Book: contact halfway between A's surface point and B's deepest point, depth half the penetration.
+    // Book: contact halfway between A's surface point and B's deepest point (its depth is half the penetration).
     const Point deepest = B.position - normal * B.radius;
     out->colliding = true;
     out->normal = normal;
-    out->depth = penetration * 0.5f;
+    out->depth = penetration;
     out->contacts.push_back((surface + deepest) * 0.5f);
 }
 

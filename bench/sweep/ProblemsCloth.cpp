@@ -34,7 +34,7 @@ Ch16Params ClothParams(Integrator integrator, double dt, double bookK) {
 
 std::unique_ptr<Ch16Scene> MakeCloth(const Ch16Params& p) {
     auto scene = std::make_unique<Ch16Scene>(p);
-    for (Cloth* c : scene->System().Cloths()) c->SetParticleFriction(1.0f);
+    for (Cloth* c : scene->System().Cloths()) c->SetParticleVelocityRetention(1.0f);
     return scene;
 }
 
@@ -52,7 +52,7 @@ const std::vector<vec3>& Reference(double bookK, double seconds) {
     auto it = cache.find({bookK, n});
     if (it != cache.end()) return it->second;
     auto scene = MakeCloth(ClothParams(Integrator::RK4, kReferenceDt, bookK));
-    for (long long i = 0; i < n; ++i) scene->Step();
+    for (long long i = 0; i < n; ++i) scene->Step(scene->Params().dt);
     return cache[{bookK, n}] = Positions(*scene);
 }
 
@@ -73,7 +73,7 @@ Outcome RunCloth(const Settings& s) {
     long long i = 0;
     bool ok = true;
     while (i < n && ok) {
-        ok = scene->Step();
+        ok = scene->Step(scene->Params().dt);
         ++i;
     }
     o.cpuSeconds = CpuNow() - t0;

@@ -42,7 +42,7 @@ bool Finite(const Particle& p) { return IsFinite(p.GetPosition()) && IsFinite(p.
 /// A particle with no per-step damping and the given mass, position and velocity.
 void Setup(Particle* p, float mass, const vec3& position, const vec3& velocity) {
     p->SetMass(mass);
-    p->SetFriction(1.0f);
+    p->SetVelocityRetention(1.0f);
     p->SetPosition(position);
     p->SetVelocity(velocity);
 }
@@ -52,7 +52,7 @@ Outcome RunProjectile(const Settings& s) {
     const vec3 x0(0.0f, 1.0f, 0.0f), v0(20.0f, 15.0f, 5.0f);
     const double T = 2.0;
     PhysicsSystem world;
-    world.integrator = s.integrator;
+    world.settings.integrator = s.integrator;
     Particle p;
     Setup(&p, 1.0f, x0, v0);
     world.AddRigidbody(&p);
@@ -75,7 +75,7 @@ Outcome RunProjectile(const Settings& s) {
 Outcome RunBounceParticle(const Settings& s) {
     const double e = s.param, h0 = 5.0;
     PhysicsSystem world;
-    world.integrator = s.integrator;
+    world.settings.integrator = s.integrator;
     world.AddConstraint(OBB(vec3(0.0f, -1.0f, 0.0f), vec3(10.0f, 1.0f, 10.0f)));  // top face at y = 0
     Particle p;
     Setup(&p, 1.0f, vec3(0.0f, float(h0), 0.0f), vec3());
@@ -131,7 +131,7 @@ struct Oscillator {
     double amplitude = 0.1, rest = 1.0;
 
     Oscillator(Integrator integrator, double stiffness, double damping) : K(stiffness), b(damping) {
-        world.integrator = integrator;
+        world.settings.integrator = integrator;
         Setup(&anchor, 0.0f, vec3(), vec3());
         Setup(&bob, 1.0f, vec3(float(rest + amplitude), 0.0f, 0.0f), vec3());
         bob.SetGravity(vec3());
@@ -232,7 +232,7 @@ Outcome RunPendulum(const Settings& s, double theta0) {
     const double L = 1.0;
     const vec3 pivotAt(0.0f, 2.0f, 0.0f);
     PhysicsSystem world;
-    world.integrator = s.integrator;
+    world.settings.integrator = s.integrator;
     Particle pivot, bob;
     Setup(&pivot, 0.0f, pivotAt, vec3());  // mass 0: gravity cannot move it ...
     Setup(&bob, 1.0f, pivotAt + vec3(float(L * std::sin(theta0)), -float(L * std::cos(theta0)), 0.0f), vec3());

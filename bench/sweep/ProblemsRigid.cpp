@@ -24,7 +24,7 @@ long long StepsFor(double seconds, double dt) { return std::llround(seconds / dt
 
 /// A body spec with the sweep's damping 1 and velocityEpsilon 0 (see the top of this file).
 BodySpec Undamped(BodySpec spec) {
-    spec.damping = 1.0f;
+    spec.velocityRetention = 1.0f;
     spec.velocityEpsilon = 0.0f;
     return spec;
 }
@@ -35,9 +35,9 @@ BodySpec Ground() { return Undamped(GroundSpec(vec3(20.0f, 0.5f, 20.0f))); }
 /// A world built from specs (WorldBuilder.h) with the solver settings of one run.
 struct VolumeWorld : RigidWorld {
     VolumeWorld(const Settings& s, const std::vector<BodySpec>& specs) : RigidWorld(specs) {
-        if (s.iterations >= 0) system.ImpulseIteration = s.iterations;
-        if (s.projection >= 0) system.DoLinearProjection = s.projection != 0;
-        if (s.solver >= 0) system.contactSolver = ContactSolver(s.solver);
+        if (s.iterations >= 0) system.settings.solverIterations = s.iterations;
+        if (s.projection >= 0) system.settings.linearProjection = s.projection != 0;
+        if (s.solver >= 0) system.settings.contactSolver = ContactSolver(s.solver);
     }
     /// One frame: `substeps` updates of dt / substeps.
     void Frame(const Settings& s) {

@@ -72,23 +72,24 @@ void ExpectSwapFlipsNormal(const OBB& a, const OBB& b) {
 // ---- Sphere-sphere ------------------------------------------------------------------------------------
 
 TEST(ManifoldSphereSphere, Erratum5_2_1_DepthAndContactFromTheRealDistance) {
-    // Unit spheres 1.5 apart: penetration 0.5, half of it 0.25; the contact is the middle of the overlap
-    // [0.5, 1] on X. The book normalises first, so it returns depth |1 - 2|/2 = 0.5 and contact (0.5,0,0).
+    // Unit spheres 1.5 apart: penetration 0.5 = depth (the whole penetration; the book reports half of it,
+    // docs/STYLE.md, "Renames in the engine"); the contact is the middle of the overlap [0.5, 1] on X. The book
+    // normalises first, so it returns half-depth |1 - 2|/2 = 0.5 (a penetration of 1) and contact (0.5,0,0).
     const CollisionManifold m = FindCollisionFeatures(Sphere(vec3(0, 0, 0), 1), Sphere(vec3(1.5f, 0, 0), 1));
     ASSERT_TRUE(m.colliding);
     EXPECT_TRUE(VecNear(m.normal, vec3(1, 0, 0), tol::kExact));
-    EXPECT_NEAR(m.depth, 0.25f, tol::kExact);
+    EXPECT_NEAR(m.depth, 0.5f, tol::kExact);
     ASSERT_EQ(m.contacts.size(), 1u);
     EXPECT_TRUE(VecNear(m.contacts[0], vec3(0.75f, 0, 0), tol::kExact));
 }
 
 TEST(ManifoldSphereSphere, DiagonalOverlapWithDifferentRadii) {
-    // A r = 2 at (1,2,3); B r = 1 at A + 2.5*(0.6, 0.8, 0) = (2.5, 4, 3). Penetration 3 - 2.5 = 0.5, depth 0.25;
-    // contact A + n*(2 - 0.25) = (2.05, 3.4, 3). (Book: depth |1 - 3|/2 = 1.)
+    // A r = 2 at (1,2,3); B r = 1 at A + 2.5*(0.6, 0.8, 0) = (2.5, 4, 3). Penetration 3 - 2.5 = 0.5 = depth;
+    // contact A + n*(2 - 0.5/2) = (2.05, 3.4, 3). (Book: depth |1 - 3|/2 = 1.)
     const CollisionManifold m = FindCollisionFeatures(Sphere(vec3(1, 2, 3), 2), Sphere(vec3(2.5f, 4, 3), 1));
     ASSERT_TRUE(m.colliding);
     EXPECT_TRUE(VecNear(m.normal, vec3(0.6f, 0.8f, 0), tol::kTight));
-    EXPECT_NEAR(m.depth, 0.25f, tol::kTight);
+    EXPECT_NEAR(m.depth, 0.5f, tol::kTight);
     ASSERT_EQ(m.contacts.size(), 1u);
     EXPECT_TRUE(VecNear(m.contacts[0], vec3(2.05f, 3.4f, 3), tol::kTight));
 }
@@ -113,12 +114,12 @@ TEST(ManifoldSphereSphere, SeparatedTouchingAndSwapped) {
 }
 
 TEST(ManifoldSphereSphere, CoincidentCentresUsePlusYAndFullRadiiHalved) {
-    // Book: no collision. Here normal +Y, depth (1 + 0.5)/2 = 0.75, contact A + Y*(1 - 0.75).
+    // Book: no collision. Here normal +Y, depth 1 + 0.5 = 1.5, contact A + Y*(1 - 1.5/2).
     const CollisionManifold m = FindCollisionFeatures(Sphere(vec3(1, 2, 3), 1), Sphere(vec3(1, 2, 3), 0.5f));
     ASSERT_TRUE(m.colliding);
     EXPECT_TRUE(AllFinite(m));
     EXPECT_TRUE(VecNear(m.normal, vec3(0, 1, 0), tol::kExact));
-    EXPECT_NEAR(m.depth, 0.75f, tol::kExact);
+    EXPECT_NEAR(m.depth, 1.5f, tol::kExact);
     ASSERT_EQ(m.contacts.size(), 1u);
     EXPECT_TRUE(VecNear(m.contacts[0], vec3(1, 2.25f, 3), tol::kExact));
 }
@@ -147,33 +148,33 @@ TEST(ManifoldOBBSphere, FaceRegion) {
         FindCollisionFeatures(OBB(vec3(0, 0, 0), vec3(1, 1, 1)), Sphere(vec3(1.5f, 0.2f, -0.3f), 1));
     ASSERT_TRUE(m.colliding);
     EXPECT_TRUE(VecNear(m.normal, vec3(1, 0, 0), tol::kExact));
-    EXPECT_NEAR(m.depth, 0.25f, tol::kExact);
+    EXPECT_NEAR(m.depth, 0.5f, tol::kExact);
     ASSERT_EQ(m.contacts.size(), 1u);
     EXPECT_TRUE(VecNear(m.contacts[0], vec3(0.75f, 0.2f, -0.3f), tol::kExact));
 }
 
 TEST(ManifoldOBBSphere, EdgeRegion) {
     // Sphere r 0.8 at (1.3, 1.4, 0.5): closest point on the edge (1, 1, 0.5); offset (0.3, 0.4, 0), distance
-    // 0.5, normal (0.6, 0.8, 0), penetration 0.3 -> depth 0.15. Deepest point (0.82, 0.76, 0.5);
+    // 0.5, normal (0.6, 0.8, 0), penetration 0.3 = depth. Deepest point (0.82, 0.76, 0.5);
     // contact ((1,1,0.5) + (0.82,0.76,0.5))/2 = (0.91, 0.88, 0.5).
     const CollisionManifold m =
         FindCollisionFeatures(OBB(vec3(0, 0, 0), vec3(1, 1, 1)), Sphere(vec3(1.3f, 1.4f, 0.5f), 0.8f));
     ASSERT_TRUE(m.colliding);
     EXPECT_TRUE(VecNear(m.normal, vec3(0.6f, 0.8f, 0), tol::kTight));
-    EXPECT_NEAR(m.depth, 0.15f, tol::kTight);
+    EXPECT_NEAR(m.depth, 0.3f, tol::kTight);
     ASSERT_EQ(m.contacts.size(), 1u);
     EXPECT_TRUE(VecNear(m.contacts[0], vec3(0.91f, 0.88f, 0.5f), tol::kTight));
 }
 
 TEST(ManifoldOBBSphere, CornerRegion) {
     // Sphere r 1 at (1.4, 1.4, 1.2): closest corner (1,1,1), offset (0.4,0.4,0.2), distance 0.6, normal
-    // (2,2,1)/3, penetration 0.4 -> depth 0.2; contact = corner + n*(0.6 - 1)/2... = corner - n*0.2.
+    // (2,2,1)/3, penetration 0.4 = depth; contact = corner + n*(0.6 - 1)/2... = corner - n*0.2.
     const CollisionManifold m =
         FindCollisionFeatures(OBB(vec3(0, 0, 0), vec3(1, 1, 1)), Sphere(vec3(1.4f, 1.4f, 1.2f), 1));
     ASSERT_TRUE(m.colliding);
     const vec3 n(2.0f / 3, 2.0f / 3, 1.0f / 3);
     EXPECT_TRUE(VecNear(m.normal, n, tol::kTight));
-    EXPECT_NEAR(m.depth, 0.2f, tol::kTight);
+    EXPECT_NEAR(m.depth, 0.4f, tol::kTight);
     ASSERT_EQ(m.contacts.size(), 1u);
     EXPECT_TRUE(VecNear(m.contacts[0], vec3(1, 1, 1) - n * 0.2f, tol::kTight));
 }
@@ -186,37 +187,37 @@ TEST(ManifoldOBBSphere, SeparatedAndRotatedBox) {
     const CollisionManifold m = FindCollisionFeatures(box, Sphere(box.position + x * 1.5f, 1));
     ASSERT_TRUE(m.colliding);
     EXPECT_TRUE(VecNear(m.normal, x, tol::kTight));
-    EXPECT_NEAR(m.depth, 0.25f, tol::kTight);
+    EXPECT_NEAR(m.depth, 0.5f, tol::kTight);
     EXPECT_TRUE(VecNear(m.contacts[0], box.position + x * 0.75f, tol::kTight));
 }
 
 TEST(ManifoldOBBSphere, Erratum5_2_32_CentreInsideUsesTheNearestFace) {
     // Box half (2,1,3); sphere r 0.5 centred inside at (0.5, 0.7, -1). Distances to the faces: x 1.5,
-    // y 0.3, z 2 -> leaves through +Y. Penetration 0.3 + 0.5 = 0.8, depth 0.4; face point (0.5, 1, -1),
+    // y 0.3, z 2 -> leaves through +Y. Penetration 0.3 + 0.5 = 0.8 = depth; face point (0.5, 1, -1),
     // deepest point (0.5, 0.2, -1), contact (0.5, 0.6, -1). The book returns normal
     // normalize(0.5, 0.7, -1) and depth r/2 = 0.25.
     const OBB box(vec3(0, 0, 0), vec3(2, 1, 3));
     CollisionManifold m = FindCollisionFeatures(box, Sphere(vec3(0.5f, 0.7f, -1), 0.5f));
     ASSERT_TRUE(m.colliding);
     EXPECT_TRUE(VecNear(m.normal, vec3(0, 1, 0), tol::kExact));
-    EXPECT_NEAR(m.depth, 0.4f, tol::kTight);
+    EXPECT_NEAR(m.depth, 0.8f, tol::kTight);
     ASSERT_EQ(m.contacts.size(), 1u);
     EXPECT_TRUE(VecNear(m.contacts[0], vec3(0.5f, 0.6f, -1), tol::kTight));
-    // Nearest face on the negative side: centre (-1.8, 0.2, 0.5): x gap 0.2 -> normal -X, depth 0.35.
+    // Nearest face on the negative side: centre (-1.8, 0.2, 0.5): x gap 0.2 -> normal -X, depth 0.2 + 0.5 = 0.7.
     m = FindCollisionFeatures(box, Sphere(vec3(-1.8f, 0.2f, 0.5f), 0.5f));
     ASSERT_TRUE(m.colliding);
     EXPECT_TRUE(VecNear(m.normal, vec3(-1, 0, 0), tol::kExact));
-    EXPECT_NEAR(m.depth, 0.35f, tol::kTight);
+    EXPECT_NEAR(m.depth, 0.7f, tol::kTight);
 }
 
 TEST(ManifoldOBBSphere, CentreAtTheBoxCentreIsFinite) {
-    // Book: "no collision". Here the nearest face is +Y (gap 1 < 2 < 3): depth (1 + 0.5)/2, contact midway
+    // Book: "no collision". Here the nearest face is +Y (gap 1 < 2 < 3): depth 1 + 0.5, contact midway
     // between the face point (0,1,0) and the deepest point (0,-0.5,0).
     const CollisionManifold m = FindCollisionFeatures(OBB(vec3(0, 0, 0), vec3(2, 1, 3)), Sphere(vec3(0, 0, 0), 0.5f));
     ASSERT_TRUE(m.colliding);
     EXPECT_TRUE(AllFinite(m));
     EXPECT_TRUE(VecNear(m.normal, vec3(0, 1, 0), tol::kExact));
-    EXPECT_NEAR(m.depth, 0.75f, tol::kExact);
+    EXPECT_NEAR(m.depth, 1.5f, tol::kExact);
     EXPECT_TRUE(VecNear(m.contacts[0], vec3(0, 0.25f, 0), tol::kExact));
 }
 

@@ -84,7 +84,7 @@ TEST(Broadphase, SimulationMatchesAllPairsBitwise) {
     auto run = [](std::size_t threshold) {
         std::vector<RigidbodyVolume> bodies = RandomBodies(60, 3);
         PhysicsSystem system;
-        system.BroadphaseMinVolumes = threshold;
+        system.settings.broadphaseMinVolumes = threshold;
         for (RigidbodyVolume& b : bodies) system.AddRigidbody(&b);
         for (int i = 0; i < 120; ++i) system.Update(1.0f / 60.0f);
         std::vector<float> state;

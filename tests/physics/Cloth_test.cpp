@@ -83,14 +83,14 @@ TEST(Cloth, ParticleSettings) {
     for (const Particle& p : cloth.verts) {
         EXPECT_EQ(p.GetMass(), 1.0f);
         EXPECT_EQ(p.GetBounce(), 0.0f);
-        EXPECT_EQ(p.GetFriction(), 0.9f);
+        EXPECT_EQ(p.GetVelocityRetention(), 0.9f);
         EXPECT_TRUE(VecNear(p.GetVelocity(), vec3(), 0.0f));
     }
     cloth.SetParticleMass(2.5f);
-    cloth.SetParticleFriction(0.5f);
+    cloth.SetParticleVelocityRetention(0.5f);
     for (const Particle& p : cloth.verts) {
         EXPECT_EQ(p.GetMass(), 2.5f);
-        EXPECT_EQ(p.GetFriction(), 0.5f);
+        EXPECT_EQ(p.GetVelocityRetention(), 0.5f);
     }
 }
 

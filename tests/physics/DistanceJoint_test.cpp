@@ -196,12 +196,12 @@ PendulumRun RunPendulum(double theta0, float length, float dt, double periods,
                         Integrator integrator = Integrator::SemiImplicitEuler) {
     const vec3 pivotAt(0.0f, 2.0f, 0.0f);
     PhysicsSystem world;
-    world.integrator = integrator;
+    world.settings.integrator = integrator;
     Particle pivot, bob;
     pivot.SetMass(0.0f);
-    pivot.SetFriction(1.0f);
+    pivot.SetVelocityRetention(1.0f);
     pivot.SetPosition(pivotAt);
-    bob.SetFriction(1.0f);
+    bob.SetVelocityRetention(1.0f);
     bob.SetPosition(pivotAt + vec3(length * float(std::sin(theta0)), -length * float(std::cos(theta0)), 0.0f));
     world.AddRigidbody(&pivot);
     world.AddRigidbody(&bob);

@@ -73,7 +73,7 @@ struct ParticleOnGround {
     PhysicsSystem system;
     Particle p;
     explicit ParticleOnGround(Integrator integrator, const vec3& offset = vec3(), float groundHalf = 10.0f) {
-        system.integrator = integrator;
+        system.settings.integrator = integrator;
         system.AddConstraint(OBB(offset + vec3(0.0f, -1.0f, 0.0f), vec3(groundHalf, 1.0f, groundHalf)));
         p.SetPosition(offset + vec3(0.0f, 2.0f, 0.0f));
         system.AddRigidbody(&p);
@@ -101,11 +101,10 @@ TEST(ExtremesTest, ZeroNegativeAndNonFiniteDtLeaveTheWorldUntouched) {
     EXPECT_EQ(v.bodies[1].position.y, 0.45f);
 }
 
-TEST(ExtremesTest, SceneSetDtRefusesZeroAndNonFiniteSteps) {
+TEST(ExtremesTest, SceneStepRefusesZeroAndNonFiniteSteps) {
     Ch14Scene scene;
-    const float before = scene.Params().dt;
-    for (float dt : {0.0f, -0.03f, kNaN, kInfF}) scene.SetDt(dt);
-    EXPECT_EQ(scene.Params().dt, before);
+    for (float dt : {0.0f, -0.03f, kNaN, kInfF}) scene.Step(dt);
+    EXPECT_EQ(scene.System().StepCount(), 0);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -115,7 +114,7 @@ TEST(ExtremesTest, TinyStepParticlesFallAsExpected) {
     // 2,000 steps of 1e-5 s = 0.02 s of free fall: y = 2 - g t^2 / 2 to float rounding of 2,000 small steps.
     for (Integrator integrator : kAllIntegrators) {
         ParticleOnGround w(integrator);
-        w.p.SetFriction(1.0f);
+        w.p.SetVelocityRetention(1.0f);
         for (int i = 0; i < 2000; ++i) w.system.Update(1e-5f);
         ASSERT_TRUE(Finite(w.p)) << ToString(integrator);
         EXPECT_NEAR(w.p.GetPosition().y, 2.0f - 0.5f * 9.82f * 0.02f * 0.02f, 2e-4f) << ToString(integrator);
@@ -140,7 +139,7 @@ TEST(ExtremesTest, HugeStepParticlesLandOnTheGroundWithoutTunnelling) {
 
 /// Three unit boxes on a ground slab `thickness` m thick, stepped 40 times at 0.5 s; false if not finite.
 bool HugeStepStack(float thickness, int projection, Volumes* w) {
-    w->system.DoLinearProjection = projection != 0;
+    w->system.settings.linearProjection = projection != 0;
     RigidbodyVolume& g = AddGround(w, 0.0f);
     g.position.y = -0.5f * thickness;
     g.box.size.y = 0.5f * thickness;
@@ -159,7 +158,7 @@ TEST(ExtremesTest, HugeStepVolumeStackStaysFinite) {
 // Volumes have no continuous collision: one 0.5 s step moves a box resting on the ground 1.2 m down, past the
 // contact that existed at the start of the step; once a box's centre is past the slab's mid plane the manifold
 // pushes it out of the far side and the stack fell for ever (1,400 m and 130 m/s after 20 s), even on a 10 m
-// slab. PhysicsSystem::Update now splits such a step into volume substeps (PhysicsSystem::MaxVolumeSubsteps).
+// slab. PhysicsSystem::Update now splits such a step into volume substeps (WorldSettings::maxVolumeSubsteps).
 // With linear projection (the book's default) the stack stays on the ground at 0.5 s steps. Without it the book
 // solver has nothing that removes penetration, and a stack of three sinks through a 1 m slab at EVERY step size
 // (60 Hz: the bottom box is 0.4 m into the slab after 14 s and through it at 16 s; issue 5: "linear projection
@@ -182,7 +181,7 @@ TEST(ExtremesTest, HugeStepVolumeStackIsSubdividedAndBounded) {
     for (int i = 0; i < 40; ++i) {
         w.system.Update(0.5f);
         EXPECT_GE(w.system.LastVolumeSubsteps(), 2) << "step " << i;
-        EXPECT_LE(w.system.LastVolumeSubsteps(), w.system.MaxVolumeSubsteps) << "step " << i;
+        EXPECT_LE(w.system.LastVolumeSubsteps(), w.system.settings.maxVolumeSubsteps) << "step " << i;
         for (std::size_t b = 1; b < w.bodies.size(); ++b) {
             ASSERT_TRUE(Finite(w.bodies[b])) << "step " << i;
             EXPECT_LT(Magnitude(w.bodies[b].position - vec3(0.0f, 1.5f, 0.0f)), 10.0f) << "step " << i << " box " << b;
@@ -192,11 +191,11 @@ TEST(ExtremesTest, HugeStepVolumeStackIsSubdividedAndBounded) {
     EXPECT_TRUE(w.system.LastError().empty()) << w.system.LastError();
 }
 
-// Beyond MaxVolumeSubsteps the step is clamped (not refused: the world still advances) and LastError says so,
+// Beyond settings.maxVolumeSubsteps the step is clamped (not refused: the world still advances) and LastError says so,
 // naming dt; the state stays finite.
 TEST(ExtremesTest, StepNeedingTooManySubstepsIsClampedAndReported) {
     Volumes w;
-    w.system.MaxVolumeSubsteps = 4;
+    w.system.settings.maxVolumeSubsteps = 4;
     RigidbodyVolume& ball = w.Add(RigidbodyType::Sphere, vec3(), 1.0f, 0.5f);
     ball.gravity = vec3();
     ball.velocity = vec3(1000.0f, 0.0f, 0.0f);
@@ -204,7 +203,7 @@ TEST(ExtremesTest, StepNeedingTooManySubstepsIsClampedAndReported) {
     ASSERT_TRUE(w.Run(1.0f / 60.0f, 1));
     EXPECT_EQ(w.system.LastVolumeSubsteps(), 4);
     EXPECT_NE(w.system.LastError().find("dt = 0.0166667 s"), std::string::npos) << w.system.LastError();
-    EXPECT_NE(w.system.LastError().find("MaxVolumeSubsteps = 4"), std::string::npos) << w.system.LastError();
+    EXPECT_NE(w.system.LastError().find("maxVolumeSubsteps = 4"), std::string::npos) << w.system.LastError();
 }
 
 TEST(ExtremesTest, TinyStepVolumeSettlesOnTheGround) {
@@ -220,7 +219,7 @@ TEST(ExtremesTest, TinyStepVolumeSettlesOnTheGround) {
 
 // The book's velocityEpsilon (0.001 m/s) zeroes every velocity component below it AFTER gravity is added, so for
 // g dt < 0.001 (dt < 1.02e-4 s) a body released from rest never started to fall: at dt = 1e-5 it hung in the air
-// for ever. Below 1/60 s the threshold and the per-step damping are now converted to the step
+// for ever. Away from their 0.03 s reference step the threshold and the retention are now converted to the step
 // (RigidbodyVolume::referenceStep).
 TEST(ExtremesTest, TinyStepVolumeReleasedFromRestFalls) {
     Volumes w;
@@ -258,7 +257,7 @@ TEST(ExtremesTest, MassRatioHeadOnCollisionConservesMomentum) {
         RigidbodyVolume& b = w.Add(RigidbodyType::Sphere, vec3(0.05f, 0.0f, 0.0f), ratio, 0.5f);
         for (RigidbodyVolume* s : {&a, &b}) {
             s->gravity = vec3();
-            s->damping = 1.0f;
+            s->velocityRetention = 1.0f;
         }
         a.velocity = vec3(2.0f, 0.0f, 0.0f);
         w.Finish();
@@ -277,7 +276,7 @@ TEST(ExtremesTest, ThousandMetresPerSecondParticleStopsAtAThinWall) {
     // A 0.2 m wall at x = 10 crossed in a single 1/60 s step (16.7 m): the segment test must catch it.
     for (Integrator integrator : kAllIntegrators) {
         PhysicsSystem system;
-        system.integrator = integrator;
+        system.settings.integrator = integrator;
         system.AddConstraint(OBB(vec3(10.0f, 0.0f, 0.0f), vec3(0.1f, 5.0f, 5.0f)));
         Particle p;
         p.SetPosition(vec3());
@@ -302,7 +301,7 @@ TEST(ExtremesTest, ThousandMetresPerSecondVolumesStayFinite) {
     wall.box.size = vec3(20.0f, 5.0f, 5.0f);
     RigidbodyVolume& ball = w.Add(RigidbodyType::Sphere, vec3(-11.0f, 0.0f, 0.0f), 1.0f, 0.5f);
     ball.gravity = vec3();
-    ball.damping = 1.0f;
+    ball.velocityRetention = 1.0f;
     ball.velocity = vec3(1000.0f, 0.0f, 0.0f);
     w.Finish();
     ASSERT_TRUE(w.Run(1.0f / 60.0f, 30));
@@ -469,12 +468,12 @@ TEST(ExtremesTest, MillionMetreVolumesStayFinite) {
 
 // ---------------------------------------------------------------------------------------------------------
 // The guards above (substeps, converted damping and threshold, validation) leave the book's 0.03 s step alone:
-// the three chapter-15 demo scenes run 200 steps bit for bit as with every guard off (MaxVolumeSubsteps 1, the
+// the three chapter-15 demo scenes run 200 steps bit for bit as with every guard off (maxVolumeSubsteps 1, the
 // book's per-step damping at every dt), and never subdivide.
 
 template <typename Scene, typename Step>
 std::vector<float> RunBookScene(bool guards, Scene* scene, Step step) {
-    if (!guards) scene->System().MaxVolumeSubsteps = 1;
+    if (!guards) scene->System().settings.maxVolumeSubsteps = 1;
     std::vector<float> out;
     for (int i = 0; i < 200; ++i) {
         step(scene);
@@ -511,7 +510,7 @@ TEST(ExtremesTest, BookStepOfTheChapter15ScenesIsUnchangedByTheGuards) {
             LinearImpulseParams params;
             params.drop = drop;
             LinearImpulseScene scene(params);
-            return RunBookScene(guards, &scene, [](LinearImpulseScene* s) { s->Update(0.03f); });
+            return RunBookScene(guards, &scene, [](LinearImpulseScene* s) { s->Step(0.03f); });
         };
         EXPECT_TRUE(SameBits(impulse(true), impulse(false))) << "drop " << drop;
     }
@@ -562,13 +561,13 @@ struct StiffSpring {
     PhysicsSystem system;
     Particle anchor, bob;
     explicit StiffSpring(Integrator integrator, float stiffness) {
-        system.integrator = integrator;
+        system.settings.integrator = integrator;
         anchor.SetMass(0.0f);
         anchor.SetPosition(vec3());
         bob.SetPosition(vec3(1.1f, 0.0f, 0.0f));
         for (Particle* p : {&anchor, &bob}) {
             p->SetGravity(vec3());
-            p->SetFriction(1.0f);
+            p->SetVelocityRetention(1.0f);
             system.AddRigidbody(p);
         }
         Spring s(-stiffness, 0.0f, 1.0f);

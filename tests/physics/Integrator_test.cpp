@@ -9,6 +9,7 @@
 
 #include "Physics/Particle.h"
 #include "Physics/PhysicsSystem.h"
+#include "Physics/WorldSettings.h"
 #include "tests/support/Approx.h"
 
 namespace {
@@ -22,11 +23,11 @@ vec3 ProjectileAt(float t) { return vec3(kX0.x + kV0.x * t, kX0.y + kV0.y * t - 
 /// Position error after 2 s of free flight with `integrator`, friction 1 (the pure method), no constraints.
 double ProjectileError(Integrator integrator, float dt, vec3* finalVelocity = nullptr) {
     Particle p;
-    p.SetFriction(1.0f);
+    p.SetVelocityRetention(1.0f);
     p.SetPosition(kX0);
     p.SetVelocity(kV0);
     PhysicsSystem system;
-    system.integrator = integrator;
+    system.settings.integrator = integrator;
     system.AddRigidbody(&p);
     const int steps = static_cast<int>(std::lround(2.0 / dt));
     for (int i = 0; i < steps; ++i) system.Update(dt);
@@ -53,7 +54,7 @@ void SpringForce(void* context) {
 
 double OscillatorError(Integrator integrator, float dt, float duration = 2.0f) {
     Particle p;
-    p.SetFriction(1.0f);
+    p.SetVelocityRetention(1.0f);
     p.SetPosition(vec3(1.0f, 0.0f, 0.0f));
     Spring1D spring;
     spring.ps.push_back(&p);
@@ -61,7 +62,7 @@ double OscillatorError(Integrator integrator, float dt, float duration = 2.0f) {
     Particle* list[] = {&p};
     const int steps = static_cast<int>(std::lround(duration / dt));
     for (int i = 0; i < steps; ++i)
-        IntegrateParticleStates(integrator, list, 1, scratch.data(), dt, &SpringForce, &spring);
+        IntegrateParticleStates(integrator, list, 1, scratch.data(), dt, kBookStep, &SpringForce, &spring);
     // Distance in phase space (x, v / w) to the exact state: insensitive to where in the cycle T falls.
     const double dx = double(p.GetPosition().x) - std::cos(2.0 * duration);
     const double dv = (double(p.GetVelocity().x) + 2.0 * std::sin(2.0 * duration)) / 2.0;
@@ -146,7 +147,7 @@ TEST(Integrator, FrictionGivesTheBooksTerminalSpeed) {
          {Integrator::ExplicitEuler, Integrator::SemiImplicitEuler, Integrator::VelocityVerlet, Integrator::RK4}) {
         Particle p;
         PhysicsSystem system;
-        system.integrator = i;
+        system.settings.integrator = i;
         system.AddRigidbody(&p);
         for (int s = 0; s < 2000; ++s) system.Update(0.03f);
         EXPECT_NEAR(-p.GetVelocity().y, 9.82f * 0.03f / 0.05f, 1e-3) << ToString(i);
@@ -159,11 +160,11 @@ TEST(Integrator, FrictionGivesTheBooksTerminalSpeed) {
 TEST(Integrator, PositionVerletFallIsIndependentOfMass) {
     for (float mass : {1.0f, 3.0f, 0.25f}) {
         Particle p;
-        p.SetFriction(1.0f);
+        p.SetVelocityRetention(1.0f);
         p.SetMass(mass);
         p.SetPosition(vec3(0, 100, 0));
         PhysicsSystem system;
-        system.integrator = Integrator::PositionVerlet;
+        system.settings.integrator = Integrator::PositionVerlet;
         system.AddRigidbody(&p);
         for (int s = 0; s < 50; ++s) system.Update(0.02f);
         EXPECT_NEAR(p.GetPosition().y, 100.0f - 0.5f * kG * 1.0f, 1e-3f) << "mass " << mass;
@@ -176,7 +177,7 @@ TEST(Integrator, OldPositionIsTheStartOfTheStepForEveryIntegrator) {
         p.SetPosition(vec3(1, 5, 2));
         p.SetVelocity(vec3(1, 0, 0));
         PhysicsSystem system;
-        system.integrator = i;
+        system.settings.integrator = i;
         system.AddRigidbody(&p);
         system.Update(0.03f);
         const vec3 first = p.GetPosition();
@@ -194,8 +195,8 @@ TEST(Integrator, NonPositiveDtDoesNothing) {
     std::vector<IntegratorScratch> scratch(1);
     Particle* list[] = {&p};
     for (Integrator i : kAllIntegrators) {
-        IntegrateParticleStates(i, list, 1, scratch.data(), 0.0f, &SpringForce, nullptr);
-        IntegrateParticleStates(i, list, 1, scratch.data(), -1.0f, &SpringForce, nullptr);
+        IntegrateParticleStates(i, list, 1, scratch.data(), 0.0f, kBookStep, &SpringForce, nullptr);
+        IntegrateParticleStates(i, list, 1, scratch.data(), -1.0f, kBookStep, &SpringForce, nullptr);
     }
     EXPECT_TRUE(VecNear(p.GetPosition(), vec3(0, 1, 0), 0.0f));
     EXPECT_TRUE(VecNear(p.GetVelocity(), vec3(1, 1, 1), 0.0f));

@@ -15,7 +15,7 @@ bool Finite(const vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && 
 /// A particle that travelled from `from` with `velocity` for one undamped, force-free book step of dt.
 Particle Travelling(const vec3& from, const vec3& velocity, float dt = 0.03f) {
     Particle p;
-    p.SetFriction(1.0f);
+    p.SetVelocityRetention(1.0f);
     p.SetPosition(from);
     p.SetVelocity(velocity);
     p.Update(dt);  // forces are zero until ApplyForces
@@ -34,7 +34,7 @@ TEST(Particle, DefaultsAreTheBooks) {
     EXPECT_EQ(p.GetMass(), 1.0f);
     EXPECT_EQ(p.InvMass(), 1.0f);
     EXPECT_EQ(p.GetBounce(), 0.7f);
-    EXPECT_EQ(p.GetFriction(), 0.95f);
+    EXPECT_EQ(p.GetVelocityRetention(), 0.95f);
     EXPECT_TRUE(VecNear(p.GetGravity(), vec3(0, -9.82f, 0), 0.0f));
     p.SetMass(0.0f);
     EXPECT_EQ(p.InvMass(), 0.0f);
@@ -56,23 +56,30 @@ TEST(Particle, HeavierParticlesFallAtTheSameRate) {
     EXPECT_NEAR(light.GetPosition().y, -9.82f * 0.03f * 0.03f, tol::kExact);
 }
 
-TEST(Particle, BookStepIsSemiImplicitEulerWithPerStepDamping) {
+TEST(Particle, BookStepIsSemiImplicitEulerWithVelocityRetentionPerBookStep) {
+    // At the book's 0.03 s: v = (2,0,0)*0.95 + (0,-9.82,0)*0.03 = (1.9, -0.2946, 0); x = (1,2,3) + v*0.03.
     Particle p;
     p.SetPosition(vec3(1, 2, 3));
     p.SetVelocity(vec3(2, 0, 0));
     p.ApplyForces();
-    p.Update(0.1f);
-    // v = (2,0,0)*0.95 + (0,-9.82,0)*0.1 = (1.9, -0.982, 0); x = (1,2,3) + v*0.1.
-    EXPECT_TRUE(VecNear(p.GetVelocity(), vec3(1.9f, -0.982f, 0), tol::kTight));
-    EXPECT_TRUE(VecNear(p.GetPosition(), vec3(1.19f, 1.9018f, 3), tol::kTight));
+    p.Update(0.03f);
+    EXPECT_TRUE(VecNear(p.GetVelocity(), vec3(1.9f, -0.2946f, 0), tol::kTight));
+    EXPECT_TRUE(VecNear(p.GetPosition(), vec3(1.057f, 1.991162f, 3), tol::kTight));
     EXPECT_TRUE(VecNear(p.GetOldPosition(), vec3(1, 2, 3), 0.0f));
+    // At 0.1 s the retention is the same fraction per second: 0.95^(0.1/0.03) = 0.842840, not 0.95.
+    Particle q;
+    q.SetPosition(vec3(1, 2, 3));
+    q.SetVelocity(vec3(2, 0, 0));
+    q.ApplyForces();
+    q.Update(0.1f);
+    EXPECT_TRUE(VecNear(q.GetVelocity(), vec3(1.685681f, -0.982f, 0), 1e-5f));
 }
 
 TEST(Particle, SetPositionResetsOldPositionAndAddImpulseAddsVelocity) {
     Particle p = Travelling(vec3(0, 0, 0), vec3(1, 0, 0));
     p.SetPosition(vec3(4, 5, 6));
     EXPECT_TRUE(VecNear(p.GetOldPosition(), vec3(4, 5, 6), 0.0f));
-    p.AddImpulse(vec3(0, 2, 0));
+    p.AddVelocityChange(vec3(0, 2, 0));
     EXPECT_TRUE(VecNear(p.GetVelocity(), vec3(1, 2, 0), 0.0f));
 }
 

@@ -28,13 +28,13 @@ struct Oscillator {
         : stiffness(float(4.0 * kPi * kPi * massKg / (double(period) * period))), mass(massKg) {
         for (Particle* p : {&anchor, &bob}) {
             p->SetGravity(vec3());
-            p->SetFriction(1.0f);
+            p->SetVelocityRetention(1.0f);
         }
         anchor.SetMass(0.0f);
         bob.SetMass(massKg);
         anchor.SetPosition(vec3());
         bob.SetPosition(vec3(kRest + x0, 0, 0));
-        system.integrator = integrator;
+        system.settings.integrator = integrator;
         system.AddRigidbody(&anchor);
         system.AddRigidbody(&bob);
         Spring spring(-stiffness, damping, kRest);  // book sign: negative attracts
@@ -202,12 +202,12 @@ TEST(PhysicsSystemSoft, Erratum5_2_20_SpringVelocityChangeScalesWithDt) {
         Particle a, b;
         for (Particle* p : {&a, &b}) {
             p->SetGravity(vec3());
-            p->SetFriction(1.0f);
+            p->SetVelocityRetention(1.0f);
         }
         a.SetPosition(vec3(0, 0, 0));
         b.SetPosition(vec3(2, 0, 0));
         PhysicsSystem system;
-        system.integrator = Integrator::SemiImplicitEuler;
+        system.settings.integrator = Integrator::SemiImplicitEuler;
         system.AddRigidbody(&a);
         system.AddRigidbody(&b);
         Spring spring(-3.0f, 0.0f, 1.0f);  // F = 3 N toward each other
@@ -225,7 +225,7 @@ TEST(PhysicsSystemSoft, SpringsAreCopiedAndClothSpringsApplied) {
     Particle a, b;
     for (Particle* p : {&a, &b}) {
         p->SetGravity(vec3());
-        p->SetFriction(1.0f);
+        p->SetVelocityRetention(1.0f);
     }
     a.SetPosition(vec3(0, 0, 0));
     b.SetPosition(vec3(2, 0, 0));
@@ -268,7 +268,7 @@ TEST(PhysicsSystemSoft, Erratum5_2_6_DegenerateSpringsAndJointsStayFinite) {
         j1.SetPosition(vec3(0, 0.1f, 0));   // inside the ground box, coincident, joint length 0
         j2.SetPosition(vec3(0, 0.1f, 0));
         PhysicsSystem system;
-        system.integrator = integrator;
+        system.settings.integrator = integrator;
         system.AddConstraint(OBB(vec3(), vec3(10, 0.15f, 10)));
         for (Particle* p : {&c1, &c2, &z1, &z2, &j1, &j2}) system.AddRigidbody(p);
         DistanceJoint joint;

@@ -47,7 +47,7 @@ TEST(PhysicsSystemVolumes, RestingBoxDoesNotSink) {
         if (i >= 540) maxLateSpeed = std::fmax(maxLateSpeed, lastSpeed);
     }
     std::printf("resting box: deepest sink %.4f m, max speed in last second %.4f m/s\n", 1.0f - lowest, maxLateSpeed);
-    EXPECT_GE(lowest, 1.0f - (system.PenetrationSlack + 0.01f));
+    EXPECT_GE(lowest, 1.0f - (system.settings.penetrationSlop + 0.01f));
     EXPECT_LT(maxLateSpeed, 0.05f);
     EXPECT_LT(std::fabs(box.position.x) + std::fabs(box.position.z), 0.05f);
     EXPECT_GT(BestUpAlignment(box), 0.9999f);
@@ -92,7 +92,7 @@ InclineRun RunIncline(float degrees, float seconds) {
     const vec3 down = -GetRow(ToMat3(slab.orientation), 0) * (std::sin(theta) > 0 ? 1.0f : -1.0f);
     RigidbodyVolume box = MakeBox(slab.position + up * 1.5f, vec3(1, 1, 1), 1.0f);
     box.orientation = slab.orientation;
-    box.damping = 1.0f;
+    box.velocityRetention = 1.0f;
     box.SynchCollisionVolumes();
     system.AddRigidbody(&slab);
     system.AddRigidbody(&box);
@@ -144,7 +144,7 @@ TEST(PhysicsSystemVolumes, NoteN1_BookStageOrderCreepsDownAnIncline) {
     const vec3 up = GetRow(ToMat3(slab.orientation), 1);
     RigidbodyVolume box = MakeBox(slab.position + up * 1.5f, vec3(1, 1, 1), 1.0f);
     box.orientation = slab.orientation;
-    box.damping = 1.0f;
+    box.velocityRetention = 1.0f;
     box.SynchCollisionVolumes();
     const vec3 start = box.position;
     CollisionManifold m;
@@ -174,7 +174,7 @@ TEST(PhysicsSystemVolumes, SphereCollisionThroughTheSystemConservesMomentum) {
     RigidbodyVolume b = MakeSphere(vec3(2.05f, 0, 0), 1.0f, 2.0f);
     for (RigidbodyVolume* s : {&a, &b}) {
         s->gravity = vec3();
-        s->damping = 1.0f;
+        s->velocityRetention = 1.0f;
     }
     a.velocity = vec3(6, 0, 0);
     system.AddRigidbody(&a);
@@ -208,7 +208,7 @@ TEST(PhysicsSystemVolumes, LinearProjectionUsesFullPenetrationForEveryShape) {
         EXPECT_NEAR(body.position.y, 0.8f + (0.2f - 0.01f) * 0.45f, 1e-4f) << static_cast<int>(kind);
         body.position.y = 0.8f;
         body.SynchCollisionVolumes();
-        system.DoLinearProjection = false;
+        system.settings.linearProjection = false;
         system.Update(kDt);
         EXPECT_NEAR(body.position.y, 0.8f, 1e-6f);
     }
@@ -230,18 +230,18 @@ TEST(PhysicsSystemVolumes, StaticPairsAreNeverTested) {
 
 namespace {
 
-std::vector<unsigned char> RunStack(int steps, bool guards = true) {
+std::vector<unsigned char> RunStack(int steps, bool guards = true, float dt = kDt) {
     std::vector<BodySpec> specs = WithGround(GroundSlabSpec(), TiltedColumn(4));
     specs.push_back(SphereSpec(vec3(0.5f, 12, 0.2f)));
     std::vector<RigidbodyVolume> bodies = MakeBodies(specs);
     PhysicsSystem system;
     if (!guards) {
-        system.MaxVolumeSubsteps = 1;
+        system.settings.maxVolumeSubsteps = 1;
         for (RigidbodyVolume& b : bodies) b.referenceStep = 0.0f;
     }
     for (RigidbodyVolume& b : bodies) system.AddRigidbody(&b);
     for (int i = 0; i < steps; ++i) {
-        system.Update(kDt);
+        system.Update(dt);
         EXPECT_EQ(system.LastVolumeSubsteps(), 1);
     }
     return Snapshot(bodies);
@@ -256,11 +256,11 @@ TEST(PhysicsSystemVolumes, TwoRunsAreBitwiseIdentical) {
     EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size()), 0);
 }
 
-// The extreme-step guards (volume substeps, damping and threshold converted below 1/60 s) leave a 60 Hz stack
-// bit for bit as the book's single step with per-step damping.
-TEST(PhysicsSystemVolumes, SixtyHertzIsUnchangedByTheExtremeStepGuards) {
-    const std::vector<unsigned char> a = RunStack(300, true);
-    const std::vector<unsigned char> b = RunStack(300, false);
+// The extreme-step guards (volume substeps; retention and threshold converted away from their reference step) leave
+// a stack at the reference step bit for bit as the book's single step with per-step damping.
+TEST(PhysicsSystemVolumes, ReferenceStepIsUnchangedByTheExtremeStepGuards) {
+    const std::vector<unsigned char> a = RunStack(300, true, kBookStep);
+    const std::vector<unsigned char> b = RunStack(300, false, kBookStep);
     ASSERT_EQ(a.size(), b.size());
     EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size()), 0);
 }

@@ -31,7 +31,7 @@ TEST(PhysicsSystem, ParticleFallingOntoABoxIsStoppedInTheSameStep) {
         p.SetPosition(vec3(0, 1.2f, 0));
         p.SetVelocity(vec3(0, -20, 0));
         PhysicsSystem system;
-        system.integrator = i;
+        system.settings.integrator = i;
         system.AddConstraint(OBB(vec3(0, 0, 0), vec3(10, 0.15f, 10)));
         system.AddRigidbody(&p);
         system.Update(0.1f);  // would travel ~2 m down, through the box
@@ -55,13 +55,13 @@ TEST(PhysicsSystem, NoTunnellingAtAnySpeedOrAngle) {
                     for (Integrator i : kAllIntegrators) {
                         Particle p;
                         p.SetGravity(vec3());
-                        p.SetFriction(1.0f);
+                        p.SetVelocityRetention(1.0f);
                         p.SetBounce(0.5f);
                         // Start 0.5 m above the face, aimed at the box centre region.
                         p.SetPosition(box.position + n * 0.65f - side * (0.5f * std::tan(a)));
                         p.SetVelocity(dir * speed);
                         PhysicsSystem system;
-                        system.integrator = i;
+                        system.settings.integrator = i;
                         system.AddConstraint(box);
                         system.AddRigidbody(&p);
                         for (int s = 0; s < 200; ++s) {
@@ -89,11 +89,11 @@ TEST(PhysicsSystem, BounceApexHeightsFollowERaisedTo2N) {
     for (float e : {0.3f, 0.7f, 1.0f}) {
         for (Integrator i : kAllIntegrators) {
             Particle p;
-            p.SetFriction(1.0f);
+            p.SetVelocityRetention(1.0f);
             p.SetBounce(e);
             p.SetPosition(vec3(0, rest + h0, 0));
             PhysicsSystem system;
-            system.integrator = i;
+            system.settings.integrator = i;
             system.AddConstraint(OBB(vec3(0, 0, 0), vec3(10, 0.15f, 10)));
             system.AddRigidbody(&p);
             std::vector<float> apexes;
@@ -140,7 +140,7 @@ TEST(PhysicsSystem, ParticleRestsOnEachCh14BoardWithoutSinking) {
             Particle p;
             p.SetPosition(board.position + n * (board.size.y + Particle::kContactOffset));
             PhysicsSystem system;
-            system.integrator = i;
+            system.settings.integrator = i;
             for (const OBB& c : boards) system.AddConstraint(c);
             system.AddRigidbody(&p);
             for (int s = 0; s < 10000; ++s) {
@@ -172,8 +172,8 @@ TEST(PhysicsSystem, TwoRunsAreBitwiseIdentical) {
         params.integrator = i;
         Ch14Scene a(params), b(params);
         for (int s = 0; s < 400; ++s) {
-            a.Step();
-            b.Step();
+            a.Step(a.Params().dt);
+            b.Step(b.Params().dt);
         }
         ASSERT_EQ(a.Particles().size(), 120u);
         ASSERT_EQ(b.Particles().size(), 120u);
@@ -188,7 +188,7 @@ TEST(PhysicsSystem, TwoRunsAreBitwiseIdentical) {
 
 TEST(PhysicsSystem, ParticleOnlyStepDoesNoPairWork) {
     Ch14Scene scene;
-    for (int s = 0; s < 10; ++s) scene.Step();
+    for (int s = 0; s < 10; ++s) scene.Step(scene.Params().dt);
     EXPECT_EQ(scene.System().CollisionCount(), 0u);
     EXPECT_EQ(scene.System().Particles().size(), 50u);
     EXPECT_EQ(scene.System().StepCount(), 10);

@@ -85,31 +85,34 @@ TEST(RigidbodyVolume, UpdateAppliesGravityDampingAndThresholds) {
     EXPECT_TRUE(VecNear(b.box.position, b.position, tol::kExact));
 }
 
-// The book's damping (0.98) and threshold (0.001) are per step. From kPerStepDampingMinDt (1/60 s) up they are
-// used exactly as the book does; below it they are converted to the step (damping^(dt/ref), eps dt/ref), so the
-// per-second damping stays that of a 60 Hz step and the threshold never exceeds the velocity g dt gives a body.
-TEST(RigidbodyVolume, DampingAndThresholdArePerStepFrom60HzUpAndConvertedBelow) {
+// The book's damping (0.98, our velocityRetention) and threshold (0.001) are per step of its 0.03 s. At exactly that
+// step they are used as the book does; at any other step they are converted (retention^(dt/ref), eps dt/ref), so
+// the per-second rates stay those of a 0.03 s step and the threshold never exceeds the velocity g dt gives a body.
+TEST(RigidbodyVolume, RetentionAndThresholdArePerBookStepAndConvertedAtOtherSteps) {
     RigidbodyVolume b = MakeBox(vec3(), vec3(1, 1, 1), 1.0f);
-    for (float dt : {1.0f / 60.0f, 0.03f, 0.5f}) {
-        EXPECT_EQ(b.StepDamping(dt), 0.98f) << dt;
-        EXPECT_EQ(b.StepVelocityEpsilon(dt), 0.001f) << dt;
+    EXPECT_EQ(b.referenceStep, kBookStep);
+    EXPECT_EQ(b.StepRetention(0.03f), 0.98f);
+    EXPECT_EQ(b.StepVelocityEpsilon(0.03f), 0.001f);
+    const float ref = kBookStep;
+    for (float dt : {1e-3f, 1.0f / 60.0f, 0.5f}) {
+        EXPECT_NEAR(b.StepRetention(dt), std::pow(0.98f, dt / ref), 1e-6f) << dt;
+        EXPECT_NEAR(b.StepVelocityEpsilon(dt), 0.001f * dt / ref, 1e-8f) << dt;
     }
-    const float ref = kPerStepDampingMinDt;
-    EXPECT_NEAR(b.StepDamping(1e-3f), std::pow(0.98f, 1e-3f / ref), 1e-7f);
-    EXPECT_NEAR(b.StepVelocityEpsilon(1e-5f), 0.001f * 1e-5f / ref, 1e-12f);
     EXPECT_LT(b.StepVelocityEpsilon(1e-5f), 9.82f * 1e-5f);  // below g dt: free fall is never zeroed
-    // Ten steps of ref/10 damp like one step of ref.
+    // Ten steps of ref/10 damp like one step of ref; half a step of 2 ref damps like one of ref.
     float tenth = 1.0f;
-    for (int i = 0; i < 10; ++i) tenth *= b.StepDamping(ref / 10.0f);
+    for (int i = 0; i < 10; ++i) tenth *= b.StepRetention(ref / 10.0f);
     EXPECT_NEAR(tenth, 0.98f, 1e-6f);
+    EXPECT_NEAR(b.StepRetention(2.0f * ref), 0.98f * 0.98f, 1e-6f);
     // referenceStep 0: the book's per-step values at every dt.
     b.referenceStep = 0.0f;
-    EXPECT_EQ(b.StepDamping(1e-5f), 0.98f);
+    EXPECT_EQ(b.StepRetention(1e-5f), 0.98f);
+    EXPECT_EQ(b.StepRetention(0.5f), 0.98f);
     EXPECT_EQ(b.StepVelocityEpsilon(1e-5f), 0.001f);
 }
 
 // A body released from rest at dt = 1e-5 s falls (the book's per-step threshold would zero g dt = 9.8e-5 m/s
-// every step) close to free fall: 1 - exp(-k t) damping at k = -ln(0.98) * 60 = 1.21 / s costs 4% over 0.1 s.
+// every step) close to free fall: 1 - exp(-k t) damping at k = -ln(0.98) / 0.03 = 0.67 / s costs 2% over 0.1 s.
 TEST(RigidbodyVolume, TinyStepReleasedFromRestFallsNearlyFreely) {
     RigidbodyVolume b = MakeBox(vec3(0, 10, 0), vec3(1, 1, 1), 1.0f);
     for (int i = 0; i < 10000; ++i) {
@@ -175,7 +178,7 @@ TEST(RigidbodyVolume, ValidateVolumeNamesTheBadValue) {
 TEST(RigidbodyVolume, Erratum5_2_13_SphereSpinIsIntegratedAndDamped) {
     RigidbodyVolume s = MakeSphere(vec3(), 1.0f, 1.0f);
     s.angVel = vec3(0, 0, 2.0f);
-    for (int i = 0; i < 10; ++i) s.Update(1.0f / 60.0f);            // the book's per-step damping applies from 60 Hz up
+    for (int i = 0; i < 10; ++i) s.Update(kBookStep);               // the book's 0.98 per 0.03 s step
     EXPECT_NEAR(s.angVel.z, 2.0f * std::pow(0.98f, 10.0f), 1e-5f);  // book: stays 2
     EXPECT_GT(std::fabs(s.orientation.z), 0.05f);                   // book: never turns
 }
@@ -187,7 +190,7 @@ TEST(RigidbodyVolume, Erratum5_2_13_SphereSpinIsIntegratedAndDamped) {
 TEST(RigidbodyVolume, Erratum5_2_12_FreeSpinKeepsAngularMomentumAndEnergy) {
     RigidbodyVolume b = MakeBox(vec3(), vec3(2, 1, 0.5f), 1.0f);
     b.gravity = vec3();
-    b.damping = 1.0f;
+    b.velocityRetention = 1.0f;
     b.velocityEpsilon = 0.0f;
     b.angVel = vec3(0.4f, 2.0f, 0.7f);
     const vec3 L0 = MultiplyVector(b.angVel, b.InertiaTensor());

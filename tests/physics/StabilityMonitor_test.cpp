@@ -21,12 +21,12 @@ struct StiffSpring {
     explicit StiffSpring(Integrator integrator) {
         for (Particle* p : {&anchor, &bob}) {
             p->SetGravity(vec3());
-            p->SetFriction(1.0f);
+            p->SetVelocityRetention(1.0f);
         }
         anchor.SetMass(0.0f);
         anchor.SetPosition(vec3(0, 3, 0));
         bob.SetPosition(vec3(1.5f, 3, 0));
-        system.integrator = integrator;
+        system.settings.integrator = integrator;
         system.AddRigidbody(&anchor);
         system.AddRigidbody(&bob);
         Spring spring(FromBookSpringConstant(-5.0f), 0.0f, 1.0f);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "tests/support/Approx.h"
 
@@ -63,7 +64,7 @@ TEST(Ch14Scene, ParticlesBelowMinusFiveAreClamped) {
     Particle& p = scene.Particles()[0];
     p.SetPosition(vec3(20, -4.99f, 0));  // off the ground, falling
     p.SetVelocity(vec3(0, -3, 0));
-    scene.Step();
+    scene.Step(scene.Params().dt);
     EXPECT_EQ(p.GetPosition().y, -5.0f);
     EXPECT_EQ(p.GetOldPosition().y, -5.0f);
     EXPECT_EQ(p.GetPosition().x, 20.0f);
@@ -75,7 +76,7 @@ TEST(Ch14Scene, LongRunKeepsEveryParticleFiniteAndAboveTheGround) {
         params.particleCount = 300;
         params.integrator = i;
         Ch14Scene scene(params);
-        for (int s = 0; s < 1000; ++s) scene.Step();
+        for (int s = 0; s < 1000; ++s) scene.Step(scene.Params().dt);
         ASSERT_EQ(scene.Particles().size(), 300u);
         for (const Particle& p : scene.Particles()) {
             const vec3 x = p.GetPosition();
@@ -87,12 +88,16 @@ TEST(Ch14Scene, LongRunKeepsEveryParticleFiniteAndAboveTheGround) {
     }
 }
 
-TEST(Ch14Scene, IntegratorAndDtSwitchAtRunTime) {
+TEST(Ch14Scene, IntegratorSwitchesAtRunTimeAndStepTakesItsDt) {
     Ch14Scene scene;
     scene.SetIntegrator(Integrator::RK4);
-    EXPECT_EQ(scene.System().integrator, Integrator::RK4);
-    scene.SetDt(0.01f);
-    scene.SetDt(-1.0f);
-    scene.SetDt(std::nanf(""));
-    EXPECT_EQ(scene.Params().dt, 0.01f);
+    EXPECT_EQ(scene.System().settings.integrator, Integrator::RK4);
+    // Step(dt) advances by its argument; zero, negative and non-finite steps do nothing.
+    const vec3 start = scene.Particles()[0].GetPosition();
+    for (float dt : {0.0f, -1.0f, std::nanf(""), std::numeric_limits<float>::infinity()}) scene.Step(dt);
+    EXPECT_EQ(scene.System().StepCount(), 0);
+    EXPECT_EQ(scene.Particles()[0].GetPosition().y, start.y);
+    scene.Step(0.01f);
+    EXPECT_EQ(scene.System().StepCount(), 1);
+    EXPECT_LT(scene.Particles()[0].GetPosition().y, start.y);
 }

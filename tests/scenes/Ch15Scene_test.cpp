@@ -25,7 +25,7 @@ TEST(Ch15Scene, BuildsTheBookScene) {
     EXPECT_TRUE(VecNear(b[2].box.position, vec3(0, -0.25f, 0), tol::kExact));
     EXPECT_TRUE(VecNear(b[2].box.size, vec3(12.5f, 0.25f, 12.5f), tol::kExact));
     EXPECT_EQ(b[2].mass, 0.0f);
-    EXPECT_EQ(scene.System().ImpulseIteration, 8);
+    EXPECT_EQ(scene.System().settings.solverIterations, 8);
     EXPECT_TRUE(scene.System().RenderRandomColors);
     // The heavy box starts exactly touching the ground: depth 0 is no contact.
     scene.Step(kBookDt);
@@ -42,16 +42,16 @@ TEST(Ch15Scene, ParametersCoverEveryPanelWidget) {
     ASSERT_TRUE(set.Set("iterations", "12", &error)) << error;
     ASSERT_TRUE(set.Set("linear-projection", "0", &error)) << error;
     ASSERT_TRUE(set.Set("debug", "1", &error)) << error;
-    EXPECT_FLOAT_EQ(scene.System().LinearProjectionPercent, 0.3f);
-    EXPECT_FLOAT_EQ(scene.System().PenetrationSlack, 0.05f);
-    EXPECT_EQ(scene.System().ImpulseIteration, 12);
-    EXPECT_FALSE(scene.System().DoLinearProjection);
+    EXPECT_FLOAT_EQ(scene.System().settings.projectionFraction, 0.3f);
+    EXPECT_FLOAT_EQ(scene.System().settings.penetrationSlop, 0.05f);
+    EXPECT_EQ(scene.System().settings.solverIterations, 12);
+    EXPECT_FALSE(scene.System().settings.linearProjection);
     EXPECT_TRUE(scene.System().DebugRender);
     EXPECT_FALSE(set.Set("iterations", "21", &error));
     for (int i = 0; i < 20; ++i) scene.Step(kBookDt);
     ASSERT_TRUE(set.Set("reset", "1", &error)) << error;
     EXPECT_TRUE(VecNear(scene.Bodies()[0].position, vec3(0.5f, 6, 0), tol::kExact));
-    EXPECT_EQ(scene.System().ImpulseIteration, 12);  // panel values survive Reset
+    EXPECT_EQ(scene.System().settings.solverIterations, 12);  // panel values survive Reset
 }
 
 // After 10 s at the book's 0.03 s step: the tilted box lands on the edge of the heavy one and slides off onto
@@ -102,12 +102,12 @@ TEST(Ch15Scene, SolverParameterSelectsTheContactSolver) {
     Ch15Scene scene;
     ParameterSet set;
     scene.AddParameters(&set);
-    EXPECT_EQ(scene.System().contactSolver, ContactSolver::Book);
+    EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Book);
     std::string error;
     ASSERT_TRUE(set.Set("solver", "accumulated", &error)) << error;
-    EXPECT_EQ(scene.System().contactSolver, ContactSolver::Accumulated);
+    EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Accumulated);
     EXPECT_FALSE(set.Set("solver", "sequential", &error));
     EXPECT_NE(error.find("book|accumulated"), std::string::npos) << error;
     ASSERT_TRUE(set.Set("solver", "book", &error)) << error;
-    EXPECT_EQ(scene.System().contactSolver, ContactSolver::Book);
+    EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Book);
 }

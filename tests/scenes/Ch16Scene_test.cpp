@@ -48,7 +48,7 @@ TEST(Ch16Scene, BookSetup) {
         EXPECT_TRUE(VecNear(Ch16Scene::PostVisual(i).size, vec3(0.1f, 0.5f, 0.1f), 0.0f));  // ... drawn at 0.1
         EXPECT_TRUE(VecNear(Ch16Scene::PostVisual(i).position, posts[i], 0.0f));
     }
-    EXPECT_EQ(scene.System().integrator, Integrator::SemiImplicitEuler);
+    EXPECT_EQ(scene.System().settings.integrator, Integrator::SemiImplicitEuler);
     EXPECT_EQ(scene.Params().dt, 0.03f);
 }
 
@@ -62,7 +62,7 @@ TEST(Ch16Scene, BookClothDrapesOverPostsFor2000Steps) {
         Ch16Params params;
         params.integrator = integrator;
         Ch16Scene scene(params);
-        for (int i = 0; i < 2000; ++i) ASSERT_TRUE(scene.Step()) << scene.Monitor().Report().message;
+        for (int i = 0; i < 2000; ++i) ASSERT_TRUE(scene.Step(scene.Params().dt)) << scene.Monitor().Report().message;
         const auto& v = scene.GetCloth().verts;
         const float lowTop = 2.3f + 0.5f, highTop = 2.4f + 0.5f;
         for (const Particle& p : v) {
@@ -83,7 +83,7 @@ TEST(Ch16Scene, ExplicitEulerBlowUpIsReported) {
     params.integrator = Integrator::ExplicitEuler;
     Ch16Scene scene(params);
     int steps = 0;
-    while (steps < 2000 && scene.Step()) ++steps;
+    while (steps < 2000 && scene.Step(scene.Params().dt)) ++steps;
     ASSERT_LT(steps, 2000);
     const StabilityReport& r = scene.Monitor().Report();
     EXPECT_EQ(r.step, steps + 1);
@@ -93,7 +93,7 @@ TEST(Ch16Scene, ExplicitEulerBlowUpIsReported) {
     EXPECT_LT(r.body, 225);
     EXPECT_NE(r.message.find("step " + std::to_string(r.step)), std::string::npos) << r.message;
     const long long before = scene.System().StepCount();
-    EXPECT_EQ(scene.Advance(0.3f), 0);  // no more steps once unstable
+    EXPECT_FALSE(scene.Step(0.3f));  // no more steps once unstable
     EXPECT_EQ(scene.System().StepCount(), before);
 }
 
@@ -109,7 +109,7 @@ TEST(Ch16Scene, ParametersCoverThePanelAndReset) {
     ASSERT_TRUE(set.Set("k", "-4.5", &error)) << error;
     EXPECT_NEAR(scene.GetCloth().bend[0].k, FromBookSpringConstant(-4.5f), 1e-3f);
     ASSERT_TRUE(set.Set("integrator", "rk4", &error)) << error;
-    EXPECT_EQ(scene.System().integrator, Integrator::RK4);
+    EXPECT_EQ(scene.System().settings.integrator, Integrator::RK4);
     ASSERT_TRUE(set.Set("distance", "0.5", &error)) << error;
     EXPECT_NEAR(scene.GetCloth().structural[0].restingLength, 0.5f, 1e-6f);
     EXPECT_FALSE(set.Set("count", "31", &error));  // the book's slider is 5..30
@@ -117,23 +117,29 @@ TEST(Ch16Scene, ParametersCoverThePanelAndReset) {
     EXPECT_FALSE(set.Set("integrator", "leapfrog", &error));
 }
 
-TEST(Ch16Scene, AdvanceRunsWholeStepsOfTheSceneDt) {
-    Ch16Params params;
-    Ch16Scene scene(params);
-    EXPECT_EQ(scene.Advance(0.03f), 1);  // the book: one 0.03 s step per 0.03 s fixed update
-    params.dt = 0.01f;
-    scene.Reset(params);
-    EXPECT_EQ(scene.Advance(0.03f), 3);
-    EXPECT_EQ(scene.Advance(0.015f), 1);
-    EXPECT_EQ(scene.Advance(0.005f), 1);  // the half step left over completes
-    EXPECT_EQ(scene.System().StepCount(), 5);
+TEST(Ch16Scene, StepRunsOneStepOfItsArgumentAndRefusesBadSteps) {
+    Ch16Scene scene;
+    EXPECT_TRUE(scene.Step(0.03f));
+    EXPECT_EQ(scene.System().StepCount(), 1);
+    EXPECT_FALSE(scene.Step(0.0f));
+    EXPECT_FALSE(scene.Step(-0.03f));
+    EXPECT_FALSE(scene.Step(std::nanf("")));
+    EXPECT_EQ(scene.System().StepCount(), 1);
+    // Three steps of 0.01 s take the cloth as far as one of 0.03 s, to first order: the step is the argument.
+    Ch16Scene coarse, fine;
+    coarse.Step(0.03f);
+    for (int i = 0; i < 3; ++i) fine.Step(0.01f);
+    const float yCoarse = coarse.GetCloth().verts[0].GetPosition().y;
+    const float yFine = fine.GetCloth().verts[0].GetPosition().y;
+    EXPECT_LT(yFine, Ch16Scene::kClothHeight);
+    EXPECT_NEAR(yFine, yCoarse, 0.01f);
 }
 
 TEST(Ch16Scene, DeterministicBitForBit) {
     Ch16Scene a, b;
     for (int i = 0; i < 300; ++i) {
-        a.Step();
-        b.Step();
+        a.Step(a.Params().dt);
+        b.Step(b.Params().dt);
     }
     const std::vector<float> sa = Snapshot(a), sb = Snapshot(b);
     ASSERT_EQ(sa.size(), 225u * 6u);
@@ -141,7 +147,7 @@ TEST(Ch16Scene, DeterministicBitForBit) {
     EXPECT_EQ(std::memcmp(sa.data(), sb.data(), sa.size() * sizeof(float)), 0);
     // A reset replays the same run.
     a.Reset();
-    for (int i = 0; i < 300; ++i) a.Step();
+    for (int i = 0; i < 300; ++i) a.Step(a.Params().dt);
     const std::vector<float> sr = Snapshot(a);
     ASSERT_EQ(sr.size(), sa.size());
     EXPECT_EQ(std::memcmp(sa.data(), sr.data(), sa.size() * sizeof(float)), 0);

@@ -78,7 +78,7 @@ TEST(JointScene, JointsKeepLengthAtRest) {
         JointParams params;
         params.integrator = integrator;
         JointScene scene(params);
-        for (int i = 0; i < 2000; ++i) ASSERT_TRUE(scene.Step()) << scene.Monitor().Report().message;
+        for (int i = 0; i < 2000; ++i) ASSERT_TRUE(scene.Step(scene.Params().dt)) << scene.Monitor().Report().message;
         for (const DistanceJoint& j : scene.Joints()) {
             EXPECT_NEAR(Magnitude(j.p2->GetPosition() - j.p1->GetPosition()), j.length, 1e-5f) << ToString(integrator);
         }
@@ -112,8 +112,8 @@ TEST(JointScene, ParametersCoverThePanel) {
 TEST(JointScene, DeterministicBitForBit) {
     JointScene a, b;
     for (int i = 0; i < 500; ++i) {
-        a.Step();
-        b.Step();
+        a.Step(a.Params().dt);
+        b.Step(b.Params().dt);
     }
     const std::vector<float> sa = Snapshot(a), sb = Snapshot(b);
     ASSERT_EQ(sa.size(), 50u * 6u);

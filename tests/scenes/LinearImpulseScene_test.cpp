@@ -30,7 +30,7 @@ TEST(LinearImpulseScene, BuildsTheBookSceneSynced) {
         EXPECT_TRUE(VecNear(body.box.position, body.position, tol::kExact));
         EXPECT_TRUE(VecNear(body.sphere.position, body.position, tol::kExact));
     }
-    dropped.Update(kBookDt);
+    dropped.Step(kBookDt);
     EXPECT_EQ(dropped.System().CollisionCount(), 0u);
 }
 
@@ -41,14 +41,14 @@ TEST(LinearImpulseScene, PauseAndStepControls) {
     std::string error;
     ASSERT_TRUE(set.Set("pause", "1", &error)) << error;
     const vec3 start = scene.Bodies()[0].position;
-    scene.Update(kBookDt);
+    scene.Step(kBookDt);
     EXPECT_TRUE(VecNear(scene.Bodies()[0].position, start, tol::kExact));
     ASSERT_TRUE(set.Set("frames", "3", &error)) << error;
     ASSERT_TRUE(set.Set("step", "1", &error)) << error;
-    for (int i = 0; i < 5; ++i) scene.Update(kBookDt);
+    for (int i = 0; i < 5; ++i) scene.Step(kBookDt);
     EXPECT_EQ(scene.System().StepCount(), 3);
     ASSERT_TRUE(set.Set("pause", "0", &error)) << error;
-    scene.Update(kBookDt);
+    scene.Step(kBookDt);
     EXPECT_EQ(scene.System().StepCount(), 4);
     ASSERT_TRUE(set.Set("spheres", "1", &error)) << error;  // resets
     EXPECT_EQ(scene.Bodies()[0].type, RigidbodyType::Sphere);
@@ -71,7 +71,7 @@ TEST(LinearImpulseScene, ThrownBodiesCollide) {
         LinearImpulseScene scene(p);
         int hitStep = -1;
         for (int i = 0; i < 40 && hitStep < 0; ++i) {
-            scene.Update(kBookDt);
+            scene.Step(kBookDt);
             for (std::size_t k = 0; k < scene.System().CollisionCount(); ++k) {
                 const CollisionPair& pair = scene.System().Collisions()[k];
                 if (pair.a->mass > 0 && pair.b->mass > 0) hitStep = i;
@@ -86,7 +86,7 @@ TEST(LinearImpulseScene, ThrownBodiesCollide) {
         }
         float closest = 1e9f;
         for (int i = 0; i < 5; ++i) {
-            scene.Update(kBookDt);
+            scene.Step(kBookDt);
             closest = std::fmin(closest, b[1].position.x - b[0].position.x);
         }
         EXPECT_GT(b[1].velocity.x - b[0].velocity.x, -0.1f);

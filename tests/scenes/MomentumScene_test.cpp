@@ -19,7 +19,7 @@ TEST(MomentumScene, BuildsTheBookScene) {
     EXPECT_NEAR(b[3].position.x, 6.00006f, 1e-5f);
     EXPECT_NEAR(b[4].position.x, 12.00012f, 1e-5f);
     EXPECT_TRUE(VecNear(b[4].velocity, vec3(-20, 0, 0), tol::kTight));
-    EXPECT_EQ(scene.System().ImpulseIteration, 20);
+    EXPECT_EQ(scene.System().settings.solverIterations, 20);
     for (const RigidbodyVolume& s : b) EXPECT_TRUE(VecNear(s.sphere.position, s.position, tol::kExact));  // 5.2-28
     ParameterSet set;
     scene.AddParameters(&set);
@@ -34,7 +34,7 @@ TEST(MomentumScene, BuildsTheBookScene) {
 // carried forward: sphere 0 moves towards -x.
 TEST(MomentumScene, ChainOfImpactsConservesMomentumWithDampingIsolated) {
     MomentumParams params;
-    params.velocityFactorPerStep = 1.0f;
+    params.velocityRetention = 1.0f;
     params.gravity = false;
     MomentumScene scene(params);
     const vec3 p0 = scene.TotalMomentum();

@@ -19,7 +19,7 @@ TEST(SpringsScene, BookSetup) {
     EXPECT_EQ(p[0].GetMass(), 50.0f);
     EXPECT_EQ(p[1].GetMass(), 1.0f);
     EXPECT_EQ(p[0].GetBounce(), 0.7f);
-    EXPECT_EQ(p[0].GetFriction(), 0.95f);
+    EXPECT_EQ(p[0].GetVelocityRetention(), 0.95f);
     ASSERT_EQ(scene.System().Springs().size(), 1u);
     const Spring& s = scene.System().Springs()[0];
     EXPECT_NEAR(s.k, -2.0f / 0.03f, 1e-3f);
@@ -34,7 +34,7 @@ TEST(SpringsScene, BookSetup) {
 // the same velocity changes come out, so the demo looks like the book's.
 TEST(SpringsScene, BookConstantsGiveTheBooksFirstStep) {
     SpringsScene scene;
-    scene.Step();
+    scene.Step(scene.Params().dt);
     EXPECT_NEAR(scene.Particles()[1].GetVelocity().x, -2.0f, 1e-4f);
     EXPECT_NEAR(scene.Particles()[0].GetVelocity().x, 2.0f / 50.0f, 1e-5f);
 }
@@ -45,7 +45,7 @@ TEST(SpringsScene, SettlesOnTheGround) {
         SpringsParams params;
         params.integrator = integrator;
         SpringsScene scene(params);
-        for (int i = 0; i < 2000; ++i) ASSERT_TRUE(scene.Step()) << scene.Monitor().Report().message;
+        for (int i = 0; i < 2000; ++i) ASSERT_TRUE(scene.Step(scene.Params().dt)) << scene.Monitor().Report().message;
         const auto& p = scene.Particles();
         for (const Particle& q : p) {
             EXPECT_NEAR(q.GetPosition().y, 0.15f, 0.05f) << ToString(integrator);
@@ -65,7 +65,7 @@ TEST(SpringsScene, StiffExplicitEulerIsReported) {
     params.integrator = Integrator::ExplicitEuler;
     SpringsScene scene(params);
     int steps = 0;
-    while (steps < 5000 && scene.Step()) ++steps;
+    while (steps < 5000 && scene.Step(scene.Params().dt)) ++steps;
     ASSERT_LT(steps, 5000);
     const StabilityReport& r = scene.Monitor().Report();
     EXPECT_EQ(r.step, steps + 1);
@@ -87,7 +87,7 @@ TEST(SpringsScene, ParametersCoverThePanel) {
     ASSERT_TRUE(set.Set("dt", "0.01", &error)) << error;
     EXPECT_EQ(scene.Params().dt, 0.01f);
     ASSERT_TRUE(set.Set("integrator", "verlet", &error)) << error;
-    EXPECT_EQ(scene.System().integrator, Integrator::PositionVerlet);
+    EXPECT_EQ(scene.System().settings.integrator, Integrator::PositionVerlet);
     EXPECT_FALSE(set.Set("b", "1.5", &error));
     EXPECT_FALSE(set.Set("l", "-1", &error));
 }
@@ -95,8 +95,8 @@ TEST(SpringsScene, ParametersCoverThePanel) {
 TEST(SpringsScene, DeterministicBitForBit) {
     SpringsScene a, b;
     for (int i = 0; i < 500; ++i) {
-        a.Step();
-        b.Step();
+        a.Step(a.Params().dt);
+        b.Step(b.Params().dt);
     }
     ASSERT_EQ(a.Particles().size(), 2u);
     ASSERT_EQ(b.Particles().size(), 2u);

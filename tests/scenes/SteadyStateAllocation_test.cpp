@@ -62,9 +62,9 @@ TEST(SteadyStateAllocation, Ch14ParticlesEveryIntegrator) {
         Ch14Params params;
         params.integrator = integrator;
         Ch14Scene scene(params);
-        for (int i = 0; i < kWarmup; ++i) scene.Step();
+        for (int i = 0; i < kWarmup; ++i) scene.Step(scene.Params().dt);
         EXPECT_EQ(AllocationsDuring([&] {
-                      for (int i = 0; i < kMeasured; ++i) scene.Step();
+                      for (int i = 0; i < kMeasured; ++i) scene.Step(scene.Params().dt);
                   }),
                   0)
             << ToString(integrator);
@@ -85,7 +85,7 @@ TEST(SteadyStateAllocation, Ch15BoxesAccumulatedSolver) {
     Ch15Scene scene;
     scene.Params().solver = 1;  // the scene applies its parameters every step (--set solver=accumulated)
     for (int i = 0; i < kWarmup; ++i) scene.Step(0.03f);
-    ASSERT_EQ(scene.System().contactSolver, ContactSolver::Accumulated);
+    ASSERT_EQ(scene.System().settings.contactSolver, ContactSolver::Accumulated);
     // The arbiter's buffers must be reused, not regrown.
     ASSERT_GT(scene.System().AccumulatedSolver().ContactCount(), 0u) << "the boxes should be in contact";
     EXPECT_EQ(AllocationsDuring([&] {
@@ -109,9 +109,9 @@ TEST(SteadyStateAllocation, Ch16ClothEveryIntegrator) {
         Ch16Params params;
         params.integrator = integrator;
         Ch16Scene scene(params);
-        for (int i = 0; i < kWarmup; ++i) scene.Step();
+        for (int i = 0; i < kWarmup; ++i) scene.Step(scene.Params().dt);
         EXPECT_EQ(AllocationsDuring([&] {
-                      for (int i = 0; i < kMeasured; ++i) scene.Step();
+                      for (int i = 0; i < kMeasured; ++i) scene.Step(scene.Params().dt);
                   }),
                   0)
             << ToString(integrator);
@@ -122,15 +122,15 @@ TEST(SteadyStateAllocation, SpringsAndJoints) {
     SpringsScene springs;
     JointScene joints;
     for (int i = 0; i < kWarmup; ++i) {
-        springs.Step();
-        joints.Step();
+        springs.Step(springs.Params().dt);
+        joints.Step(joints.Params().dt);
     }
     EXPECT_EQ(AllocationsDuring([&] {
-                  for (int i = 0; i < kMeasured; ++i) springs.Step();
+                  for (int i = 0; i < kMeasured; ++i) springs.Step(springs.Params().dt);
               }),
               0);
     EXPECT_EQ(AllocationsDuring([&] {
-                  for (int i = 0; i < kMeasured; ++i) joints.Step();
+                  for (int i = 0; i < kMeasured; ++i) joints.Step(joints.Params().dt);
               }),
               0);
 }

@@ -28,7 +28,7 @@ TEST(WorldBuilder, SpecDefaultsAreTheEnginesDefaults) {
     EXPECT_EQ(built.mass, engine.mass);
     EXPECT_EQ(built.friction, engine.friction);
     EXPECT_EQ(built.cor, engine.cor);
-    EXPECT_EQ(built.damping, engine.damping);
+    EXPECT_EQ(built.velocityRetention, engine.velocityRetention);
     EXPECT_EQ(built.velocityEpsilon, engine.velocityEpsilon);
     EXPECT_TRUE(VecNear(built.box.size, engine.box.size, 0.0f));
     EXPECT_EQ(MakeBody(SphereSpec(vec3())).sphere.radius, RigidbodyVolume(RigidbodyType::Sphere).sphere.radius);
@@ -44,7 +44,7 @@ TEST(WorldBuilder, MakeBodyCopiesEveryFieldAndSyncsTheVolumes) {
     s.angularVelocity = vec3(0, 2, 0);
     s.friction = 0.3f;
     s.restitution = 0.1f;
-    s.damping = 1.0f;
+    s.velocityRetention = 1.0f;
     s.velocityEpsilon = 0.0f;
     const RigidbodyVolume b = MakeBody(s);
     EXPECT_TRUE(VecNear(b.position, vec3(1, 2, 3), 0.0f));
@@ -55,7 +55,7 @@ TEST(WorldBuilder, MakeBodyCopiesEveryFieldAndSyncsTheVolumes) {
     EXPECT_EQ(b.mass, 4.0f);
     EXPECT_EQ(b.friction, 0.3f);
     EXPECT_EQ(b.cor, 0.1f);
-    EXPECT_EQ(b.damping, 1.0f);
+    EXPECT_EQ(b.velocityRetention, 1.0f);
     EXPECT_EQ(b.velocityEpsilon, 0.0f);
     RigidbodyVolume expected(RigidbodyType::Box);
     expected.SetEulerOrientation(vec3(0.1f, 0.2f, 0.3f));
@@ -157,7 +157,7 @@ TEST(WorldBuilder, BenchmarkScenesHaveTheGroundFirstWithItsTopAtZero) {
     EXPECT_EQ(bounce[1].shape, RigidbodyType::Sphere);
     EXPECT_EQ(bounce[1].position.y - bounce[1].radius, 10.0f);  // bottom 10 m above the ground
     EXPECT_EQ(bounce[1].restitution, 0.8f);
-    EXPECT_EQ(bounce[1].damping, 0.98f);
+    EXPECT_EQ(bounce[1].velocityRetention, 0.98f);
     EXPECT_EQ(bounce[0].restitution, 1.0f);
 }
 
@@ -201,7 +201,7 @@ TEST(WorldBuilder, RigidWorldMeasuresDynamicBodiesOnly) {
 TEST(WorldBuilder, SameSpecsGiveBitwiseIdenticalRuns) {
     auto run = [] {
         RigidWorld w(BoxpileScene(30));
-        w.system.contactSolver = ContactSolver::Accumulated;
+        w.system.settings.contactSolver = ContactSolver::Accumulated;
         for (int i = 0; i < 90; ++i) w.system.Update(1.0f / 60.0f);
         return Snapshot(w.Bodies());
     };

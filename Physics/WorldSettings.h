@@ -1,0 +1,74 @@
+#pragma once
+// One world's engine settings and the context one step hands to each of its stages. Every field has its unit
+// and the book's default; the book's own name, where ours differs, is given in the comment and listed in
+// docs/STYLE.md, "Renames in the engine".
+
+#include <cmath>
+#include <cstddef>
+
+#include "Physics/ContactSolver.h"
+#include "Physics/Integrator.h"
+
+/// The book's fixed step, s (GetFixedFPS()/1000, docs/book-reference.md §1.2). The per-step factors the book
+/// defines (a particle's velocity retention 0.95) are defined at this step.
+constexpr float kBookStep = 0.03f;
+
+/// Per-step factor for a step of dt seconds from a factor defined per step of referenceStep seconds: the same
+/// per-second rate, factor^(dt / referenceStep). Exactly `factor` when dt == referenceStep (the book's path
+/// stays bit-identical) or when referenceStep <= 0 (applied per step at every dt).
+inline float FactorOverStep(float factor, float referenceStep, float dt) {
+    if (!(referenceStep > 0.0f) || dt == referenceStep) return factor;
+    return std::pow(factor, dt / referenceStep);
+}
+
+/// Engine settings of one PhysicsSystem (its `settings`), read by every stage of every step.
+struct WorldSettings {
+    // ---- particles (ch14, ch16)
+    /// How particles (free, cloth and jointed) are integrated. Book: semi-implicit Euler (EULER_INTEGRATION).
+    Integrator integrator = Integrator::SemiImplicitEuler;
+    /// s: the step at which Particle::velocityRetention is defined (book: 0.03, its fixed step). A step of dt
+    /// retains velocityRetention^(dt / particleRetentionStep), the same fraction per second.
+    float particleRetentionStep = kBookStep;
+
+    // ---- rigid volumes (ch15)
+    /// How contact impulses are solved (ContactSolver.h). Book: its per-contact solver.
+    ContactSolver contactSolver = ContactSolver::Book;
+    /// Passes over every contact per (sub)step, count. Book: ImpulseIteration = 5.
+    int solverIterations = 5;
+    /// m: penetration left uncorrected by linear projection and the Baumgarte bias (0.01-0.1). Book:
+    /// PenetrationSlack = 0.01.
+    float penetrationSlop = 0.01f;
+    /// Linear projection on or off after integration. Book: DoLinearProjection = true.
+    bool linearProjection = true;
+    /// Fraction (0..1, not a percent) of the penetration beyond the slop that linear projection removes per
+    /// (sub)step; 0.2-0.8, smaller jitters less and sinks more. Book: LinearProjectionPercent = 0.45.
+    float projectionFraction = 0.45f;
+    /// Settings of ContactSolver::Accumulated (its iterations and slop are the two above).
+    AccumulatedSolverSettings accumulated;
+    /// Volumes have no continuous collision, so a step in which a dynamic volume would travel
+    /// (|v| dt + |g| dt^2 / 2) more than substepTravelFraction * (its smallest half extent + the smallest in the
+    /// world) is split into n equal volume substeps, n <= maxVolumeSubsteps (count; beyond, clamped with a
+    /// LastError() warning; docs/ch15.md, "Extremes"). 1 turns it off. Not in the book (n = 1 at its 0.03 s).
+    int maxVolumeSubsteps = 64;
+    /// Fraction (of the half-extent sum) one substep may travel. Not in the book.
+    float substepTravelFraction = 0.75f;
+    /// Volume count from which pairs are found by sweep-and-prune (Broadphase.h); all pairs below. Not in the book.
+    std::size_t broadphaseMinVolumes = 32;
+};
+
+/// What one PhysicsSystem::Update hands to each stage: the step's times and counters and the world's settings.
+/// Built on the stack per step; no stage keeps it.
+struct StepContext {
+    const WorldSettings& settings;
+    float dt = 0.0f;     ///< s, the whole step
+    float invDt = 0.0f;  ///< 1/s
+    /// s, one volume substep (dt / substepCount; dt itself when substepCount is 1, bit for bit).
+    float h = 0.0f;
+    float invH = 0.0f;     ///< 1/s
+    int substepCount = 1;  ///< volume substeps of this step
+    int substep = 0;       ///< index of the current volume substep, 0..substepCount-1
+    long long step = 0;    ///< steps taken before this one (PhysicsSystem::StepCount())
+    /// Volume substeps taken before the current one over the world's life (one per step without volumes): the
+    /// Accumulated solver carries impulses over only from the substep just before.
+    long long substepSerial = 0;
+};

@@ -1,0 +1,144 @@
+// One stepping contract for every demo: the physics step (--set dt= for demos with a dt parameter, --dt for the
+// others) changes accuracy, never the speed of simulated time. Each demo runs at the book's 0.03 s and at 0.01 s;
+// the --state CSV's time column must be the simulated time of the frame (frames * 1/60 s, the same in both runs),
+// and the body that moved furthest must be where the coarse run has it, within the error a 0.03 s step allows.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/app/SandboxRun.h"
+
+namespace {
+
+constexpr double kCoarseStep = 0.03;  // the book's step (the default)
+constexpr double kFineStep = 0.01;
+constexpr double kFrameTime = 1.0 / 60.0;  // the default --fps
+constexpr double kGravity = 9.82;          // m/s^2, every demo's
+constexpr int kFrames = 31;                // frame 30 is 0.5 s in: early enough that bodies mostly fly or fall
+
+struct Row {
+    int frame = 0;
+    double time = 0.0;
+    int body = 0;
+    double x = 0, y = 0, z = 0, vx = 0, vy = 0, vz = 0;
+};
+
+std::vector<Row> ReadState(const std::string& path) {
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);  // header
+    std::vector<Row> rows;
+    while (std::getline(in, line)) {
+        std::vector<std::string> f;
+        std::stringstream ss(line);
+        std::string cell;
+        while (std::getline(ss, cell, ',')) f.push_back(cell);
+        if (f.size() != 10) continue;
+        Row r;
+        r.frame = std::atoi(f[0].c_str());
+        r.time = std::atof(f[1].c_str());
+        r.body = std::atoi(f[2].c_str());
+        r.x = std::atof(f[4].c_str());
+        r.y = std::atof(f[5].c_str());
+        r.z = std::atof(f[6].c_str());
+        r.vx = std::atof(f[7].c_str());
+        r.vy = std::atof(f[8].c_str());
+        r.vz = std::atof(f[9].c_str());
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+/// True if the demo has a `dt` parameter (--params lists "  dt = ...").
+bool HasDtParameter(const std::string& id) {
+    const SandboxResult r = RunSandboxExe({"--demo", id, "--params"});
+    return r.exitCode == 0 && r.out.find("\n  dt = ") != std::string::npos;
+}
+
+/// Runs `id` for kFrames frames at `step` seconds and returns its state rows.
+std::vector<Row> RunAtStep(const std::string& id, double step, const std::string& dir) {
+    const std::string csv = dir + "/" + id + (step == kCoarseStep ? "-coarse" : "-fine") + ".csv";
+    std::vector<std::string> args = {"--demo",  id,        "--frames", std::to_string(kFrames),
+                                     "--no-ui", "--quiet", "--state",  csv};
+    if (step != kCoarseStep) {
+        std::ostringstream value;
+        value << step;
+        if (HasDtParameter(id)) {
+            args.push_back("--set");
+            args.push_back("dt=" + value.str());
+        } else {
+            args.push_back("--dt");
+            args.push_back(value.str());
+        }
+    }
+    const SandboxResult r = RunSandboxExe(args);
+    EXPECT_EQ(r.exitCode, 0) << id << " at " << step << ": " << r.err;
+    return ReadState(csv);
+}
+
+using ByBody = std::map<int, Row>;
+ByBody Frame(const std::vector<Row>& rows, int frame) {
+    ByBody out;
+    for (const Row& r : rows)
+        if (r.frame == frame) out[r.body] = r;
+    return out;
+}
+
+double Distance(const Row& a, const Row& b) {
+    return std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
+}
+
+}  // namespace
+
+TEST(Stepping, EveryDemoKeepsSimulatedTimeAtTwoSteps) {
+    const std::vector<std::string> ids = ListDemoIds();
+    ASSERT_FALSE(ids.empty());
+    const std::string dir = ScratchDir("stepping");
+    int compared = 0;
+    for (const std::string& id : ids) {
+        const std::vector<Row> coarse = RunAtStep(id, kCoarseStep, dir);
+        const std::vector<Row> fine = RunAtStep(id, kFineStep, dir);
+        ASSERT_EQ(coarse.size(), fine.size()) << id;
+        if (coarse.empty()) continue;  // raycast and collision-features simulate no bodies: nothing to time
+
+        // The time column is the simulated time of the frame, whatever the step: (frame + 1) frames of 1/60 s.
+        for (std::size_t i = 0; i < coarse.size(); ++i) {
+            const double expected = (coarse[i].frame + 1) * kFrameTime;
+            ASSERT_NEAR(coarse[i].time, expected, 1e-8) << id << " frame " << coarse[i].frame;
+            ASSERT_EQ(fine[i].time, coarse[i].time) << id << " frame " << fine[i].frame;
+        }
+
+        // The body that moved furthest by the last frame (the falling or thrown one) is where the coarse run has
+        // it, within what a 0.03 s step allows: the accumulator lags host time by up to one step (|v| dt) and
+        // first-order integration is off by about g t dt. Slow motion (0.01 s steps at the pace of 0.03 s ones)
+        // would leave it two thirds of the way behind.
+        const int last = kFrames - 1;
+        const ByBody start = Frame(coarse, 0), endCoarse = Frame(coarse, last), endFine = Frame(fine, last);
+        int mover = -1;
+        double travelled = 0.0;
+        for (const auto& [body, row] : endCoarse) {
+            const double d = Distance(row, start.at(body));
+            if (d > travelled) travelled = d, mover = body;
+        }
+        ASSERT_GE(mover, 0) << id << ": nothing moved";
+        const Row& a = endCoarse.at(mover);
+        const Row& b = endFine.at(mover);
+        const double speed = std::sqrt(a.vx * a.vx + a.vy * a.vy + a.vz * a.vz);
+        const double t = a.time;
+        const double tolerance = (speed + kGravity * t) * kCoarseStep;
+        EXPECT_LT(Distance(a, b), tolerance)
+            << id << " body " << mover << " at t = " << t << " s: (" << a.x << ", " << a.y << ", " << a.z
+            << ") at 0.03 s steps, (" << b.x << ", " << b.y << ", " << b.z << ") at 0.01 s; travelled " << travelled;
+        EXPECT_GT(travelled, 3.0 * tolerance) << id << ": the check must be able to tell slow motion apart";
+        std::printf("%s: body %d travelled %.3f m; the two steps differ by %.4f m (tolerance %.4f m)\n", id.c_str(),
+                    mover, travelled, Distance(a, b), tolerance);
+        ++compared;
+    }
+    EXPECT_GE(compared, 7) << "every demo with bodies must be compared";
+}
