@@ -160,7 +160,7 @@ int RunSandbox(const Options& o, RunStats* stats) {
     }
     stats->renderer = info.renderer;
 
-    // ImGui: no ini file, fixed display size and delta time, classic colours (book.md 1.7, issue 3 item 2).
+    // ImGui: no ini file, fixed display size and delta time, classic colours (docs/book-reference.md §1.7).
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     s.imgui = true;
@@ -196,7 +196,7 @@ int RunSandbox(const Options& o, RunStats* stats) {
         return kExitOk;
     }
 
-    // Camera overrides, then one camera update so the view is valid on frame 0 (book.md 1.2).
+    // Camera overrides, then one camera update so the view is valid on frame 0 (docs/book-reference.md §1.2).
     vec2 rotation = demo.camera.GetRotation();
     if (o.hasYaw) rotation.x = o.yaw;
     if (o.hasPitch) rotation.y = o.pitch;

@@ -28,7 +28,7 @@ void CH15Demo::Update(float dt) {
 }
 
 void CH15Demo::ImGUI() {
-    // book.md 2.5; the book's PushItemWidth calls are popped here (erratum 5.2-26).
+    // docs/book-reference.md §2.5; the book's PushItemWidth calls are popped here (erratum 5.2-26).
     Ch15Params& p = scene.Params();
     // The book's panel is 75 high; a non-book contact solver adds a row so the panel shows the model in effect.
     const bool bookSolver = p.solver == 0;

@@ -1,7 +1,7 @@
 #pragma once
-// Base of every demo (book.md 1.1): an orbit camera, mouse state, a help window, and the parameter table
-// that feeds both its ImGui panel and `--set`. Subclasses drive a PhysicsSystem (usually through a GL-free
-// scene in Demos/Scenes) and draw through the fixed-function Render(...) overloads.
+// Base of every demo (docs/book-reference.md §1.1): an orbit camera, mouse state, a help window, and the parameter
+// table that feeds both its ImGui panel and `--set`. Subclasses drive a PhysicsSystem (usually through a GL-free scene
+// in Demos/Scenes) and draw through the fixed-function Render(...) overloads.
 
 #include <string>
 #include <vector>
@@ -52,17 +52,17 @@ public:
     bool StateIsFinite(std::string* where) const;
 
 protected:
-    /// Begins a book-style demo panel (book.md 1.7): at (400, 10) on its first frame, 370 wide and `height`
-    /// tall every frame, not resizable, and without the scrollbar ImGui 1.86 would add when the rows fill
-    /// the book's 75-pixel height (1.50 showed none). Always pair with ImGui::End().
+    /// Begins a book-style demo panel (docs/book-reference.md §1.7): at (400, 10) on its first frame, 370 wide and
+    /// `height` tall every frame, not resizable, and without the scrollbar ImGui 1.86 would add when the rows fill the
+    /// book's 75-pixel height (1.50 showed none). Always pair with ImGui::End().
     static void BeginPanel(const char* title, float height = 75.0f);
-    /// The book's chapter 14-16 camera preset (book.md 1.4): target (3.75622, 2.98255, 0), rotation
+    /// The book's chapter 14-16 camera preset (docs/book-reference.md §1.4): target (3.75622, 2.98255, 0), rotation
     /// (-67.9312, 19.8) degrees, and `zoom` (9 in most demos; 12 in CH15 and Conservation Of Momentum).
     void UseBookCamera(float zoom);
-    /// Turns on GL_LIGHTING and GL_LIGHT0, as each demo's Initialize does (book.md 1.5).
+    /// Turns on GL_LIGHTING and GL_LIGHT0, as each demo's Initialize does (docs/book-reference.md §1.5).
     static void EnableBookLighting();
     /// CH14's and the chapter 16 demos' Initialize view: EnableBookLighting, the light (0.5, 1, -1.5, 0) until
-    /// the first Render (book.md 1.5), and UseBookCamera(9).
+    /// the first Render (docs/book-reference.md §1.5), and UseBookCamera(9).
     void InitializeBookView();
 
     bool show_help = false;

@@ -28,7 +28,7 @@ void LinearImpulse::Update(float dt) {
 }
 
 void LinearImpulse::ImGUI() {
-    // book.md 2.3; the PushItemWidth is popped here (erratum 5.2-26).
+    // docs/book-reference.md §2.3; the PushItemWidth is popped here (erratum 5.2-26).
     LinearImpulseParams& p = scene.Params();
     BeginPanel("Linear Impulse Demo", 100.0f);
     if (ImGui::Button("Step")) scene.RequestSteps();

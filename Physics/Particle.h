@@ -1,5 +1,5 @@
 #pragma once
-// A point mass with no volume (book.md 3.2): falls under gravity, bounces off OBB constraints, never
+// A point mass with no volume (docs/book-reference.md §3.2): falls under gravity, bounces off OBB constraints, never
 // tunnels. `friction` is the book's per-step velocity damping factor, not contact friction.
 
 #include <cstddef>

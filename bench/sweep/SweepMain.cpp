@@ -1,4 +1,4 @@
-// psb-sweep: runs the reference problems over their settings and writes one CSV row per run (issue 7).
+// psb-sweep: runs the reference problems over their settings and writes one CSV row per run.
 // Exit codes: 0 done, 1 output file could not be written, 2 bad command line.
 #include <algorithm>
 #include <cmath>
