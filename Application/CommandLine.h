@@ -37,7 +37,7 @@ struct Options {
     float orbitDegreesPerFrame = 0.0f;  ///< added to the yaw every output frame
 
     Rational frameTime{1, 60};  ///< simulated seconds per output frame (--fps 60)
-    Rational step{3, 100};      ///< fixed physics step (--dt 0.03, book.md 1.2)
+    Rational step{3, 100};      ///< fixed physics step (--dt 0.03, docs/book-reference.md §1.2)
 
     std::vector<int> onlyFrames;  ///< --only-frames: write/compare just these (sorted, unique); empty = all
     std::string compareDir;

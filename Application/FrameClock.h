@@ -1,6 +1,6 @@
 #pragma once
-// The fixed-step accumulator of book.md 1.2, in exact integer ticks. The frame time and the physics step are
-// rationals; one tick is 1/lcm of their denominators, so both are whole numbers of ticks and the accumulator
+// The fixed-step accumulator of docs/book-reference.md §1.2, in exact integer ticks. The frame time and the physics
+// step are rationals; one tick is 1/lcm of their denominators, so both are whole numbers of ticks and the accumulator
 // never drifts, however many frames run.
 
 #include <cstdint>

@@ -121,7 +121,7 @@ int CheckBackend(const Options& o) {
 }
 
 // One headless context, ImGui with its OpenGL2 back end (no ini file, fixed display size and delta time, the
-// book's look: book.md 1.7), the window and the demo. Exit 3 when the context or the demo cannot start.
+// book's look: docs/book-reference.md §1.7), the window and the demo. Exit 3 when the context or the demo cannot start.
 int StartSession(const Options& o, Session* s, RunStats* stats) {
     PinSoftwareRasterizer();
     HeadlessInfo info;
@@ -173,7 +173,8 @@ int ApplyParameters(const Options& o, DemoBase& demo) {
     return FinishStdout();
 }
 
-// Camera overrides, then one camera update so the view is valid on frame 0 (book.md 1.2). Returns the yaw the
+// Camera overrides, then one camera update so the view is valid on frame 0 (docs/book-reference.md §1.2). Returns the
+// yaw the
 // --orbit turntable starts from.
 float ApplyCamera(const Options& o, DemoBase& demo) {
     vec2 rotation = demo.camera.GetRotation();

@@ -1,7 +1,7 @@
 #pragma once
-// The headless replacement of the book's main-win32 loop (book.md 1.2, 7): one OSMesa context, ImGui with
-// its OpenGL2 back end, a DemoWindow, the exact fixed-step accumulator, PNG frames through the encode
-// queue, the --state CSV and the golden comparison.
+// The headless replacement of the book's main-win32 loop (docs/book-reference.md §1.2, §7): one OSMesa context, ImGui
+// with its OpenGL2 back end, a DemoWindow, the exact fixed-step accumulator, PNG frames through the encode queue, the
+// --state CSV and the golden comparison.
 
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Chapter 14 (book.md 2.1): 50 particles spawned with the book's random sequence bounce down four OBB
+// Chapter 14 (docs/book-reference.md §2.1): 50 particles spawned with the book's random sequence bounce down four OBB
 // constraints. The scene (Ch14Scene) is GL-free and shared with the tests and bench/particles_bench.cpp.
 
 #include <deque>

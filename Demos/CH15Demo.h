@@ -1,5 +1,5 @@
 #pragma once
-// Chapter 15 (book.md 2.5): two boxes stacking on a ground slab, with the solver panel.
+// Chapter 15 (docs/book-reference.md §2.5): two boxes stacking on a ground slab, with the solver panel.
 
 #include "Demos/DemoBase.h"
 #include "Demos/Scenes/Ch15Scene.h"

@@ -1,6 +1,6 @@
 #pragma once
-// Chapter 16 (book.md 2.7): a 15 x 15 cloth dropped onto four posts. The scene (Ch16Scene) is GL-free and
-// shared with the tests and bench/cloth_bench.cpp.
+// Chapter 16 (docs/book-reference.md §2.7): a 15 x 15 cloth dropped onto four posts. The scene (Ch16Scene) is GL-free
+// and shared with the tests and bench/cloth_bench.cpp.
 
 #include "Demos/DemoBase.h"
 #include "Demos/Scenes/Ch16Scene.h"
@@ -12,7 +12,7 @@ public:
     /// Book camera preset (CH14's), lighting on, scene rebuilt from the current values.
     void Initialize(int width, int height) override;
     /// Origin, light (0, 1, 0, 0), the four posts drawn thin (half-size 0.1, 0.5, 0.1) in green although they
-    /// collide at 0.3, the ground in blue, the cloth as red one-sided triangles (book.md 2.7).
+    /// collide at 0.3, the ground in blue, the cloth as red one-sided triangles (docs/book-reference.md §2.7).
     void Render() override;
     /// Camera, then one physics step of dt seconds (the host runs whole steps of PhysicsStep()); stops and
     /// prints the report once the stability monitor fails.

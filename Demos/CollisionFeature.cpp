@@ -7,7 +7,7 @@
 
 namespace {
 const vec3 kLightDirection{0.5f, 1.0f, -1.5f};
-const vec3 kLightColor{0.0f, 0.0f, 0.5f};  // ambient and diffuse (book.md 2.2)
+const vec3 kLightColor{0.0f, 0.0f, 0.5f};  // ambient and diffuse (docs/book-reference.md §2.2)
 }  // namespace
 
 CollisionFeature::CollisionFeature() { AddCollisionFeatureParameters(&params, &p); }

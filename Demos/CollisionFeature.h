@@ -1,6 +1,6 @@
 #pragma once
-// Collision Features, "SAT Test Demo" (book.md 2.2): the contact manifolds of every pair of two boxes and
-// two spheres. Headless, a scripted motion replaces dragging the shapes with the gizmo.
+// Collision Features, "SAT Test Demo" (docs/book-reference.md §2.2): the contact manifolds of every pair of two boxes
+// and two spheres. Headless, a scripted motion replaces dragging the shapes with the gizmo.
 
 #include "Demos/DemoBase.h"
 #include "Demos/Scenes/CollisionFeatureScene.h"

@@ -10,7 +10,8 @@ ConservationOfMomentum::ConservationOfMomentum() { scene.AddParameters(&params);
 
 void ConservationOfMomentum::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
-    // book.md 2.4 gives only the zoom; target and rotation are the CH14 preset the other ch15 demos use.
+    // docs/book-reference.md §2.4 gives only the zoom; target and rotation are the CH14 preset the other ch15 demos
+    // use.
     UseBookCamera(12.0f);
     glPointSize(5.0f);
     EnableBookLighting();

@@ -1,5 +1,5 @@
 #pragma once
-// Conservation Of Momentum (book.md 2.4): a sphere sent into a row of four at 20 m/s.
+// Conservation Of Momentum (docs/book-reference.md §2.4): a sphere sent into a row of four at 20 m/s.
 
 #include "Demos/DemoBase.h"
 #include "Demos/Scenes/MomentumScene.h"

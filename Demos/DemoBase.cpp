@@ -23,7 +23,7 @@ void DemoBase::Resize(int width, int height) {
 void DemoBase::Render() { FixedFunctionOrigin(); }
 
 void DemoBase::Update(float dt) {
-    // One mouse button at a time, right before middle before left (book.md 1.1).
+    // One mouse button at a time, right before middle before left (docs/book-reference.md §1.1).
     if (mouseRightDown)
         camera.Rotate(mouseDelta, dt);
     else if (mouseMiddleDown)

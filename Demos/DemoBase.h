@@ -1,7 +1,7 @@
 #pragma once
-// Base of every demo (book.md 1.1): an orbit camera, mouse state, a help window, and the parameter table
-// that feeds both its ImGui panel and `--set`. Subclasses drive a PhysicsSystem (usually through a GL-free
-// scene in Demos/Scenes) and draw through the fixed-function Render(...) overloads.
+// Base of every demo (docs/book-reference.md §1.1): an orbit camera, mouse state, a help window, and the parameter
+// table that feeds both its ImGui panel and `--set`. Subclasses drive a PhysicsSystem (usually through a GL-free scene
+// in Demos/Scenes) and draw through the fixed-function Render(...) overloads.
 
 #include <string>
 #include <vector>
@@ -65,13 +65,13 @@ protected:
     void DrawPanel(const char* title, float height, PanelScrollbar scrollbar = PanelScrollbar::Hidden) const;
     /// Appends the book's panel-only "Show Help" button (on the line of the widget before it) to the table.
     void AddShowHelpButton();
-    /// The book's chapter 14-16 camera preset (book.md 1.4): target (3.75622, 2.98255, 0), rotation
+    /// The book's chapter 14-16 camera preset (docs/book-reference.md §1.4): target (3.75622, 2.98255, 0), rotation
     /// (-67.9312, 19.8) degrees, and `zoom` (9 in most demos; 12 in CH15 and Conservation Of Momentum).
     void UseBookCamera(float zoom);
-    /// Turns on GL_LIGHTING and GL_LIGHT0, as each demo's Initialize does (book.md 1.5).
+    /// Turns on GL_LIGHTING and GL_LIGHT0, as each demo's Initialize does (docs/book-reference.md §1.5).
     static void EnableBookLighting();
     /// CH14's and the chapter 16 demos' Initialize view: EnableBookLighting, the light (0.5, 1, -1.5, 0) until
-    /// the first Render (book.md 1.5), and UseBookCamera(9).
+    /// the first Render (docs/book-reference.md §1.5), and UseBookCamera(9).
     void InitializeBookView();
 
     bool show_help = false;

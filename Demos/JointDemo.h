@@ -1,6 +1,6 @@
 #pragma once
-// Joint Demo (book.md 2.8): CH14's particles in pairs held apart by distance joints. The scene (JointScene)
-// is GL-free and shared with the tests.
+// Joint Demo (docs/book-reference.md §2.8): CH14's particles in pairs held apart by distance joints. The scene
+// (JointScene) is GL-free and shared with the tests.
 
 #include "Demos/DemoBase.h"
 #include "Demos/Scenes/JointScene.h"

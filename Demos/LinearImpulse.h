@@ -1,6 +1,6 @@
 #pragma once
-// Linear Impulse (book.md 2.3): two spheres or boxes thrown at (or dropped onto) each other, with pause and
-// single-step controls. Headless runs start unpaused (pause=1 gives the book's paused start).
+// Linear Impulse (docs/book-reference.md §2.3): two spheres or boxes thrown at (or dropped onto) each other, with pause
+// and single-step controls. Headless runs start unpaused (pause=1 gives the book's paused start).
 
 #include "Demos/DemoBase.h"
 #include "Demos/Scenes/LinearImpulseScene.h"

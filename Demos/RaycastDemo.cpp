@@ -13,7 +13,7 @@
 
 namespace {
 const vec3 kLightDirection{0.5f, 1.0f, -1.5f};
-const vec3 kLightColor{0.0f, 0.0f, 0.5f};  // ambient and diffuse: the demo's blue tint (book.md 1.5)
+const vec3 kLightColor{0.0f, 0.0f, 0.5f};  // ambient and diffuse: the demo's blue tint (docs/book-reference.md §1.5)
 
 const char* ShapeName(RaycastScene::Shape s) {
     switch (s) {
@@ -73,7 +73,7 @@ void RaycastDemo::ScriptFrame(int frame) {
         hitShape = RaycastScene::Shape::None;
         return;
     }
-    // The book's left-click pick (book.md 2.0), with the scripted cursor as the mouse position.
+    // The book's left-click pick (docs/book-reference.md §2.0), with the scripted cursor as the mouse position.
     mousePos = RaycastScene::ScriptedCursor(frame, p.speed, size);
     screenRay = GetPickRay(mousePos, vec2(0.0f, 0.0f), size, camera.GetViewMatrix(), camera.GetProjectionMatrix());
     screenRay.NormalizeDirection();

@@ -1,6 +1,6 @@
 #pragma once
-// Raycast Demo (book.md 2.0): pick the closest of five primitives (and an OBJ mesh model) under the cursor.
-// Headless, a scripted cursor sweeps the pick ray across the screen (RaycastScene::ScriptedCursor).
+// Raycast Demo (docs/book-reference.md §2.0): pick the closest of five primitives (and an OBJ mesh model) under the
+// cursor. Headless, a scripted cursor sweeps the pick ray across the screen (RaycastScene::ScriptedCursor).
 
 #include <string>
 

@@ -1,6 +1,6 @@
 #pragma once
-// Simple Springs (book.md 2.6): a 50 kg and a 1 kg particle joined by one spring fall onto the ground. The
-// scene (SpringsScene) is GL-free and shared with the tests.
+// Simple Springs (docs/book-reference.md §2.6): a 50 kg and a 1 kg particle joined by one spring fall onto the ground.
+// The scene (SpringsScene) is GL-free and shared with the tests.
 
 #include "Demos/DemoBase.h"
 #include "Demos/Scenes/SpringsScene.h"

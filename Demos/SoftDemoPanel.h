@@ -10,7 +10,7 @@
 #include "Physics/PhysicsSystem.h"
 #include "Physics/StabilityMonitor.h"
 
-/// Light of the chapter 16 demos' Render: (0, 1, 0, 0), straight down (book.md 1.5).
+/// Light of the chapter 16 demos' Render: (0, 1, 0, 0), straight down (docs/book-reference.md §1.5).
 constexpr vec3 kSoftDemoLight{0.0f, 1.0f, 0.0f};
 
 /// The demo panel at (400, 10), 370 wide and 75 high as the book, drawn from the table `params`; one text

@@ -1,7 +1,7 @@
 #include "Physics/Cloth.h"
 
 namespace {
-// Book defaults (book.md 3.7).
+// Book defaults (docs/book-reference.md §3.7).
 constexpr float kDefaultK = -1.0f;
 constexpr float kDefaultB = 0.0f;
 constexpr float kParticleMass = 1.0f;
@@ -44,7 +44,8 @@ void Cloth::Initialize(int gridSize, float distance, const vec3& position) {
     }
     auto at = [&](int x, int z) { return &verts[z * n + x]; };
 
-    // Rest length of every spring = the pair's initial distance (book.md 3.7), same pair order as the book.
+    // Rest length of every spring = the pair's initial distance (docs/book-reference.md §3.7), same pair order as the
+    // book.
     structural.reserve(2 * n * (n - 1));
     for (int x = 0; x < n; ++x)
         for (int z = 0; z < n - 1; ++z) structural.push_back(MakeSpring(at(x, z), at(x, z + 1)));

@@ -1,5 +1,5 @@
 #pragma once
-// N x N grid of particles joined by structural, shear and bend springs (book.md 3.7).
+// N x N grid of particles joined by structural, shear and bend springs (docs/book-reference.md §3.7).
 
 #include <vector>
 

@@ -4,8 +4,8 @@
 //   Book         the book's per-contact impulses (ApplyImpulse: j / contact count, each contact solved on its own,
 //                nothing kept between steps; erratum 5.2-15). The default: every book demo behaves as printed.
 //   Accumulated  sequential impulses with an arbiter (the "proper arbiter system" the book's README lists as
-//                future work, book.md 6): each colliding pair keeps its contacts across steps; per contact a
-//                normal and two tangent impulses are accumulated over the solverIterations passes and the
+//                future work, docs/book-reference.md §6): each colliding pair keeps its contacts across steps; per
+//                contact a normal and two tangent impulses are accumulated over the solverIterations passes and the
 //                running totals are clamped (normal >= 0, friction inside the Coulomb cone mu*jn), not the
 //                increments; impulses are warm-started from the previous step's matched contacts. Stacks stand.
 // docs/ch15.md has the design notes and the measured figures.

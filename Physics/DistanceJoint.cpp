@@ -21,9 +21,9 @@ void DistanceJoint::SolveConstraints(const std::vector<OBB>& constraints) {
     // erratum 5.2-6: the book divides by the distance unguarded; coincident particles gave NaN positions.
     if (distance > kMinAxisLength) {
         // Position projection (PBD distance constraint, Mueller et al. 2007): dx_i = -+ w_i / (w1 + w2) * error * n.
-        // The book (book.md 3.8) uses 1/2 for both ends whatever the masses; for equal masses w1 / w = 1/2 exactly,
-        // so this is the book's correction bit for bit. SetPosition also resets oldPosition, so the following
-        // constraint pass sees a zero-length travelled segment (as the book).
+        // The book (docs/book-reference.md §3.8) uses 1/2 for both ends whatever the masses; for equal masses w1 / w =
+        // 1/2 exactly, so this is the book's correction bit for bit. SetPosition also resets oldPosition, so the
+        // following constraint pass sees a zero-length travelled segment (as the book).
         const float correction = (distance - length) / distance;
         const float share1 = w1 / w, share2 = w2 / w;
         p1->SetPosition(p1->GetPosition() + delta * (share1 * correction));

@@ -1,7 +1,7 @@
 #pragma once
-// Holds two particles at a rest length (book.md 3.8), then re-solves their constraints. The book moves both ends
-// by half of the error and leaves their velocities alone; here the correction is weighted by inverse mass and the
-// relative velocity along the joint is removed, as position-based dynamics does (docs/ERRATA.md, Chapter 16,
+// Holds two particles at a rest length (docs/book-reference.md §3.8), then re-solves their constraints. The book moves
+// both ends by half of the error and leaves their velocities alone; here the correction is weighted by inverse mass and
+// the relative velocity along the joint is removed, as position-based dynamics does (docs/ERRATA.md, Chapter 16,
 // "DistanceJoint without mass or velocity").
 
 #include <vector>

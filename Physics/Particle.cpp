@@ -1,5 +1,5 @@
 // Particle state, the book's single-particle step, and constraint solving against immovable OBBs
-// (book.md 3.2), with the book's failure modes fixed: see docs/ERRATA.md, Chapter 14.
+// (docs/book-reference.md §3.2), with the book's failure modes fixed: see docs/ERRATA.md, Chapter 14.
 #include "Physics/Particle.h"
 
 #include <cfloat>

@@ -1,5 +1,5 @@
 #pragma once
-// A point mass with no volume (book.md 3.2): falls under gravity, bounces off OBB constraints, never
+// A point mass with no volume (docs/book-reference.md §3.2): falls under gravity, bounces off OBB constraints, never
 // tunnels. `velocityRetention` is the book's particle "friction": the fraction of velocity kept per book step
 // (0.03 s), not contact friction (docs/STYLE.md, "Renames in the engine").
 

@@ -19,8 +19,8 @@ void PhysicsSystem::Update(float deltaTime) {
     ctx.invDt = 1.0f / deltaTime;
     ctx.step = stepCount;
 
-    // Book order (book.md 3.4): collisions, forces, impulses, integrate, linear projection, constraints.
-    // Spring forces are evaluated inside particle integration (erratum 5.2-20: a force over the step, not
+    // Book order (docs/book-reference.md §3.4): collisions, forces, impulses, integrate, linear projection,
+    // constraints. Spring forces are evaluated inside particle integration (erratum 5.2-20: a force over the step, not
     // a dt-free impulse after it), so every integrator sees them at its own intermediate states.
     // Volumes step in n equal substeps when one step would carry a volume through another (VolumeSubsteps);
     // n = 1 is the book's single step, with dt passed through unchanged.
@@ -79,7 +79,7 @@ bool ValidateParticle(const Particle& p, std::string* error) {
 }  // namespace
 
 bool PhysicsSystem::AddRigidbody(Rigidbody* body) {
-    // Validate at the boundary (docs/STYLE.md, issue 7 item 4): a degenerate body is refused with a message
+    // Validate at the boundary (docs/STYLE.md): a degenerate body is refused with a message
     // naming the value instead of being simulated into NaN or through the ground.
     if (body == nullptr) {
         lastError = "AddRigidbody: refused a null body";

@@ -1,5 +1,6 @@
 #pragma once
-// The world: bodies, constraints (immovable OBBs), springs, cloths; one fixed step at a time (book.md 3.4).
+// The world: bodies, constraints (immovable OBBs), springs, cloths; one fixed step at a time
+// (docs/book-reference.md §3.4).
 //
 // Model only what the scene requires: bodies are sorted by kind when added, and each stage of Update runs
 // only over the kinds present. A particle-only scene does no pair tests, impulses or spring work; a scene

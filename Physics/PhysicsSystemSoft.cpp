@@ -5,8 +5,8 @@
 #include "Physics/Spring.h"
 
 void PhysicsSystem::AccumulateSpringForces() {
-    // Book order (book.md 3.4 step 6): system springs, then each cloth's structural, shear, bend springs.
-    // The force is evaluated at the current (possibly intermediate) particle state; erratum 5.2-20.
+    // Book order (docs/book-reference.md §3.4 step 6): system springs, then each cloth's structural, shear, bend
+    // springs. The force is evaluated at the current (possibly intermediate) particle state; erratum 5.2-20.
     for (Spring& spring : springs) spring.ApplyForce(0.0f);
     for (Cloth* cloth : cloths) {
         for (Spring& spring : cloth->structural) spring.ApplyForce(0.0f);

@@ -1,5 +1,5 @@
-// Rigid-volume stages of PhysicsSystem::Update (book.md 3.4 steps 1-5): pair search with manifolds, forces,
-// settings.solverIterations passes of ApplyImpulse over every contact, integration, linear projection.
+// Rigid-volume stages of PhysicsSystem::Update (docs/book-reference.md §3.4 steps 1-5): pair search with manifolds,
+// forces, settings.solverIterations passes of ApplyImpulse over every contact, integration, linear projection.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -86,7 +86,7 @@ void PhysicsSystem::ApplyImpulses(const StepContext& ctx) {
 int PhysicsSystem::VolumeSubsteps(float dt) {
     // Volumes have no continuous collision: contacts are found at the start of a step, so a body that moves
     // further than its own half extent plus the other's in one step passes a slab's mid plane, and the manifold
-    // then pushes it out of the far side (a 0.5 s step drops a resting box 1.2 m; issue 7 item 4). Per dynamic
+    // then pushes it out of the far side (a 0.5 s step drops a resting box 1.2 m). Per dynamic
     // volume, the travel bound |v| dt + |g| dt^2 / 2 is compared with its own half extent plus the thinnest half
     // extent in the world (the thinnest thing it could meet); n keeps every substep's travel within
     // settings.substepTravelFraction of that sum. Spin is not counted. One pass over the volumes; n = 1 at the book's
@@ -118,8 +118,8 @@ void PhysicsSystem::IntegrateVolumes(const StepContext& ctx) {
 }
 
 void PhysicsSystem::ApplyLinearProjection(const StepContext& ctx) {
-    // Positional correction (book.md 3.4 step 5) with the manifolds found before integration. Depth is the
-    // full penetration for every pair type (CollisionManifold::depth).
+    // Positional correction (docs/book-reference.md §3.4 step 5) with the manifolds found before integration. Depth is
+    // the full penetration for every pair type (CollisionManifold::depth).
     for (std::size_t i = 0; i < resultCount; ++i) {
         RigidbodyVolume& a = *results[i].a;
         RigidbodyVolume& b = *results[i].b;

@@ -1,5 +1,5 @@
 #pragma once
-// Base of every simulated object (book.md 3.1). The book's type ids are kept as the enum's values.
+// Base of every simulated object (docs/book-reference.md §3.1). The book's type ids are kept as the enum's values.
 // Physics never draws: demos hand its state to the rendering layer.
 
 #include <vector>

@@ -50,9 +50,9 @@ float RigidbodyVolume::StepVelocityEpsilon(float dt) const {
 }
 
 void RigidbodyVolume::IntegrateVelocity(float dt) {
-    // Book order (book.md 3.3): accelerate, damp, zero tiny components. The book's damping (0.98) and threshold
-    // (0.001 m/s) are per step of its 0.03 s; applied per step at tiny dt they stop free motion: at dt = 1e-5 the
-    // threshold exceeds g dt and zeroes a body released from rest every step (it hangs in the air), and 0.98 per
+    // Book order (docs/book-reference.md §3.3): accelerate, damp, zero tiny components. The book's damping (0.98) and
+    // threshold (0.001 m/s) are per step of its 0.03 s; applied per step at tiny dt they stop free motion: at dt = 1e-5
+    // the threshold exceeds g dt and zeroes a body released from rest every step (it hangs in the air), and 0.98 per
     // step caps free fall at 49 g dt = 5 mm/s. At any step other than referenceStep (0.03 s) both are converted
     // to the same per-second rates; at it they are the book's values bit for bit (docs/ch15.md, "Extremes").
     const float stepDamping = StepRetention(dt);
@@ -253,8 +253,8 @@ void ApplyImpulse(RigidbodyVolume& A, RigidbodyVolume& B, const CollisionManifol
     const mat3 iB = B.InvTensor();
     const float contactCount = static_cast<float>(M.contacts.size());
 
-    // Normal impulse (book.md 3.3 step 4): restitution is the smaller cor; the impulse is shared between the
-    // contacts of the manifold (j / count), each solved on its own (erratum 5.2-15 is the book's design).
+    // Normal impulse (docs/book-reference.md §3.3 step 4): restitution is the smaller cor; the impulse is shared
+    // between the contacts of the manifold (j / count), each solved on its own (erratum 5.2-15 is the book's design).
     vec3 vr = RelativeVelocity(A, B, rA, rB);
     const vec3 n = Normalized(M.normal);
     const float vn = Dot(vr, n);

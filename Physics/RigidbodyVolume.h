@@ -1,5 +1,5 @@
 #pragma once
-// A rigid sphere or box (book.md 3.3) with linear and angular state. Orientation is a unit quaternion
+// A rigid sphere or box (docs/book-reference.md §3.3) with linear and angular state. Orientation is a unit quaternion
 // integrated from angular velocity (erratum 5.2-12: the book adds angular velocity to Euler angles); the
 // inverse inertia tensor is rotated into world space, R^T I^-1 R in row-vector form (erratum 5.2-11).
 
@@ -99,7 +99,7 @@ bool ValidateVolume(const RigidbodyVolume& body, std::string* error);
 CollisionManifold FindCollisionFeatures(RigidbodyVolume& ra, RigidbodyVolume& rb);
 /// Allocation-free form: overwrites *out, reusing its contact storage.
 void FindCollisionFeatures(RigidbodyVolume& ra, RigidbodyVolume& rb, CollisionManifold* out);
-/// Normal and Coulomb friction impulse for contact c of manifold M (book.md 3.3, errata 5.2-14 fixed).
+/// Normal and Coulomb friction impulse for contact c of manifold M (docs/book-reference.md §3.3, errata 5.2-14 fixed).
 /// Velocities change in place; a pair of static bodies or a separating contact is left alone.
 void ApplyImpulse(RigidbodyVolume& A, RigidbodyVolume& B, const CollisionManifold& M, int c);
 

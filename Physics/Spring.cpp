@@ -30,8 +30,8 @@ void Spring::ApplyForce(float /*dt*/) {
     const vec3 axis = relPos * (1.0f / length);  // from p1 to p2
     const vec3 relVel = p2->GetVelocity() - p1->GetVelocity();
 
-    // Hooke with the book's sign (book.md 3.6): F = -k*x along the axis pulls p1 toward p2 when k < 0 and
-    // the spring is stretched. erratum 5.2-20: damping uses the velocity ALONG the axis (separation rate),
+    // Hooke with the book's sign (docs/book-reference.md §3.6): F = -k*x along the axis pulls p1 toward p2 when k < 0
+    // and the spring is stretched. erratum 5.2-20: damping uses the velocity ALONG the axis (separation rate),
     // +b*dot(relVel, axis), so it opposes both approach and separation; the book's -b*|relVel| always
     // repelled. The result is a force (N) integrated over the step, not a dt-free velocity change.
     const float stretch = length - restingLength;

@@ -1,5 +1,5 @@
 #pragma once
-// Hooke spring with damping between two particles (book.md 3.6). The book's sign convention stays:
+// Hooke spring with damping between two particles (docs/book-reference.md §3.6). The book's sign convention stays:
 // k runs from -5 to 0 and a negative k attracts. Damping acts along the spring axis (erratum 5.2-20).
 //
 // Units: here k is a force constant (N/m, |k| is the physical stiffness) and b a damping coefficient

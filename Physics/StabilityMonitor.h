@@ -1,5 +1,5 @@
 #pragma once
-// Blow-up detection for particle, spring and cloth systems (issue 6): after each step, Check() looks for a
+// Blow-up detection for particle, spring and cloth systems: after each step, Check() looks for a
 // non-finite position or velocity, a particle faster than a limit, or mechanical energy that has grown far
 // beyond what the start state holds. The first failure is frozen in a report naming the step and the body,
 // so a stiff setting is reported instead of rendered as garbage. It only reads the PhysicsSystem.

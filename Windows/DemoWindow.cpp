@@ -11,7 +11,7 @@
 #include "Demos/ParameterPanel.h"
 
 namespace {
-/// The three chapter buttons of the default mode (book.md 1.7).
+/// The three chapter buttons of the default mode (docs/book-reference.md §1.7).
 struct ChapterButton {
     const char* id;
     const char* runLabel;  // leading space, as the book

@@ -1,5 +1,5 @@
 #pragma once
-// The application window (book.md 1.1 DemoWindow): the "Physics Demo" panel, the current demo and its
+// The application window (docs/book-reference.md §1.1 DemoWindow): the "Physics Demo" panel, the current demo and its
 // camera. The host (Platform/) owns the GL context, the ImGui context and backend, and the frame loop; it
 // calls the hooks below with the context current, and OnUpdate inside an ImGui frame when the UI is visible.
 
@@ -56,6 +56,6 @@ private:
     std::string demoId;
     bool uiVisible = true;
     bool selectAll = false;
-    float nominalFrameMs = 16.0f;  // the book's frame limiter: 1000 / 60 in integer ms (book.md 1.2)
+    float nominalFrameMs = 16.0f;  // the book's frame limiter: 1000 / 60 in integer ms (docs/book-reference.md §1.2)
     vec2 prevMousePos;
 };

@@ -11,7 +11,7 @@ unsigned Bit(MouseButton b) { return 1u << (static_cast<int>(b) - 1); }
 GLWindow::GLWindow(const std::string& windowTitle, int w, int h) : IWindow(windowTitle, w, h) {}
 
 void GLWindow::OnInitialize() {
-    glClearColor(0.5f, 0.6f, 0.7f, 1.0f);  // RGB (128, 153, 178), book.md 1.3
+    glClearColor(0.5f, 0.6f, 0.7f, 1.0f);  // RGB (128, 153, 178), docs/book-reference.md §1.3
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);  // GL defaults: cull back faces, CCW is front
     OnResize(width, height);

@@ -1,5 +1,5 @@
 #pragma once
-// IWindow with the book's basic OpenGL state and input bookkeeping (book.md 1.1, 1.3). Needs a current
+// IWindow with the book's basic OpenGL state and input bookkeeping (docs/book-reference.md §1.1, §1.3). Needs a current
 // OpenGL 2.1 context (loaded through GLAD) for OnInitialize, OnRender, OnResize and the SetGL* helpers.
 
 #include <array>

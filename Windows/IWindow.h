@@ -1,6 +1,6 @@
 #pragma once
-// Abstract application window (book.md 1.1 IWindow): event hooks a platform loop calls, plus the window's
-// state. Instance-based: the book's pseudo-singleton (a global set in the constructor, a second instance
+// Abstract application window (docs/book-reference.md §1.1 IWindow): event hooks a platform loop calls, plus the
+// window's state. Instance-based: the book's pseudo-singleton (a global set in the constructor, a second instance
 // quitting) is dropped; whoever runs the loop owns the window object. GL-free.
 
 #include <string>

@@ -1,4 +1,4 @@
-# psb-micro-bench (issue 7): Google Benchmark microbenchmarks of the hot functions (raycasts, line tests,
+# psb-micro-bench: Google Benchmark microbenchmarks of the hot functions (raycasts, line tests,
 # manifolds, ApplyImpulse, integrator steps, spring force). Skipped with a message if benchmark is missing.
 find_package(benchmark QUIET)
 if(benchmark_FOUND)

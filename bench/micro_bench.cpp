@@ -1,4 +1,4 @@
-// Microbenchmarks of the hot functions (issue 7 item 6), so a regression shows per function: raycasts,
+// Microbenchmarks of the hot functions, so a regression shows per function: raycasts,
 // line tests, manifolds per pair type, ApplyImpulse, one integrator step per integrator, spring force.
 // Inputs are fixed (seeded where random), outputs go through benchmark::DoNotOptimize.
 #include <benchmark/benchmark.h>

@@ -1,4 +1,4 @@
-# psb-model-cost (issue 7 item 5): each demo scene's step as built and with an unused subsystem present.
+# psb-model-cost: each demo scene's step as built and with an unused subsystem present.
 find_package(benchmark QUIET)
 if(benchmark_FOUND)
   add_executable(psb-model-cost ${CMAKE_CURRENT_LIST_DIR}/model_cost_bench.cpp)

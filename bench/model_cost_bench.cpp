@@ -1,4 +1,4 @@
-// Model only what the scene requires, measured (issue 7 item 5). Each demo scene's step is timed as built, and
+// Model only what the scene requires, measured. Each demo scene's step is timed as built, and
 // again with an unused subsystem present: an empty cloth registered, a static volume far away (the volume
 // stage then runs), or the sweep-and-prune broadphase forced on for a two-box scene. If PhysicsSystem's stages
 // really run only over the kinds present, each pair of numbers is equal within noise, except where the added

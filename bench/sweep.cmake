@@ -1,4 +1,4 @@
-# psb-sweep (issue 7): reference problems x settings -> CSV (docs/sweep.md). Links the GL-free layers only.
+# psb-sweep: reference problems x settings -> CSV (docs/sweep.md). Links the GL-free layers only.
 add_executable(psb-sweep ${CMAKE_CURRENT_LIST_DIR}/sweep/SweepMain.cpp ${CMAKE_CURRENT_LIST_DIR}/sweep/Sweep.cpp
                          ${CMAKE_CURRENT_LIST_DIR}/sweep/ProblemsParticle.cpp
                          ${CMAKE_CURRENT_LIST_DIR}/sweep/ProblemsRigid.cpp

@@ -5,7 +5,8 @@
 #include "Application/Render/FixedFunctionPrimitives.h"
 #include "Physics/DistanceJoint.h"
 
-// The book's Render() methods of the physics classes (book.md 3.2-3.8), drawn from read-only physics state.
+// The book's Render() methods of the physics classes (docs/book-reference.md §3.2-3.8), drawn from read-only physics
+// state.
 
 namespace {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Drawing of physics state (the book's PhysicsSystem::Render, Particle::Render, Cloth::Render ...), moved
-// out of Physics/ so that physics never includes GL. Colour table of book.md 1.5.
+// out of Physics/ so that physics never includes GL. Colour table of docs/book-reference.md §1.5.
 
 #include "Physics/Cloth.h"
 #include "Physics/DistanceJoint.h"
@@ -8,7 +8,7 @@
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
 
-/// Book colours (book.md 1.5), as light ambient/diffuse.
+/// Book colours (docs/book-reference.md §1.5), as light ambient/diffuse.
 namespace BookColors {
 constexpr vec3 kRigidbodyDiffuse{200.0f / 255.0f, 0.0f, 0.0f};
 constexpr vec3 kRigidbodyAmbient{200.0f / 255.0f, 50.0f / 255.0f, 50.0f / 255.0f};
@@ -27,6 +27,6 @@ void Render(const RigidbodyVolume& body);
 void Render(const DistanceJoint& joint);
 /// debug: particles and magenta/yellow/cyan spring lines; otherwise red one-sided triangles.
 void Render(const Cloth& cloth, bool debug);
-/// The book's PhysicsSystem::Render (book.md 3.4): bodies (random colours if RenderRandomColors), constraint 0
-/// blue and the rest green, manifolds if DebugRender, spring lines, cloths.
+/// The book's PhysicsSystem::Render (docs/book-reference.md §3.4): bodies (random colours if RenderRandomColors),
+/// constraint 0 blue and the rest green, manifolds if DebugRender, spring lines, cloths.
 void Render(const PhysicsSystem& system);

@@ -5,7 +5,7 @@
 #include "Application/View/Tessellation.h"
 
 // Everything here is OpenGL 2.1 immediate mode on the current context. Colours of lit geometry come from
-// GL_LIGHT0's ambient/diffuse (book.md 1.5); glColor only matters for the unlit debug drawing.
+// GL_LIGHT0's ambient/diffuse (docs/book-reference.md §1.5); glColor only matters for the unlit debug drawing.
 
 namespace {
 
@@ -64,8 +64,9 @@ void Render(const AABB& aabb) {
 }
 
 void Render(const OBB& obb) {
-    // Row-vector world matrix (book.md 0); its row-major array is the column-major matrix GL expects.
-    // The scale goes through the matrix, so face normals get length 1/size (no GL_NORMALIZE, book.md 1.5).
+    // Row-vector world matrix (docs/book-reference.md §0); its row-major array is the column-major matrix GL expects.
+    // The scale goes through the matrix, so face normals get length 1/size (no GL_NORMALIZE,
+    // docs/book-reference.md §1.5).
     const mat4 world = Scale(obb.size) * FromMat3(obb.orientation) * Translation(obb.position);
     glPushMatrix();
     glMultMatrixf(world.asArray);

@@ -1,6 +1,7 @@
 #pragma once
-// Fixed-function (OpenGL 2.1 immediate mode) drawing of the primitives, book.md 1.6. The only layer besides
-// Platform/ and Windows/ that includes GL. Colours come from the light (book.md 1.5), not glColor.
+// Fixed-function (OpenGL 2.1 immediate mode) drawing of the primitives, docs/book-reference.md §1.6. The only layer
+// besides Platform/ and Windows/ that includes GL. Colours come from the light (docs/book-reference.md §1.5), not
+// glColor.
 
 #include <array>
 #include <vector>

@@ -1,4 +1,4 @@
-// Camera and OrbitCamera (book.md 1.4). Matrices only; the drawing layer loads them into GL.
+// Camera and OrbitCamera (docs/book-reference.md §1.4). Matrices only; the drawing layer loads them into GL.
 #include "Application/View/Camera.h"
 
 #include <cmath>

@@ -1,5 +1,5 @@
 #pragma once
-// Camera and OrbitCamera (book.md 1.4). GL-free: they only produce matrices.
+// Camera and OrbitCamera (docs/book-reference.md §1.4). GL-free: they only produce matrices.
 
 #include "Math/matrices.h"
 #include "Math/vectors.h"

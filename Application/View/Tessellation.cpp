@@ -4,7 +4,8 @@
 
 namespace {
 
-// Icosahedron constants (book.md 1.6): the 12 vertices are the cyclic permutations of (0, ±X, ±Z), unit length.
+// Icosahedron constants (docs/book-reference.md §1.6): the 12 vertices are the cyclic permutations of (0, ±X, ±Z), unit
+// length.
 constexpr float kIcoX = 0.525731112119133606f;
 constexpr float kIcoZ = 0.850650808352039932f;
 

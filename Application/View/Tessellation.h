@@ -1,11 +1,11 @@
 #pragma once
-// GL-free triangle generators for the fixed-function drawing layer (book.md 1.6): the icosphere, the cube
-// and the plane quad. FixedFunctionPrimitives.cpp only feeds these lists to OpenGL, so counts, normals and
-// winding are unit-tested without a GPU stack.
+// GL-free triangle generators for the fixed-function drawing layer (docs/book-reference.md §1.6): the icosphere, the
+// cube and the plane quad. FixedFunctionPrimitives.cpp only feeds these lists to OpenGL, so counts, normals and winding
+// are unit-tested without a GPU stack.
 //
 // Winding convention (left-handed view, GL's default CCW front faces): a front face seen from outside is
 // CCW on screen, which for the world-space vertices means Cross(c - a, b - a) points OUTWARD (the book's
-// one-sided triangle normal (a - c) x (a - b), book.md 1.6).
+// one-sided triangle normal (a - c) x (a - b), docs/book-reference.md §1.6).
 
 #include <array>
 #include <vector>

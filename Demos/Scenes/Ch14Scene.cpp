@@ -7,7 +7,7 @@
 Ch14Scene::Ch14Scene(const Ch14Params& p) { Reset(p); }
 
 std::array<OBB, 4> Ch14Scene::Constraints() {
-    // book.md 2.1: positions, Rotation3x3(pitch, yaw, roll) in degrees, half-sizes.
+    // docs/book-reference.md §2.1: positions, Rotation3x3(pitch, yaw, roll) in degrees, half-sizes.
     OBB ground(vec3(0.0f, 0.0f, 0.0f), vec3(10.0f, 0.15f, 10.0f));
     OBB obb1(vec3(0.0f, 1.86f, -1.92f), vec3(2.0f, 0.15f, 2.0f), Rotation3x3(30.716f, 0.0f, 0.0f));
     OBB obb2(vec3(-1.0f, 3.6f, 1.2f), vec3(2.0f, 0.15f, 2.0f), Rotation3x3(-33.964f, -24.233f, 9.128f));

@@ -1,6 +1,6 @@
 #pragma once
-// Chapter 14 (book.md 2.1): particles spawned with the book's random sequence fall onto a ground box and
-// three tilted boards. GL-free; shared by CH14Demo, the tests and bench/particles_bench.cpp.
+// Chapter 14 (docs/book-reference.md §2.1): particles spawned with the book's random sequence fall onto a ground box
+// and three tilted boards. GL-free; shared by CH14Demo, the tests and bench/particles_bench.cpp.
 
 #include <array>
 #include <cstdint>
@@ -23,7 +23,7 @@ struct Ch14Params {
 
 class Ch14Scene {
 public:
-    /// Spawn box centre and half-size (book.md 2.1).
+    /// Spawn box centre and half-size (docs/book-reference.md §2.1).
     static constexpr vec3 kSpawnCenter{-0.5f, 6.5f, -1.01f};
     static constexpr vec3 kSpawnHalfSize{3.8505f, 2.0f, 4.034834f};
 

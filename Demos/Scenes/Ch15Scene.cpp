@@ -6,7 +6,7 @@ void Ch15Scene::Reset() {
     system = std::make_unique<PhysicsSystem>();
     bodies.assign(3, RigidbodyVolume(RigidbodyType::Box));
 
-    // book.md 2.5: cor 0.5 and friction 0.6 are the defaults; all three are synced at reset.
+    // docs/book-reference.md §2.5: cor 0.5 and friction 0.6 are the defaults; all three are synced at reset.
     RigidbodyVolume& tilted = bodies[0];
     tilted.position = vec3(0.5f, 6.0f, 0.0f);
     tilted.SetEulerOrientation(vec3(0.0f, 0.0f, 0.4f));  // radians: roll ~22.92 degrees

@@ -1,6 +1,6 @@
 #pragma once
-// Chapter 15 (book.md 2.5): a tilted unit box (mass 1) falls onto a unit box (mass 5) resting on a static
-// ground slab. GL-free; shared by CH15Demo, the tests and the benchmarks.
+// Chapter 15 (docs/book-reference.md §2.5): a tilted unit box (mass 1) falls onto a unit box (mass 5) resting on a
+// static ground slab. GL-free; shared by CH15Demo, the tests and the benchmarks.
 
 #include <memory>
 #include <vector>

@@ -9,7 +9,7 @@ Ch16Scene::Ch16Scene(const Ch16Params& p) { Reset(p); }
 OBB Ch16Scene::Ground() { return OBB(vec3(0.0f, 0.0f, 0.0f), vec3(10.0f, 0.1f, 10.0f)); }
 
 const std::array<vec3, 4>& Ch16Scene::PostPositions() {
-    // Book.md 2.7: two posts at height 2.4 and two at 2.3, at (+-0.5, +-0.5).
+    // docs/book-reference.md §2.7: two posts at height 2.4 and two at 2.3, at (+-0.5, +-0.5).
     static const std::array<vec3, 4> posts = {vec3(0.5f, 2.4f, 0.5f), vec3(-0.5f, 2.3f, 0.5f), vec3(-0.5f, 2.4f, -0.5f),
                                               vec3(0.5f, 2.3f, -0.5f)};
     return posts;

@@ -1,5 +1,5 @@
 #pragma once
-// Chapter 16 (book.md 2.7): an N x N cloth dropped from height 6 onto four posts over a ground box.
+// Chapter 16 (docs/book-reference.md §2.7): an N x N cloth dropped from height 6 onto four posts over a ground box.
 // GL-free; shared by CH16Demo, the tests and the cloth benchmark.
 
 #include <array>
@@ -28,7 +28,7 @@ struct Ch16Params {
 class Ch16Scene {
 public:
     static constexpr float kClothHeight = 6.0f;
-    /// Posts collide with this half-size (book.md 2.7) ...
+    /// Posts collide with this half-size (docs/book-reference.md §2.7) ...
     static constexpr float kPostCollisionHalf = 0.3f;
     /// ... but are drawn with this one, as the book does.
     static constexpr float kPostDrawHalf = 0.1f;

@@ -1,5 +1,5 @@
 #pragma once
-// Collision Features / "SAT Test Demo" scene (book.md 2.2): two boxes and two spheres, the six pair
+// Collision Features / "SAT Test Demo" scene (docs/book-reference.md §2.2): two boxes and two spheres, the six pair
 // manifolds the book computes every frame, and a scripted motion that brings the shapes together so contacts
 // appear (headless stand-in for dragging them with the gizmo). GL-free; shared by CollisionFeature and tests.
 

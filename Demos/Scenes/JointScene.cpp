@@ -5,7 +5,7 @@
 JointScene::JointScene(const JointParams& p, MsvcRand* r) : rng(r != nullptr ? r : &ownRng) { Reset(p); }
 
 std::vector<OBB> JointScene::Constraints() {
-    // Book.md 2.1 (CH14), in order; constraint 0 is the ground.
+    // docs/book-reference.md §2.1 (CH14), in order; constraint 0 is the ground.
     return {
         OBB(vec3(0.0f, 0.0f, 0.0f), vec3(10.0f, 0.15f, 10.0f)),
         OBB(vec3(0.0f, 1.86f, -1.92f), vec3(2.0f, 0.15f, 2.0f), Rotation3x3(30.716f, 0.0f, 0.0f)),
@@ -36,7 +36,8 @@ void JointScene::Build() {
     if (createCount % 2 != 0) createCount += 1;
     const int numJoints = createCount / 2;
 
-    // Random calls per particle, in order: x, y, z, bounce (book.md 2.1); joint lengths after all of them.
+    // Random calls per particle, in order: x, y, z, bounce (docs/book-reference.md §2.1); joint lengths after all of
+    // them.
     const vec3 lo = SpawnCenter() - SpawnHalfSize();
     const vec3 hi = SpawnCenter() + SpawnHalfSize();
     particles.assign(createCount, Particle());  // never resized again: joints and the system point in

@@ -1,5 +1,5 @@
 #pragma once
-// Joint Demo (book.md 2.8): CH14's particles and ramps, with particle i and i + n/2 held apart by a
+// Joint Demo (docs/book-reference.md §2.8): CH14's particles and ramps, with particle i and i + n/2 held apart by a
 // distance joint. GL-free; shared by JointDemo, the tests and the benchmarks.
 
 #include <memory>
@@ -47,7 +47,7 @@ public:
     const std::vector<DistanceJoint>& Joints() const { return joints; }
     const StabilityMonitor& Monitor() const { return monitor; }
 
-    /// The four CH14 constraints in order (ground, obb1, obb2, obb3), book.md 2.1.
+    /// The four CH14 constraints in order (ground, obb1, obb2, obb3), docs/book-reference.md §2.1.
     static std::vector<OBB> Constraints();
     /// CH14's spawn box: centre (-0.5, 6.5, -1.01), half-size (3.8505, 2, 4.034834).
     static vec3 SpawnCenter() { return vec3(-0.5f, 6.5f, -1.01f); }

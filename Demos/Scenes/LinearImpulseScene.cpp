@@ -9,8 +9,8 @@ void LinearImpulseScene::Reset() {
     const RigidbodyType kind = params.spheres ? RigidbodyType::Sphere : RigidbodyType::Box;
     bodies.assign(3, RigidbodyVolume(kind));
 
-    // book.md 2.3: defaults everywhere (mass 1, radius 1, half-size 1). AddVelocityChange (the book's AddLinearImpulse)
-    // adds to velocity.
+    // docs/book-reference.md §2.3: defaults everywhere (mass 1, radius 1, half-size 1). AddVelocityChange (the book's
+    // AddLinearImpulse) adds to velocity.
     if (!params.drop) {
         bodies[0].position = vec3(-10.0f, 1.5f, -5.0f);
         bodies[1].position = vec3(5.0f, 1.5f, 2.5f);

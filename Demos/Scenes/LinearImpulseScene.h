@@ -1,6 +1,6 @@
 #pragma once
-// Linear Impulse (book.md 2.3): two spheres or two boxes thrown at each other (or dropped onto each other)
-// above a static ground slab, with the demo's pause / single-step controls. GL-free; shared by LinearImpulse,
+// Linear Impulse (docs/book-reference.md §2.3): two spheres or two boxes thrown at each other (or dropped onto each
+// other) above a static ground slab, with the demo's pause / single-step controls. GL-free; shared by LinearImpulse,
 // the tests and the benchmarks.
 
 #include <memory>

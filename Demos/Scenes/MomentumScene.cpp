@@ -8,8 +8,8 @@ void MomentumScene::Reset() {
     system->settings.solverIterations = 20;
     bodies.assign(kSpheres + 1, RigidbodyVolume(RigidbodyType::Sphere));
 
-    // book.md 2.4: x = i * 2.00002 for i = 0..3 and 4 * 3.00003 for the last; y = 1.16 puts the bottoms 0.01
-    // above the ground top (0.15).
+    // docs/book-reference.md §2.4: x = i * 2.00002 for i = 0..3 and 4 * 3.00003 for the last; y = 1.16 puts the bottoms
+    // 0.01 above the ground top (0.15).
     for (int i = 0; i < kSpheres; ++i) {
         RigidbodyVolume& s = bodies[i];
         const float spacing = (1.0f + 0.00001f) * (i < kSpheres - 1 ? 2.0f : 3.0f);

@@ -1,6 +1,6 @@
 #pragma once
-// Conservation Of Momentum (book.md 2.4): four unit spheres in a row on the ground and a fifth sent at them
-// at 20 m/s. GL-free; shared by ConservationOfMomentum, the tests and the benchmarks.
+// Conservation Of Momentum (docs/book-reference.md §2.4): four unit spheres in a row on the ground and a fifth sent at
+// them at 20 m/s. GL-free; shared by ConservationOfMomentum, the tests and the benchmarks.
 
 #include <memory>
 #include <vector>

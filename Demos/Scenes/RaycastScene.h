@@ -1,6 +1,6 @@
 #pragma once
-// Raycast Demo scene (book.md 2.0): five primitives, plus an OBJ mesh model raycast through its BVH, and the
-// scripted cursor that stands in for the mouse in headless runs. GL-free; shared by RaycastDemo and tests.
+// Raycast Demo scene (docs/book-reference.md §2.0): five primitives, plus an OBJ mesh model raycast through its BVH,
+// and the scripted cursor that stands in for the mouse in headless runs. GL-free; shared by RaycastDemo and tests.
 
 #include <string>
 

@@ -22,7 +22,7 @@ void SpringsScene::Build() {
     system->settings.integrator = params.integrator;
     system->AddConstraint(Ground());
 
-    // Book.md 2.6: p0 at (0,6,0) with mass 50, p1 at (2,6,0) with mass 1; bounce/friction stay default.
+    // docs/book-reference.md §2.6: p0 at (0,6,0) with mass 50, p1 at (2,6,0) with mass 1; bounce/friction stay default.
     particles.assign(2, Particle());
     particles[0].SetPosition(vec3(0.0f, 6.0f, 0.0f));
     particles[0].SetMass(kHeavyMass);

@@ -1,5 +1,5 @@
 #pragma once
-// Simple Springs (book.md 2.6): a heavy particle (50 kg) and a light one (1 kg) joined by one spring,
+// Simple Springs (docs/book-reference.md §2.6): a heavy particle (50 kg) and a light one (1 kg) joined by one spring,
 // falling onto the ground. GL-free; shared by the SimpleSprings demo, the tests and the benchmarks.
 
 #include <memory>

@@ -1,5 +1,5 @@
 // Segment tests: does the closed segment [start, end] touch the (closed, solid) shape? (book ch. 10,
-// book.md 4.2). Boxes and spheres are solids: a segment wholly inside touches them.
+// docs/book-reference.md §4.2). Boxes and spheres are solids: a segment wholly inside touches them.
 #include <cmath>
 
 #include "Math/Compare.h"

@@ -1,4 +1,4 @@
-// Screen-to-world picking (book ch. 14 "Unproject" / "GetPickRay", book.md 4.2). Row-vector convention:
+// Screen-to-world picking (book ch. 14 "Unproject" / "GetPickRay", docs/book-reference.md §4.2). Row-vector convention:
 // clip = world * view * projection, so a clip point goes back through Inverse(projection), then
 // Inverse(view).
 #include <cmath>

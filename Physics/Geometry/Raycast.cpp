@@ -1,4 +1,4 @@
-// Raycasts against the primitive shapes (book ch. 10, updated to RaycastResult in ch. 14; book.md 4.2).
+// Raycasts against the primitive shapes (book ch. 10, updated to RaycastResult in ch. 14; docs/book-reference.md §4.2).
 // Every function returns whether the ray hits; outResult (optional) receives the world-space hit point,
 // a unit normal and the distance t >= 0 along the (unit) ray direction. A zero ray direction never hits.
 #include <cfloat>

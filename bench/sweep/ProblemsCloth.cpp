@@ -63,7 +63,7 @@ double RmsDistance(const std::vector<vec3>& a, const std::vector<vec3>& b) {
 }
 
 /// param = the book's k (velocity change per 0.03 s step per metre; -3 in the demo). The StabilityMonitor of
-/// the scene (issue 6) decides "unstable"; its report goes in the note.
+/// the scene decides "unstable"; its report goes in the note.
 Outcome RunCloth(const Settings& s) {
     const long long n = StepsFor(kSeconds, s.dt);
     const std::vector<vec3>& reference = Reference(s.param, double(n) * s.dt);  // before the timer

@@ -198,7 +198,7 @@ Outcome RunSpringEnergy(const Settings& s) {
 
 Outcome RunSpringStiffness(const Settings& s) {
     // Stiffness K = param N/m, undamped, 1 s: state error |(u, v/omega) - exact| / amplitude. Drives the
-    // stability map; the StabilityMonitor (issue 6) decides "unstable" and its report goes in the note.
+    // stability map; the StabilityMonitor decides "unstable" and its report goes in the note.
     Oscillator osc(s.integrator, s.param, 0.0);
     StabilityMonitor monitor;
     monitor.Start(osc.world);

@@ -1,6 +1,6 @@
 #pragma once
 // psb-sweep: reference problems with exact (or converged) answers, each run over the settings that matter to
-// it, one CSV row per run (issue 7). A problem builds its world directly on the Physics API, steps it, and
+// it, one CSV row per run. A problem builds its world directly on the Physics API, steps it, and
 // reports one error number, whether the state stayed finite and bounded, and the CPU time of the stepping
 // alone (setup, references and error evaluation are not timed).
 

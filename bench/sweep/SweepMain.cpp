@@ -1,4 +1,4 @@
-// psb-sweep: runs the reference problems over their settings and writes one CSV row per run (issue 7).
+// psb-sweep: runs the reference problems over their settings and writes one CSV row per run.
 // Exit codes: 0 done, 2 bad command line, 3 the output file could not be written (the message names the path and
 // the system error; the file is written whole through a temporary, never left cut mid-row: docs/sweep.md).
 #include <algorithm>

@@ -24,7 +24,7 @@ std::string AnyDemo() {
     const std::string id = AnyDemo(); \
     ASSERT_FALSE(id.empty()) << "no demo registered in DemoRegistry (--list printed nothing)"
 
-// The nine demos of the book's app (book.md 1.7).
+// The nine demos of the book's app (docs/book-reference.md §1.7).
 const std::vector<std::string> kBookDemoIds = {
     "raycast", "ch14", "collision-features", "linear-impulse", "momentum", "ch15", "springs", "ch16", "joints"};
 

@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kRefWidth = 795, kRefHeight = 593;
-const int kBackground[3] = {128, 153, 178};  // clear colour (0.5, 0.6, 0.7), book.md 1.3
+const int kBackground[3] = {128, 153, 178};  // clear colour (0.5, 0.6, 0.7), docs/book-reference.md §1.3
 
 struct Rect {
     int x0, y0, x1, y1;  // inclusive-exclusive
@@ -35,7 +35,7 @@ const Reference kReferences[] = {
 };
 
 std::string ReferenceDir() {
-    // ../shared/reference beside the repository.
+    // The captures of the book's demo are not part of the repository; they are looked for beside it.
     return (fs::path(PSB_SOURCE_DIR).parent_path() / "shared" / "reference").string();
 }
 
@@ -71,7 +71,7 @@ void MeanColour(const Image& img, const Rect& r, double out[3]) {
 }
 
 struct PanelEdges {
-    int mainLeft, mainRight, mainBottom;  // "Physics Demo" at (10,10), 370 wide (book.md 1.7)
+    int mainLeft, mainRight, mainBottom;  // "Physics Demo" at (10,10), 370 wide (docs/book-reference.md §1.7)
     int demoLeft, demoRight, demoBottom;  // the demo's panel at (400,10), 370 wide
 };
 
@@ -136,7 +136,7 @@ TEST_P(FirstFrameLayout, MatchesTheBookReference) {
         EXPECT_NEAR(bookSky[c], kBackground[c], 3.0) << "reference sky channel " << c;
         EXPECT_NEAR(ourSky[c], kBackground[c], 1.0) << "our sky channel " << c;
     }
-    // Ground: same lit colour (book.md 1.5: saturated top faces), within GIF quantisation.
+    // Ground: same lit colour (docs/book-reference.md §1.5: saturated top faces), within GIF quantisation.
     double bookGround[3], ourGround[3];
     MeanColour(book, ref.ground, bookGround);
     MeanColour(ours, ref.ground, ourGround);

@@ -1,5 +1,5 @@
 #!/bin/sh
-# CI check of the speed-accuracy sweep tool (issue 7) on its small grid: it runs, covers every default
+# CI check of the speed-accuracy sweep tool on its small grid: it runs, covers every default
 # problem, its numbers show what the physics must show, sharding splits without losing or changing runs,
 # and bad input is refused. Usage: sweep_quick_test.sh PATH/TO/psb-sweep SCRATCH_DIR
 set -eu

@@ -217,7 +217,7 @@ TEST(RaycastPlane, OneSidedAsTheBook) {
 }
 
 TEST(RaycastTriangle, DemoTriangleIsOneSided) {
-    // book.md 2.0: a (0,3,0), b (-1,1,0), c (1,1,0) has normal +Z, so +Z rays from the camera miss it.
+    // docs/book-reference.md §2.0: a (0,3,0), b (-1,1,0), c (1,1,0) has normal +Z, so +Z rays from the camera miss it.
     Triangle tri(vec3(0, 3, 0), vec3(-1, 1, 0), vec3(1, 1, 0));
     const Plane plane = FromTriangle(tri);
     EXPECT_TRUE(VecNear(plane.normal, vec3(0, 0, 1), tol::kExact));

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-// book.md section 0: MSVC rand() with the default seed 1 yields these first outputs.
+// docs/book-reference.md §0: MSVC rand() with the default seed 1 yields these first outputs.
 TEST(MsvcRand, FirstOutputsMatchMsvc) {
     MsvcRand rng;
     const int expected[] = {41, 18467, 6334, 26500, 19169, 15724, 11478, 29358};

@@ -159,7 +159,7 @@ TEST(Matrices, AxisRotationsMapAxesLeftHanded) {
     EXPECT_TRUE(VecNear(MultiplyVector(vec3(0, 1, 0), XRotation3x3(90)), vec3(0, 0, 1), tol::kTight));
     EXPECT_TRUE(VecNear(MultiplyVector(vec3(0, 0, 1), YRotation3x3(90)), vec3(1, 0, 0), tol::kTight));
     EXPECT_TRUE(VecNear(MultiplyVector(vec3(1, 0, 0), ZRotation3x3(90)), vec3(0, 1, 0), tol::kTight));
-    // book.md section 0 matrices, c = cos 30, s = sin 30.
+    // docs/book-reference.md §0 matrices, c = cos 30, s = sin 30.
     const float c = std::cos(kPi / 6), s = 0.5f;
     EXPECT_TRUE(MatNear(XRotation3x3(30), mat3(1, 0, 0, 0, c, s, 0, -s, c), tol::kTight));
     EXPECT_TRUE(MatNear(YRotation3x3(30), mat3(c, 0, -s, 0, 1, 0, s, 0, c), tol::kTight));
@@ -178,10 +178,10 @@ TEST(Matrices, RotationOrderIsZThenXThenY) {
 }
 
 TEST(Matrices, RotationsPrintedInTheBook) {
-    // book.md 2.0, the raycast demo's OBB.
+    // docs/book-reference.md §2.0, the raycast demo's OBB.
     ExpectRows(Rotation3x3(30, 20, 0), vec3(0.93969f, 0, -0.34202f), vec3(0.17101f, 0.86603f, 0.46985f),
                vec3(0.29620f, -0.5f, 0.81380f));
-    // book.md 2.1, CH14 obb1, obb2, obb3.
+    // docs/book-reference.md §2.1, CH14 obb1, obb2, obb3.
     ExpectRows(Rotation3x3(30.716f, 0, 0), vec3(1, 0, 0), vec3(0, 0.85971f, 0.51078f), vec3(0, -0.51078f, 0.85971f));
     ExpectRows(Rotation3x3(-33.964f, -24.233f, 9.128f), vec3(0.93671f, 0.13157f, 0.32443f),
                vec3(0.08174f, 0.81889f, -0.56811f), vec3(-0.34042f, 0.55867f, 0.75631f));
@@ -249,14 +249,14 @@ TEST(Matrices, OrthogonalizeKeepsUpAndRestoresOrthonormality) {
     EXPECT_TRUE(VecNear(GetRow(o, 1), Normalized(GetRow(m, 1)), tol::kTight));
 }
 
-// ---- Camera matrices (book.md 1.4) -----------------------------------------------------------------------
+// ---- Camera matrices (docs/book-reference.md §1.4) ------------------------------------------------------------------
 
 TEST(Matrices, LookAtForTheCh14CameraPreset) {
     // OrbitCamera: orient = Rotation3x3(pitch = rot.y, yaw = rot.x, 0), eye = target + (0,0,-zoom) * orient.
     const vec3 target(3.75622f, 2.98255f, 0);
     const float zoom = 9, yaw = -67.9312f, pitch = 19.8f;
     const vec3 eye = target + MultiplyVector(vec3(0, 0, -zoom), Rotation3x3(pitch, yaw, 0));
-    // Closed form of book.md 1.4, and its printed eye.
+    // Closed form of docs/book-reference.md §1.4, and its printed eye.
     const float p = DEG2RAD(pitch), y = DEG2RAD(yaw);
     EXPECT_TRUE(VecNear(eye, target + vec3(-std::cos(p) * std::sin(y), std::sin(p), -std::cos(p) * std::cos(y)) * zoom,
                         tol::kTight));
@@ -289,7 +289,7 @@ TEST(Matrices, LookAtDefaultCameraAndDegenerateInput) {
 }
 
 TEST(Matrices, ProjectionEntries) {
-    // book.md 1.4: 60 degrees, 800/600, near 0.01, far 1000.
+    // docs/book-reference.md §1.4: 60 degrees, 800/600, near 0.01, far 1000.
     const float n = 0.01f, f = 1000.0f, aspect = 800.0f / 600.0f;
     const mat4 p = Projection(60, aspect, n, f);
     const float cot30 = std::sqrt(3.0f);

@@ -1,4 +1,4 @@
-// Cloth::Initialize (book.md 3.7): grid layout, spring counts and rest lengths, particle settings,
+// Cloth::Initialize (docs/book-reference.md §3.7): grid layout, spring counts and rest lengths, particle settings,
 // errata 5.2-21 (late size clamp, scaled offset).
 #include "Physics/Cloth.h"
 

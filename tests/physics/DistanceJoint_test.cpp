@@ -1,5 +1,5 @@
-// DistanceJoint (book.md 3.8): one projection of both ends onto the rest length, weighted by inverse mass, removal
-// of the relative velocity along the joint, then both particles re-solve their constraints; erratum 5.2-6
+// DistanceJoint (docs/book-reference.md §3.8): one projection of both ends onto the rest length, weighted by inverse
+// mass, removal of the relative velocity along the joint, then both particles re-solve their constraints; erratum 5.2-6
 // (coincident particles); a pendulum against 2 pi sqrt(L/g) and the elliptic-integral period.
 #include "Physics/DistanceJoint.h"
 
@@ -36,7 +36,7 @@ TEST(DistanceJoint, StretchedPairMovesBothHalfway) {
     joint.SolveConstraints(kNoConstraints);
     EXPECT_TRUE(VecNear(a.GetPosition(), vec3(1, 1, 0), tol::kExact));
     EXPECT_TRUE(VecNear(b.GetPosition(), vec3(2, 1, 0), tol::kExact));
-    // SetPosition also resets oldPosition (book.md 3.8).
+    // SetPosition also resets oldPosition (docs/book-reference.md §3.8).
     EXPECT_TRUE(VecNear(a.GetOldPosition(), a.GetPosition(), 0.0f));
     EXPECT_TRUE(VecNear(b.GetOldPosition(), b.GetPosition(), 0.0f));
 }
@@ -245,9 +245,9 @@ double EllipticPeriod(double length, double theta0) {
 
 }  // namespace
 
-// The book's joint (book.md 3.8) moves both ends by half of the error whatever their masses and never touches the
-// velocities. On this pendulum it gives no swing at all: the mass-0 pivot is dragged down with the bob, both fall
-// (272 m in 10.5 s at dt 1e-3, the bob at half of free fall), x never crosses zero (0 crossings, period
+// The book's joint (docs/book-reference.md §3.8) moves both ends by half of the error whatever their masses and never
+// touches the velocities. On this pendulum it gives no swing at all: the mass-0 pivot is dragged down with the bob,
+// both fall (272 m in 10.5 s at dt 1e-3, the bob at half of free fall), x never crosses zero (0 crossings, period
 // unmeasurable), and the bob's speed grows as g t, so its kinetic energy is twice the height it lost. Here: the
 // pivot stays put bit for bit, the bob swings, and energy never grows.
 TEST(DistanceJoint, PendulumSwingsAboutAnImmovablePivot) {

@@ -1,4 +1,4 @@
-// Stability at the extremes (issue 7 item 4): tiny and huge steps, mass ratios 1:1000 and 1000:1, 1,000 m/s,
+// Stability at the extremes: tiny and huge steps, mass ratios 1:1000 and 1000:1, 1,000 m/s,
 // 10 km from the origin, zero and huge sizes, zero dt. Each case either runs with finite, bounded state or is
 // refused at the API; a stiff spring under explicit Euler must be detected and reported by the
 // StabilityMonitor before any non-finite number appears. Small grids: every test runs in milliseconds.
@@ -161,8 +161,8 @@ TEST(ExtremesTest, HugeStepVolumeStackStaysFinite) {
 // slab. PhysicsSystem::Update now splits such a step into volume substeps (WorldSettings::maxVolumeSubsteps).
 // With linear projection (the book's default) the stack stays on the ground at 0.5 s steps. Without it the book
 // solver has nothing that removes penetration, and a stack of three sinks through a 1 m slab at EVERY step size
-// (60 Hz: the bottom box is 0.4 m into the slab after 14 s and through it at 16 s; issue 5: "linear projection
-// stops sinking"), so the projection-off case is not a huge-step property and is not asserted here.
+// (60 Hz: the bottom box is 0.4 m into the slab after 14 s and through it at 16 s; linear projection is what
+// stops sinking), so the projection-off case is not a huge-step property and is not asserted here.
 TEST(ExtremesTest, HugeStepVolumeStackStaysOnTheGround) {
     for (float thickness : {1.0f, 10.0f})
         for (int projection : {1}) {

@@ -141,7 +141,7 @@ TEST(Integrator, OscillatorErrorShrinksAtEachIntegratorsOrder) {
 }
 
 // Per-step damping f scales the carried velocity: v = v f + g dt, so the terminal speed under gravity is
-// g dt / (1 - f): the book's 5.892 m/s at dt 0.03, f 0.95 (book.md 3.2).
+// g dt / (1 - f): the book's 5.892 m/s at dt 0.03, f 0.95 (docs/book-reference.md §3.2).
 TEST(Integrator, FrictionGivesTheBooksTerminalSpeed) {
     for (Integrator i :
          {Integrator::ExplicitEuler, Integrator::SemiImplicitEuler, Integrator::VelocityVerlet, Integrator::RK4}) {

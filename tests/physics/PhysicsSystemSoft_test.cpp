@@ -221,7 +221,7 @@ TEST(PhysicsSystemSoft, Erratum5_2_20_SpringVelocityChangeScalesWithDt) {
 }
 
 TEST(PhysicsSystemSoft, SpringsAreCopiedAndClothSpringsApplied) {
-    // System springs are copies (book.md 3.4): editing the original after AddSpring changes nothing.
+    // System springs are copies (docs/book-reference.md §3.4): editing the original after AddSpring changes nothing.
     Particle a, b;
     for (Particle* p : {&a, &b}) {
         p->SetGravity(vec3());
@@ -287,8 +287,8 @@ TEST(PhysicsSystemSoft, Erratum5_2_6_DegenerateSpringsAndJointsStayFinite) {
     }
 }
 
-// Joints run after the free particles' own constraint pass and before cloth particles (book.md 2.8, 3.4):
-// after a step the pair is exactly at its length unless a box pushed one end.
+// Joints run after the free particles' own constraint pass and before cloth particles (docs/book-reference.md §2.8,
+// §3.4): after a step the pair is exactly at its length unless a box pushed one end.
 TEST(PhysicsSystemSoft, JointHoldsLengthAfterStep) {
     Particle a, b;
     a.SetPosition(vec3(0, 5, 0));

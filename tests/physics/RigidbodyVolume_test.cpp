@@ -29,7 +29,7 @@ vec3 PointVelocity(const RigidbodyVolume& b, const vec3& point) {
 }  // namespace
 
 TEST(RigidbodyVolume, InertiaOfBookBodies) {
-    // book.md 3.3: unit cube of mass 1 -> 2/3, mass 5 -> 10/3, unit sphere of mass 1 -> 2/5.
+    // docs/book-reference.md §3.3: unit cube of mass 1 -> 2/3, mass 5 -> 10/3, unit sphere of mass 1 -> 2/5.
     EXPECT_TRUE(
         VecNear(MakeBox(vec3(), vec3(1, 1, 1), 1.0f).LocalInertia(), vec3(2.f / 3, 2.f / 3, 2.f / 3), tol::kTight));
     EXPECT_TRUE(
@@ -66,7 +66,7 @@ TEST(RigidbodyVolume, Erratum5_2_11_InverseInertiaIsRotatedToWorld) {
 TEST(RigidbodyVolume, EulerOrientationMatchesTheBookCh15Box) {
     RigidbodyVolume b = MakeBox(vec3(0.5f, 6, 0), vec3(1, 1, 1), 1.0f);
     b.SetEulerOrientation(vec3(0, 0, 0.4f));
-    // book.md 2.5: rows (0.92106, 0.38942, 0), (-0.38942, 0.92106, 0), (0, 0, 1).
+    // docs/book-reference.md §2.5: rows (0.92106, 0.38942, 0), (-0.38942, 0.92106, 0), (0, 0, 1).
     EXPECT_TRUE(MatNear(b.box.orientation, mat3(0.92106f, 0.38942f, 0, -0.38942f, 0.92106f, 0, 0, 0, 1), tol::kBook));
     EXPECT_TRUE(VecNear(b.box.position, vec3(0.5f, 6, 0), tol::kExact));
 }

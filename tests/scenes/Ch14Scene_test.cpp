@@ -1,4 +1,4 @@
-// The CH14 scene: the book's spawns (book.md section 0), constraints (2.1), the y < -5 clamp, and a long run
+// The CH14 scene: the book's spawns (docs/book-reference.md §0), constraints (2.1), the y < -5 clamp, and a long run
 // that keeps every particle finite and above the ground for every integrator.
 #include "Demos/Scenes/Ch14Scene.h"
 

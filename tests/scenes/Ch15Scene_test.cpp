@@ -1,4 +1,4 @@
-// Chapter 15 scene (book.md 2.5): setup, parameters, settling, determinism.
+// Chapter 15 scene (docs/book-reference.md §2.5): setup, parameters, settling, determinism.
 #include "Demos/Scenes/Ch15Scene.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Chapter 16 scene (book.md 2.7): book setup, drape over the posts for 2,000 steps with every stable
+// Chapter 16 scene (docs/book-reference.md §2.7): book setup, drape over the posts for 2,000 steps with every stable
 // integrator, explicit Euler's blow-up reported, parameters, determinism.
 #include "Demos/Scenes/Ch16Scene.h"
 

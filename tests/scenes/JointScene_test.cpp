@@ -1,4 +1,4 @@
-// Joint Demo scene (book.md 2.8): CH14's spawn and ramps, pairs (i, i + n/2) held by distance joints,
+// Joint Demo scene (docs/book-reference.md §2.8): CH14's spawn and ramps, pairs (i, i + n/2) held by distance joints,
 // erratum 5.2-23 (odd count), joints at rest keep their length, determinism.
 #include "Demos/Scenes/JointScene.h"
 
@@ -26,7 +26,7 @@ TEST(JointScene, BookSpawnAndConstraints) {
     JointScene scene;
     ASSERT_EQ(scene.Particles().size(), 50u);
     ASSERT_EQ(scene.Joints().size(), 25u);
-    // The first particles are CH14's (MSVC rand, seed 1; book.md section 0).
+    // The first particles are CH14's (MSVC rand, seed 1; docs/book-reference.md §0).
     EXPECT_TRUE(VecNear(scene.Particles()[0].GetPosition(), vec3(-4.34086f, 6.75434f, -3.48493f), tol::kBook));
     EXPECT_NEAR(scene.Particles()[0].GetBounce(), 0.80874f, tol::kBook);
     EXPECT_TRUE(VecNear(scene.Particles()[1].GetPosition(), vec3(0.15466f, 6.41949f, -2.21810f), tol::kBook));

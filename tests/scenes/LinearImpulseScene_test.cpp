@@ -1,4 +1,4 @@
-// Linear Impulse scene (book.md 2.3): setup, pause and single-step controls, the mid-air impact.
+// Linear Impulse scene (docs/book-reference.md §2.3): setup, pause and single-step controls, the mid-air impact.
 #include "Demos/Scenes/LinearImpulseScene.h"
 
 #include <gtest/gtest.h>

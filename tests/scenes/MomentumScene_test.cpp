@@ -1,4 +1,4 @@
-// Conservation Of Momentum scene (book.md 2.4).
+// Conservation Of Momentum scene (docs/book-reference.md §2.4).
 #include "Demos/Scenes/MomentumScene.h"
 
 #include <gtest/gtest.h>

@@ -10,7 +10,7 @@
 
 namespace {
 
-/// The demo's default camera (book.md 1.4): eye (0,0,-10) looking along +Z, 60 degrees, 800 x 600.
+/// The demo's default camera (docs/book-reference.md §1.4): eye (0,0,-10) looking along +Z, 60 degrees, 800 x 600.
 struct DefaultView {
     OrbitCamera camera;
     DefaultView() {
@@ -45,7 +45,7 @@ TEST(RaycastScene, ClosestHitWins) {
     r = s.CastAll(Ray(vec3(4, 2, -10), vec3(0, 0, 1)), &shape);
     EXPECT_EQ(shape, RaycastScene::Shape::AABB);
     EXPECT_TRUE(VecNear(r.normal, vec3(0, 0, -1), tol::kExact));
-    // The triangle faces +Z: a ray travelling +Z cannot hit it (book.md 2.0).
+    // The triangle faces +Z: a ray travelling +Z cannot hit it (docs/book-reference.md §2.0).
     r = s.CastAll(Ray(vec3(0, 2, -10), vec3(0, 0, 1)), &shape);
     EXPECT_NE(shape, RaycastScene::Shape::Triangle);
     // Straight up through empty space misses everything.

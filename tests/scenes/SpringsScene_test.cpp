@@ -1,4 +1,4 @@
-// Simple Springs scene (book.md 2.6): setup, the book-constant conversion (erratum 5.2-20), settling,
+// Simple Springs scene (docs/book-reference.md §2.6): setup, the book-constant conversion (erratum 5.2-20), settling,
 // a stiff explicit-Euler run reported, parameters, determinism.
 #include "Demos/Scenes/SpringsScene.h"
 

@@ -1,4 +1,4 @@
-// "Nothing is allocated per step in steady state" (issues 4, 5, 6), tested rather than claimed: this test
+// "Nothing is allocated per step in steady state", tested rather than claimed: this test
 // binary replaces the global operator new with a counting one, and each scene must run its steps after a
 // warm-up without a single allocation. A per-step std::vector, std::function or manifold copy would fail it.
 

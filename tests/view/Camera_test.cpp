@@ -1,4 +1,4 @@
-// Camera.cpp: book.md 1.4 defaults, presets, clamps, Update closed form and the view matrix.
+// Camera.cpp: docs/book-reference.md §1.4 defaults, presets, clamps, Update closed form and the view matrix.
 #include "Application/View/Camera.h"
 
 #include <gtest/gtest.h>
@@ -88,7 +88,7 @@ TEST(OrbitCamera, DefaultsMatchBook) {
 }
 
 TEST(OrbitCamera, BookPresetsGiveBookEyes) {
-    // book.md 1.4 table: target (3.75622, 2.98255, 0), rotation (-67.9312, 19.8).
+    // docs/book-reference.md §1.4 table: target (3.75622, 2.98255, 0), rotation (-67.9312, 19.8).
     struct Case {
         float zoom;
         vec3 eye;

@@ -96,7 +96,7 @@ TEST(Cube, EachFaceCoversItsSquare) {
 }
 
 TEST(FrontNormal, IsTheBookOneSidedNormal) {
-    // The cloth's flat cell (tl, br, bl) on y = 0 faces +Y (book.md 3.7).
+    // The cloth's flat cell (tl, br, bl) on y = 0 faces +Y (docs/book-reference.md §3.7).
     EXPECT_TRUE(VecNear(FrontNormal({0, 0, 0}, {1, 0, 1}, {0, 0, 1}), vec3(0, 1, 0), tol::kExact));
     EXPECT_TRUE(VecNear(FrontNormal({0, 0, 0}, {0, 0, 0}, {0, 0, 1}), vec3(), tol::kExact));  // degenerate
 }
