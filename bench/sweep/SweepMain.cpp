@@ -2,6 +2,7 @@
 // Exit codes: 0 done, 2 bad command line, 3 the output file could not be written (the message names the path and
 // the system error; the file is written whole through a temporary, never left cut mid-row: docs/sweep.md).
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -18,7 +19,8 @@
 namespace {
 
 constexpr const char* kUsage =
-    "usage: psb-sweep [--problem NAME]... [--quick] [--dt LIST] [--shard I/N] [--out FILE] [--list] [--help]\n"
+    "usage: psb-sweep [--problem NAME]... [--quick] [--dt LIST] [--shard I/N] [--runs LIST] [--out FILE] [--list]\n"
+    "                 [--help]\n"
     "Runs the reference problems of docs/sweep.md over their settings; one CSV row per run.\n"
     "  --problem NAME  run only this problem (repeatable; default: every problem --list does not mark\n"
     "                  'not in the default set')\n"
@@ -27,6 +29,8 @@ constexpr const char* kUsage =
     "                  x solver iterations), the same way in every process; the union of the N shards is the\n"
     "                  whole sweep, rows in the same order once concatenated and sorted by run\n"
     "  --dt LIST       comma-separated step sizes (s) replacing the default 1e-4 .. 0.1 grid, e.g. a demo's 0.03\n"
+    "  --runs LIST     run only these run indices of the selected grid (comma-separated, e.g. 0,867,1203): the\n"
+    "                  same runs, with the same numbers, as in a full run's CSV\n"
     "  --out FILE      write the CSV to FILE instead of stdout\n"
     "  --list          print the problems (name, error measured, swept parameter) and exit\n"
     "  --help          this text\n"
@@ -85,7 +89,25 @@ struct Arguments {
     bool quick = false, list = false;
     int shardIndex = 1, shardCount = 1;
     std::string outPath;
+    std::vector<long> runs;  ///< --runs: only these indices of the grid (sorted, unique); empty = all
 };
+
+int SetRuns(const std::string& text, Arguments* args) {
+    std::stringstream list(text);
+    std::string item;
+    while (std::getline(list, item, ',')) {
+        char* end = nullptr;
+        errno = 0;
+        const long index = std::strtol(item.c_str(), &end, 10);
+        if (item.empty() || *end != '\0' || errno != 0 || index < 0)
+            return Fail("bad --runs entry '" + item + "': expected run indices >= 0, comma-separated");
+        args->runs.push_back(index);
+    }
+    if (args->runs.empty()) return Fail("--runs needs at least one run index");
+    std::sort(args->runs.begin(), args->runs.end());
+    args->runs.erase(std::unique(args->runs.begin(), args->runs.end()), args->runs.end());
+    return -1;
+}
 
 int AddProblem(const std::string& name, Arguments* args) {
     const std::vector<sweep::Problem>& problems = sweep::AllProblems();
@@ -140,6 +162,8 @@ int ParseArguments(int argc, char** argv, Arguments* args) {
                 return Fail("bad --shard '" + v + "': expected I/N with integers 1 <= I <= N");
         } else if (arg == "--dt") {
             code = hasValue ? SetStepSizes(v) : Fail("--dt needs a comma-separated list of step sizes");
+        } else if (arg == "--runs") {
+            code = hasValue ? SetRuns(v, args) : Fail("--runs needs a list of run indices");
         } else if (arg == "--out") {
             if (!hasValue || v.empty()) return Fail("--out needs a file name");
             args->outPath = v;
@@ -147,7 +171,7 @@ int ParseArguments(int argc, char** argv, Arguments* args) {
             return Fail("unknown argument '" + arg + "'");
         }
         if (code >= 0) return code;
-        if (arg == "--problem" || arg == "--shard" || arg == "--dt" || arg == "--out") ++a;
+        if (arg == "--problem" || arg == "--shard" || arg == "--dt" || arg == "--runs" || arg == "--out") ++a;
     }
     return -1;
 }
@@ -185,8 +209,20 @@ std::vector<Run> ShardRuns(const Arguments& args) {
     }
     std::vector<Run> runs;
     for (const Run& r : all)
-        if (mine[std::size_t(r.index)]) runs.push_back(r);
+        if (mine[std::size_t(r.index)] &&
+            (args.runs.empty() || std::binary_search(args.runs.begin(), args.runs.end(), r.index)))
+            runs.push_back(r);
     return runs;
+}
+
+/// --runs names only indices of the selected grid; -1 if so, else exit 2 naming the first that is not.
+int CheckRuns(const Arguments& args) {
+    long size = 0;
+    for (const sweep::Problem* p : args.selected) size += long(p->grid(args.quick).size());
+    if (!args.runs.empty() && args.runs.back() >= size)
+        return Fail("--runs " + std::to_string(args.runs.back()) + ": the selected grid has runs 0.." +
+                    std::to_string(size - 1));
+    return -1;
 }
 
 std::string Row(const Run& run, const sweep::Outcome& o) {
@@ -248,5 +284,6 @@ int main(int argc, char** argv) {
     if (args.selected.empty())
         for (const sweep::Problem& p : sweep::AllProblems())
             if (p.inDefault) args.selected.push_back(&p);
+    if (const int bad = CheckRuns(args); bad >= 0) return bad;
     return RunAndWrite(ShardRuns(args), args.outPath);
 }
