@@ -12,10 +12,10 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <memory>
-#include <cstdint>
 #include <new>
 #include <numeric>
 #include <vector>
@@ -418,6 +418,9 @@ int RunSandbox(const Options& options, RunStats* stats) {
 
 static int RunWindow(const Options& o) {
 #if PSB_HAVE_WINDOW
+    if (!o.demo.empty()) {
+        if (const int code = CheckDemoId(o.demo); code != kExitOk) return code;
+    }
     WindowedOptions w;
     w.demo = o.demo;
     w.sets = o.sets;

@@ -13,8 +13,8 @@
 #include <memory>
 #include <thread>
 
+#include "Application/Runner.h"
 #include "Demos/DemoBase.h"
-#include "Demos/DemoRegistry.h"
 #include "Platform/DesktopWindow.h"
 #include "Windows/BookImGuiStyle.h"
 #include "Windows/DemoWindow.h"
@@ -69,7 +69,7 @@ struct ImGuiSession {
 bool StartFirstDemo(const WindowedOptions& o, DemoWindow& window) {
     if (o.demo.empty()) return true;
     if (!window.StartDemo(o.demo)) {
-        std::fprintf(stderr, "physics-sandbox: unknown demo '%s' (see --list)\n", o.demo.c_str());
+        std::fprintf(stderr, "physics-sandbox: demo '%s' failed to start\n", o.demo.c_str());
         return false;
     }
     std::string error;
@@ -104,16 +104,12 @@ void ReportSummary(const WindowedOptions& o, DemoWindow& window, int frames, lon
 }  // namespace
 
 int RunWindowed(const WindowedOptions& o) {
-    if (!o.demo.empty() && FindDemo(o.demo) == nullptr) {
-        std::fprintf(stderr, "physics-sandbox: unknown demo '%s' (see --list)\n", o.demo.c_str());
-        return 2;
-    }
     std::string error;
     std::unique_ptr<DesktopWindow> desktop =
         DesktopWindow::Create("Physics Sandbox", o.width, o.height, o.vsync, &error);
     if (!desktop) {
         std::fprintf(stderr, "physics-sandbox: --window: %s\n", error.c_str());
-        return 3;
+        return kExitFailure;
     }
     DemoWindow window("Physics Sandbox", o.width, o.height);
     InputBridge input(&window);
@@ -123,7 +119,7 @@ int RunWindowed(const WindowedOptions& o) {
     window.OnInitialize();
     window.OnResize(o.width, o.height);
     window.SetUIVisible(!o.noUi);
-    if (!StartFirstDemo(o, window)) return 2;
+    if (!StartFirstDemo(o, window)) return kExitUsage;
     std::string shownDemo = window.CurrentDemoId();
     ReportDemo(o, shownDemo);
 
@@ -171,5 +167,5 @@ int RunWindowed(const WindowedOptions& o) {
     }
     ReportSummary(o, window, frames, steps);
     window.OnShutdown();
-    return 0;
+    return kExitOk;
 }

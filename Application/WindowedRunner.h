@@ -22,5 +22,6 @@ struct WindowedOptions {
 
 /// Runs the window until it is closed or `frames` frames have been shown. Prints "demo: ID" (or "demo: none")
 /// on stdout whenever the running demo changes, and a summary line with the frame count and the final camera
-/// at the end. Returns 0, 2 for an unknown demo or --set, 3 when no window can be opened (no display).
+/// at the end. The caller checks the demo id. Returns kExitOk, kExitUsage for a bad --set, kExitFailure when
+/// no window can be opened (no display).
 int RunWindowed(const WindowedOptions& options);

@@ -1,5 +1,8 @@
 #include "Platform/EncodeQueue.h"
 
+#include <pthread.h>
+#include <signal.h>
+
 #include <chrono>
 #include <exception>
 #include <new>
@@ -68,6 +71,13 @@ bool EncodeQueue::Finish(std::string* error) {
 }
 
 void EncodeQueue::WorkerLoop() {
+    // SIGINT and SIGTERM are handled on the main thread (Platform/Files/TempRegistry.h), never while this
+    // thread is half-way through registering a temporary.
+    sigset_t block;
+    sigemptyset(&block);
+    sigaddset(&block, SIGINT);
+    sigaddset(&block, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &block, nullptr);
     std::unique_lock<std::mutex> lock(mutex);
     for (;;) {
         changed.wait(lock, [this] { return !jobs.empty() || stopping; });

@@ -14,31 +14,14 @@
 #include <fstream>
 #include <sstream>
 
+#include "Platform/Files/AtomicFile.h"
+#include "Platform/Files/TempRegistry.h"
+
 namespace {
 
 std::string Lower(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     return s;
-}
-
-std::string DirectoryOf(const std::string& path) {
-    const std::size_t slash = path.rfind('/');
-    if (slash == std::string::npos) return ".";
-    return slash == 0 ? "/" : path.substr(0, slash);
-}
-
-/// A new empty file `<dir>/.psb-video.XXXXXX<suffix>` (short, so any legal target name works); "" on failure.
-std::string MakeTemp(const std::string& dir, const char* suffix, std::string* error) {
-    std::string name = dir + "/.psb-video.XXXXXX" + suffix;
-    std::vector<char> buffer(name.begin(), name.end());
-    buffer.push_back('\0');
-    const int fd = mkstemps(buffer.data(), int(std::strlen(suffix)));
-    if (fd < 0) {
-        *error = "cannot create a temporary file in " + dir + ": " + std::strerror(errno);
-        return "";
-    }
-    close(fd);
-    return std::string(buffer.data());
 }
 
 std::string Number(double v) {
@@ -117,15 +100,15 @@ bool VideoEncoder::Open(const std::string& target, int w, int h, double framesPe
     height = h;
     fps = framesPerSecond;
     frames = 0;
-    const std::string dir = DirectoryOf(path);
-    const char* suffix = format == Format::Mp4 ? ".mp4" : format == Format::Webm ? ".webm" : ".gif";
-    tempPath = MakeTemp(dir, suffix, error);
+    // Temporaries beside the target, removed by Cleanup and, on SIGINT/SIGTERM, by the signal handler (which
+    // first kills ffmpeg, so it cannot write them again).
+    tempPath = CreateTemporaryBeside(path, &tempId, error);
     if (tempPath.empty()) return false;
-    logPath = MakeTemp(dir, ".log", error);
+    logPath = CreateTemporaryBeside(path, &logId, error);
     if (logPath.empty()) return Cleanup(), false;
     if (format == Format::Gif) {
         // The palette needs every frame before the first can be mapped: keep them raw on disk, not in memory.
-        rawPath = MakeTemp(dir, ".rgb", error);
+        rawPath = CreateTemporaryBeside(path, &rawId, error);
         if (rawPath.empty()) return Cleanup(), false;
         rawFd = open(rawPath.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
         if (rawFd < 0) {
@@ -193,6 +176,7 @@ bool VideoEncoder::Spawn(const std::vector<std::string>& args, bool pipeIn, std:
         return false;
     }
     child = pid;
+    RegisterChildProcess(pid);
     pipeFd = pipeIn ? fds[1] : -1;
     return true;
 }
@@ -202,6 +186,7 @@ bool VideoEncoder::Wait(std::string* error) {
     pid_t r;
     do r = waitpid(child, &status, 0);
     while (r < 0 && errno == EINTR);
+    UnregisterChildProcess(child);
     child = -1;
     if (r > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0) return true;
     const std::string last = LastLine(logPath);
@@ -243,14 +228,15 @@ bool VideoEncoder::EncodeGif(std::string* error) {
     const std::string rate = Number(fps);
     // GIF delays are whole hundredths of a second: above 50 fps, resample to 50 (2/100 s per frame).
     const std::string resample = fps > 50.0 ? "fps=50," : "";
-    palettePath = MakeTemp(DirectoryOf(path), ".png", error);
+    palettePath = CreateTemporaryBeside(path, &paletteId, error);
     if (palettePath.empty()) return false;
     const std::vector<std::string> input = {"-f", "rawvideo",   "-pix_fmt", "rgb24", "-video_size",
                                             size, "-framerate", rate,       "-i",    rawPath};
     std::vector<std::string> pass1 = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y"};
     pass1.insert(pass1.end(), input.begin(), input.end());
-    for (const std::string& a : {std::string("-vf"), resample + "palettegen=stats_mode=full:reserve_transparent=0",
-                                 std::string("-f"), std::string("image2"), palettePath})
+    for (const std::string& a :
+         {std::string("-vf"), resample + "palettegen=stats_mode=full:reserve_transparent=0", std::string("-c:v"),
+          std::string("png"), std::string("-f"), std::string("image2"), palettePath})
         pass1.push_back(a);
     if (!Spawn(pass1, false, error) || !Wait(error)) return false;
     std::vector<std::string> pass2 = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y"};
@@ -283,7 +269,8 @@ bool VideoEncoder::Finish(std::string* error) {
         ok = false;
     }
     if (ok) {
-        chmod(path.c_str(), 0644);
+        UnregisterTemporary(tempId);  // renamed: it is the result now
+        tempId = -1;
         tempPath.clear();
     }
     Cleanup();
@@ -297,6 +284,7 @@ void VideoEncoder::Abort() {
         int status = 0;
         while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
         }
+        UnregisterChildProcess(child);
         child = -1;
     }
     Cleanup();
@@ -304,8 +292,12 @@ void VideoEncoder::Abort() {
 
 void VideoEncoder::Cleanup() {
     if (rawFd >= 0) close(rawFd), rawFd = -1;
-    for (std::string* p : {&tempPath, &rawPath, &palettePath, &logPath}) {
-        if (!p->empty()) unlink(p->c_str());
-        p->clear();
+    const std::pair<std::string*, int*> temporaries[] = {
+        {&tempPath, &tempId}, {&rawPath, &rawId}, {&palettePath, &paletteId}, {&logPath, &logId}};
+    for (const auto& [path, id] : temporaries) {
+        if (!path->empty()) unlink(path->c_str());
+        path->clear();
+        UnregisterTemporary(*id);
+        *id = -1;
     }
 }

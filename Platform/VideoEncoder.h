@@ -4,7 +4,8 @@
 // .mp4 is H.264 (libx264), .webm is VP9 (libvpx-vp9), .gif uses a palette generated from the frames
 // themselves (palettegen, then paletteuse without dithering, so the demos' flat colours stay exact).
 // The file appears only when the recording is complete: ffmpeg writes a temporary file beside it, renamed at
-// Finish; Abort (or the destructor) removes it. docs/app.md, "Video".
+// Finish; Abort (or the destructor) removes it, and so does SIGINT/SIGTERM (Platform/Files/TempRegistry.h),
+// after killing ffmpeg. docs/app.md, "Video".
 
 #include <sys/types.h>
 
@@ -49,6 +50,7 @@ private:
 
     Format format = Format::Mp4;
     std::string path, tempPath, rawPath, palettePath, logPath;
+    int tempId = -1, rawId = -1, paletteId = -1, logId = -1;  // TempRegistry slots of the temporaries
     int width = 0, height = 0, frames = 0;
     double fps = 60.0;
     pid_t child = -1;

@@ -23,3 +23,11 @@ if(PSB_BUILD_TESTS)
                                        $<TARGET_FILE:psb-sweep> ${CMAKE_CURRENT_BINARY_DIR}/sweep-parallel)
   set_tests_properties(sweep.parallel PROPERTIES LABELS bench TIMEOUT 600 SKIP_RETURN_CODE 77)
 endif()
+
+# The committed results are today's: a fixed sample of docs/sweep/results.csv re-run (sweep_reproduce_test.sh).
+if(PSB_BUILD_TESTS)
+  add_test(NAME sweep.reproduce COMMAND sh ${PROJECT_SOURCE_DIR}/tests/bench/sweep_reproduce_test.sh
+                                        ${PROJECT_SOURCE_DIR} $<TARGET_FILE:psb-sweep>
+                                        ${CMAKE_CURRENT_BINARY_DIR}/sweep-reproduce)
+  set_tests_properties(sweep.reproduce PROPERTIES LABELS bench TIMEOUT 600)
+endif()

@@ -6,7 +6,11 @@ and whether it may include GL or ImGui headers. This check fails when
   - a quoted include does not name its file from the repository root ("Physics/PhysicsSystem.h"),
   - a file includes a header of a folder its row does not allow (a higher layer, or a sibling it must not see),
   - a file in a layer without GL includes a GL, OSMesa, GLAD or ImGui header,
-  - a source file lies in a folder that has no row (every code folder is one layer).
+  - a source file lies in a folder that has no row (every code folder is one layer),
+  - a GL-free test folder (tests/math, geometry, physics, scenes, view) includes a GL, OSMesa, GLAD or ImGui
+    header.
+An angle-bracket include that names a file of the repository (<Physics/PhysicsSystem.h>) is checked like a
+quoted one.
 Usage: check-layers.py REPO_ROOT. Prints one line per problem; exit 1 if any, else 0.
 """
 import os
@@ -48,9 +52,13 @@ def main():
         print("check-layers: README.md has no layer table under '## Layout'")
         return 1
     free = ("tests/", "bench/")  # tests and benchmarks may include any layer; their includes still name folders
+    gl_free_tests = ("tests/math/", "tests/geometry/", "tests/physics/", "tests/scenes/", "tests/view/")
+    skip_tops = {"docs", "scripts", "third_party", ".git", ".ci"}
     problems = []
     checked = 0
-    for top in sorted(set(p.split("/")[0] for p in layers) | {"tests", "bench"}):
+    tops = set(p.split("/")[0] for p in layers) | {"tests", "bench"}
+    tops |= {d for d in os.listdir(root) if os.path.isdir(os.path.join(root, d)) and not d.startswith(("build", "."))}
+    for top in sorted(tops - skip_tops):
         for dirpath, dirnames, filenames in os.walk(os.path.join(root, top)):
             dirnames.sort()
             for name in sorted(filenames):
@@ -64,6 +72,8 @@ def main():
                     continue
                 checked += 1
                 allowed, gl = layers.get(layer, (set(), True)) if not is_free else (None, True)
+                if rel.startswith(gl_free_tests):
+                    gl = False
                 with open(os.path.join(root, rel), encoding="utf-8") as f:
                     for lineno, line in enumerate(f, 1):
                         m = re.match(r'\s*#\s*include\s*([<"])([^>"]+)[>"]', line)
@@ -73,8 +83,9 @@ def main():
                         where = f"{rel}:{lineno}"
                         if kind == "<":
                             if GL_HEADER.match(inc) and not gl:
-                                problems.append(f"{where}: {layer}/ has no GL, but includes <{inc}>")
-                            continue
+                                problems.append(f"{where}: {layer or os.path.dirname(rel)}/ has no GL, but includes <{inc}>")
+                            if not os.path.isfile(os.path.join(root, inc)) or "/" not in inc:
+                                continue  # a system or generated header
                         if not os.path.isfile(os.path.join(root, inc)):
                             problems.append(f'{where}: "{inc}" does not name a file from the repository root')
                             continue

@@ -63,6 +63,27 @@ bool CheckWritableTarget(const std::string& path, std::string* error) {
     return false;
 }
 
+std::string CreateTemporaryBeside(const std::string& target, int* registryId, std::string* error) {
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        const std::string temp = TemporaryNameFor(target, UniqueSuffix());
+        *registryId = RegisterTemporary(temp);  // before it exists: a signal cannot leave it behind
+        const int fd = open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd >= 0) {
+            close(fd);
+            return temp;
+        }
+        const int err = errno;
+        UnregisterTemporary(*registryId);
+        *registryId = -1;
+        if (err != EEXIST) {
+            *error = "cannot create a temporary beside " + target + ": " + SystemError(err);
+            return "";
+        }
+    }
+    *error = "cannot create a temporary beside " + target + ": no unused temporary name";
+    return "";
+}
+
 AtomicFile::~AtomicFile() { Abandon(); }
 
 bool AtomicFile::Open(const std::string& path, std::string* error) {

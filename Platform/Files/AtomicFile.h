@@ -40,6 +40,11 @@ private:
     std::vector<char> buffer;
 };
 
+/// Creates an empty temporary file beside target (".NAME.XXXXXX", mode 0666 less the umask, as AtomicFile's),
+/// registered for removal on SIGINT/SIGTERM (TempRegistry.h). Returns its path and sets *registryId (for
+/// UnregisterTemporary once it is renamed or removed); "" with *error naming the directory on failure.
+std::string CreateTemporaryBeside(const std::string& target, int* registryId, std::string* error);
+
 /// Writes bytes to path whole or not at all (AtomicFile). On failure *error names the path and the reason.
 bool WriteFileAtomic(const std::string& path, const std::vector<std::uint8_t>& bytes, std::string* error);
 /// Checks that path can be the target of an AtomicFile: it does not exist, or it is a regular file (lstat: a

@@ -2,9 +2,11 @@
 
 #include <limits.h>
 #include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <cstring>
 
 namespace {
@@ -18,6 +20,8 @@ struct Slot {
 };
 
 Slot gSlots[kSlots];
+constexpr int kChildren = 8;
+std::atomic<int> gChildren[kChildren];  // 0 = free
 const char* gProgram = "program";
 
 void WriteAll(const char* text) {
@@ -31,6 +35,13 @@ void WriteAll(const char* text) {
 }
 
 extern "C" void OnTerminatingSignal(int sig) {
+    for (std::atomic<int>& child : gChildren) {
+        const int pid = child.load();
+        if (pid <= 0) continue;
+        kill(pid, SIGKILL);
+        while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+        }
+    }
     for (Slot& slot : gSlots)
         if (slot.state.load() == kActive) unlink(slot.path);
     WriteAll(gProgram);
@@ -55,6 +66,21 @@ int RegisterTemporary(const std::string& path) {
 
 void UnregisterTemporary(int id) {
     if (id >= 0 && id < kSlots) gSlots[id].state.store(kFree);
+}
+
+bool RegisterChildProcess(int pid) {
+    for (std::atomic<int>& child : gChildren) {
+        int expected = 0;
+        if (child.compare_exchange_strong(expected, pid)) return true;
+    }
+    return false;
+}
+
+void UnregisterChildProcess(int pid) {
+    for (std::atomic<int>& child : gChildren) {
+        int expected = pid;
+        if (child.compare_exchange_strong(expected, 0)) return;
+    }
 }
 
 void InstallTemporaryCleanupOnSignals(const char* program) {

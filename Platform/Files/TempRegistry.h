@@ -11,6 +11,11 @@
 int RegisterTemporary(const std::string& path);
 /// Forgets slot id (after the temporary was renamed or removed). -1 is ignored.
 void UnregisterTemporary(int id);
+/// Records a child process (an encoder writing into a registered temporary): on SIGINT/SIGTERM it is killed
+/// and reaped before the temporaries are removed, so it cannot write them again. Up to 8; false when full.
+bool RegisterChildProcess(int pid);
+/// Forgets a child recorded by RegisterChildProcess (after it was waited for). Unknown pids are ignored.
+void UnregisterChildProcess(int pid);
 /// Installs the process's signal policy: SIGINT and SIGTERM remove every registered temporary, print one line
 /// "<program>: interrupted by SIGINT; temporary files removed, completed files kept" on stderr and exit with
 /// 128 + the signal number (130, 143); SIGXFSZ is ignored, so a write beyond the file-size limit fails with

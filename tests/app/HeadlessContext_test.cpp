@@ -25,13 +25,14 @@ std::vector<std::uint8_t> DrawScene() {
     glEnable(GL_COLOR_MATERIAL);
     const float light[4] = {0.5f, 1.0f, -1.5f, 0.0f};
     glLightfv(GL_LIGHT0, GL_POSITION, light);
+    // The near (z 0) green triangle first, then the far (z 0.5) red one: only the depth test keeps the green.
     glBegin(GL_TRIANGLES);
-    glNormal3f(0.0f, 0.0f, 1.0f);
-    glColor3f(1.0f, 0.1f, 0.1f);
-    glVertex3f(-0.9f, -0.9f, 0.5f), glVertex3f(0.9f, -0.9f, 0.5f), glVertex3f(0.0f, 0.9f, 0.5f);
     glNormal3f(0.3f, 0.8f, 0.5f);
     glColor3f(0.1f, 1.0f, 0.1f);
     glVertex3f(-0.9f, 0.9f, 0.0f), glVertex3f(0.9f, 0.9f, 0.0f), glVertex3f(0.0f, -0.9f, 0.0f);
+    glNormal3f(0.0f, 0.0f, 1.0f);
+    glColor3f(1.0f, 0.1f, 0.1f);
+    glVertex3f(-0.9f, -0.9f, 0.5f), glVertex3f(0.9f, -0.9f, 0.5f), glVertex3f(0.0f, 0.9f, 0.5f);
     glEnd();
     glDisable(GL_LIGHTING);
     glEnable(GL_STENCIL_TEST);
@@ -81,8 +82,11 @@ TEST_P(HeadlessBackendTest, DrawsDepthTestedLitAndStencilledPixels) {
     // Corner: the clear colour (0.5, 0.6, 0.7).
     EXPECT_NEAR(At(p, kW - 1, kH - 1, 0), 128, 1);
     EXPECT_NEAR(At(p, kW - 1, kH - 1, 2), 179, 1);
-    // Centre-top: the green triangle is nearer (z 0 < 0.5) and covers the red one.
+    // Centre-top: the green triangle is nearer (z 0 < 0.5) and keeps the red one, drawn after it, out.
     EXPECT_GT(At(p, kW / 2, kH * 3 / 4, 1), At(p, kW / 2, kH * 3 / 4, 0));
+    // Lit, not flat: the default ambient 0.2 plus the diffuse term N.L = 0.107 (N = (0.3, 0.8, 0.5),
+    // L = (0.5, 1, -1.5) normalised) of the green 1.0 gives about 0.31 (79 of 255), not the unlit 255.
+    EXPECT_NEAR(At(p, kW / 2, kH * 3 / 4, 1), 79, 12);
     // Inside the stencilled square only: blue.
     EXPECT_EQ(At(p, kW * 3 / 8, kH * 3 / 8, 2), 255);
     EXPECT_EQ(At(p, kW * 3 / 8, kH * 3 / 8, 0), 0);

@@ -136,6 +136,8 @@ TEST(Stepping, EveryDemoKeepsSimulatedTimeAtTwoSteps) {
             << id << " body " << mover << " at t = " << t << " s: (" << a.x << ", " << a.y << ", " << a.z
             << ") at 0.03 s steps, (" << b.x << ", " << b.y << ", " << b.z << ") at 0.01 s; travelled " << travelled;
         EXPECT_GT(travelled, 3.0 * tolerance) << id << ": the check must be able to tell slow motion apart";
+        // The fine run really stepped 0.01 s: a step that was ignored would give the coarse run's numbers.
+        EXPECT_GT(Distance(a, b), 0.0) << id << ": the 0.01 s run is identical to the 0.03 s run";
         std::printf("%s: body %d travelled %.3f m; the two steps differ by %.4f m (tolerance %.4f m)\n", id.c_str(),
                     mover, travelled, Distance(a, b), tolerance);
         ++compared;

@@ -43,7 +43,8 @@ TEST_F(VideoRun, WebmAndGifFollowTheFrameRate) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(Probe(dir + "/run.webm", "stream=nb_read_frames"), "30");
     EXPECT_NEAR(std::stod(Probe(dir + "/run.webm", "format=duration")), 1.0, 1.0 / 30.0 + 1e-3);
-    r = RunSandboxExe({"--demo", "ch14", "--frames", "60", "--size", "160x120", "--video", dir + "/run.gif", "--quiet"});
+    r = RunSandboxExe(
+        {"--demo", "ch14", "--frames", "60", "--size", "160x120", "--video", dir + "/run.gif", "--quiet"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(Probe(dir + "/run.gif", "stream=nb_read_frames"), "50") << "60 fps becomes 50 (GIF delays: 1/100 s)";
     EXPECT_NEAR(std::stod(Probe(dir + "/run.gif", "format=duration")), 1.0, 0.021);
