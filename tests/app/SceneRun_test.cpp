@@ -1,0 +1,118 @@
+// physics-sandbox --scene FILE (docs/scenes.md): a scene file runs as a demo does (frames, --state, --set on its
+// model, its panel); a bad file exits 2 naming the file, the JSON path and the value, with nothing written.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "tests/app/SandboxRun.h"
+
+namespace {
+
+std::string WriteScene(const std::string& dir, const std::string& name, const std::string& text) {
+    const std::string path = dir + "/" + name;
+    std::ofstream(path) << text;
+    return path;
+}
+
+const char* kDrop = R"({"format": 1, "name": "Drop", "duration": 0.5,
+  "bodies": [{"id": "ground", "type": "box", "position": [0, -1, 0], "halfExtents": [5, 1, 5], "mass": 0},
+             {"id": "ball", "type": "sphere", "position": [0, 3, 0], "radius": 0.5},
+             {"id": "dot", "type": "particle", "position": [2, 3, 0]}],
+  "constraints": [{"position": [0, -1, 0], "halfExtents": [5, 1, 5]}]})";
+
+int CountLines(const std::string& text) {
+    int n = 0;
+    for (char c : text) n += c == '\n';
+    return n;
+}
+
+}  // namespace
+
+TEST(SceneRun, RunsTheFilesDurationAndWritesState) {
+    const std::string dir = ScratchDir("scene_run");
+    const std::string scene = WriteScene(dir, "drop.json", kDrop);
+    const SandboxResult r = RunSandboxExe({"--scene", scene, "--state", dir + "/s.csv", "--quiet"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string csv = ReadText(dir + "/s.csv");
+    // 0.5 s at 60 frames per second = 30 frames, 3 bodies each, plus the header.
+    EXPECT_EQ(CountLines(csv), 1 + 30 * 3);
+    EXPECT_NE(csv.find(",0,box,"), std::string::npos);
+    EXPECT_NE(csv.find(",1,sphere,"), std::string::npos);
+    EXPECT_NE(csv.find(",2,particle,"), std::string::npos);
+}
+
+TEST(SceneRun, IsDeterministicAndSetChangesTheModel) {
+    const std::string dir = ScratchDir("scene_set");
+    const std::string scene = WriteScene(dir, "drop.json", kDrop);
+    auto run = [&](const std::string& csv, std::vector<std::string> extra) {
+        std::vector<std::string> args = {"--scene", scene, "--frames", "60", "--state", dir + "/" + csv, "--quiet"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const SandboxResult r = RunSandboxExe(args);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return ReadText(dir + "/" + csv);
+    };
+    const std::string a = run("a.csv", {});
+    EXPECT_EQ(a, run("b.csv", {}));
+    EXPECT_NE(a, run("c.csv", {"--set", "integrator=rk4"}));
+    EXPECT_NE(a, run("d.csv", {"--set", "dt=0.01"}));
+}
+
+TEST(SceneRun, ParamsListTheModelSettings) {
+    const std::string dir = ScratchDir("scene_params");
+    const std::string scene = WriteScene(dir, "drop.json", kDrop);
+    const SandboxResult r = RunSandboxExe({"--scene", scene, "--set", "solver=accumulated", "--params"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("integrator"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("accumulated"), std::string::npos) << r.out;
+    const SandboxResult bad = RunSandboxExe({"--scene", scene, "--set", "nonsense=1"});
+    EXPECT_EQ(bad.exitCode, 2);
+}
+
+TEST(SceneRun, PanelShowsTheScenesNameAndDiffersFromNoUi) {
+    const std::string dir = ScratchDir("scene_panel");
+    const std::string scene = WriteScene(dir, "drop.json", kDrop);
+    const SandboxResult ui = RunSandboxExe({"--scene", scene, "--frames", "1", "--out", dir + "/ui", "--quiet"});
+    const SandboxResult none =
+        RunSandboxExe({"--scene", scene, "--frames", "1", "--out", dir + "/none", "--no-ui", "--quiet"});
+    ASSERT_EQ(ui.exitCode, 0) << ui.err;
+    ASSERT_EQ(none.exitCode, 0) << none.err;
+    EXPECT_NE(ReadText(dir + "/ui/frame_00000.png"), ReadText(dir + "/none/frame_00000.png"));
+}
+
+TEST(SceneRun, BadFileExitsTwoAndWritesNothing) {
+    const std::string dir = ScratchDir("scene_bad");
+    const std::string scene = WriteScene(dir, "bad.json", R"({"format": 1, "name": "x",
+  "bodies": [{"id": "a", "type": "box", "position": [0, 1, 0], "mass": -2}]})");
+    const SandboxResult r =
+        RunSandboxExe({"--scene", scene, "--frames", "5", "--out", dir + "/out", "--state", dir + "/s.csv"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find(scene + ": bodies[0].mass: must be >= 0 (got -2)"), std::string::npos) << r.err;
+    EXPECT_EQ(FilesIn(dir), std::vector<std::string>{"bad.json"});
+
+    const std::string broken = WriteScene(dir, "broken.json", "{\n  \"format\": 1,\n  \"name\": }\n");
+    const SandboxResult s = RunSandboxExe({"--scene", broken});
+    EXPECT_EQ(s.exitCode, 2);
+    EXPECT_NE(s.err.find(broken + ":3:11: syntax error"), std::string::npos) << s.err;
+
+    EXPECT_EQ(RunSandboxExe({"--scene", dir + "/missing.json"}).exitCode, 2);
+}
+
+TEST(SceneRun, ExactlyOneOfDemoAndScene) {
+    const SandboxResult both = RunSandboxExe({"--demo", "ch14", "--scene", "x.json"});
+    EXPECT_EQ(both.exitCode, 2);
+    EXPECT_NE(both.err.find("--demo and --scene"), std::string::npos) << both.err;
+    const SandboxResult none = RunSandboxExe({"--frames", "2"});
+    EXPECT_EQ(none.exitCode, 2);
+    EXPECT_NE(none.err.find("no --demo or --scene"), std::string::npos) << none.err;
+}
+
+TEST(SceneRun, EveryShippedSceneRuns) {
+    const std::string dir = ScratchDir("scene_shipped");
+    for (const std::string& name : FilesIn(std::string(PSB_SOURCE_DIR) + "/scenes")) {
+        if (name.size() < 5 || name.substr(name.size() - 5) != ".json" || name == "scene.schema.json") continue;
+        const SandboxResult r = RunSandboxExe({"--scene", std::string(PSB_SOURCE_DIR) + "/scenes/" + name, "--frames",
+                                               "30", "--state", dir + "/" + name + ".csv", "--quiet"});
+        EXPECT_EQ(r.exitCode, 0) << name << ": " << r.err;
+    }
+}
