@@ -151,8 +151,8 @@ void FileScene::Reset() {
         auto cloth = std::make_unique<Cloth>();
         cloth->Initialize(c.gridSize, c.spacing, c.position);
         cloth->SetStructuralSprings(-c.structuralStiffness, c.structuralDamping);
+        cloth->SetBendSprings(-c.bendStiffness, c.bendDamping);  // the book's order: structural, bend, shear
         cloth->SetShearSprings(-c.shearStiffness, c.shearDamping);
-        cloth->SetBendSprings(-c.bendStiffness, c.bendDamping);
         cloth->SetParticleMass(c.particleMass);
         cloth->SetParticleVelocityRetention(c.velocityRetention);
         for (Particle& p : cloth->verts) p.SetGravity(gravity);

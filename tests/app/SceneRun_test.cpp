@@ -116,3 +116,20 @@ TEST(SceneRun, EveryShippedSceneRuns) {
         EXPECT_EQ(r.exitCode, 0) << name << ": " << r.err;
     }
 }
+
+TEST(SceneRun, BookScenesGiveTheirDemosStateByteForByte) {
+    const std::string dir = ScratchDir("scene_book");
+    for (const std::string id : {"ch14", "ch15", "ch16"}) {
+        const SandboxResult demo = RunSandboxExe(
+            {"--demo", id, "--frames", "300", "--no-ui", "--state", dir + "/" + id + "-demo.csv", "--quiet"});
+        const SandboxResult scene =
+            RunSandboxExe({"--scene", std::string(PSB_SOURCE_DIR) + "/scenes/" + id + ".json", "--frames", "300",
+                           "--no-ui", "--state", dir + "/" + id + "-scene.csv", "--quiet"});
+        ASSERT_EQ(demo.exitCode, 0) << demo.err;
+        ASSERT_EQ(scene.exitCode, 0) << scene.err;
+        const std::string a = ReadText(dir + "/" + id + "-demo.csv");
+        EXPECT_GT(CountLines(a), 300) << id;
+        EXPECT_TRUE(a == ReadText(dir + "/" + id + "-scene.csv"))
+            << id << ": scenes/" << id << ".json differs from --demo";
+    }
+}
