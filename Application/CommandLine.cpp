@@ -79,6 +79,9 @@ const Flag kFlags[] = {
     {"--scene", "FILE", ValueType::Text, 0, 0,
      "run a scene file (docs/scenes.md) as a demo; --frames defaults to its duration",
      [](Options& o, const FlagValue& v) { o.scene = v.text; }},
+    {"--export-scene", "FILE", ValueType::Text, 0, 0,
+     "write the demo's scene (after --set) as a scene file and exit; says what the format cannot express",
+     [](Options& o, const FlagValue& v) { o.exportScene = v.text; }},
     {"--frames", "N", ValueType::Int, 1, kMaxFrames,
      "output frames to run (default 1); one frame = 1/60 s of simulated time",
      [](Options& o, const FlagValue& v) { o.frames = int(v.integer), o.framesGiven = true; }},
@@ -268,6 +271,10 @@ bool CheckCombinations(const Options& o, std::string* error) {
     if (o.mode != Options::Mode::Run) return true;
     if (!o.demo.empty() && !o.scene.empty()) {
         *error = "--demo and --scene both given; give one";
+        return false;
+    }
+    if (!o.exportScene.empty() && (o.demo.empty() || o.window)) {
+        *error = "--export-scene needs --demo ID (and no --window)";
         return false;
     }
     if (o.window) {

@@ -28,7 +28,9 @@
 #include "Demos/DemoBase.h"
 #include "Demos/DemoRegistry.h"
 #include "Demos/SceneFileDemo.h"
+#include "Demos/Scenes/SceneExport.h"
 #include "Demos/Scenes/SceneFile.h"
+#include "Platform/Files/AtomicFile.h"
 #include "Platform/Files/TempRegistry.h"
 #include "Platform/HeadlessContext.h"
 #include "Windows/BookImGuiStyle.h"
@@ -389,7 +391,37 @@ int LoadScene(Options* o, SceneDescription* scene) {
     return kExitOk;
 }
 
+/// --export-scene: the demo (built without a GL context, --set applied) described as a scene file, written whole.
+/// Exit 2 for a demo whose motion is scripted; each thing the format cannot express is listed on stderr.
+int ExportScene(const Options& o) {
+    if (const int code = CheckDemoId(o.demo); code != kExitOk) return code;
+    const DemoInfo* info = FindDemo(o.demo);
+    std::unique_ptr<DemoBase> demo = info->create();
+    if (const int code = ApplyParameters(o, *demo); code != kExitOk || o.showParams) return code;
+    const PhysicsSystem* world = demo->World();
+    if (world == nullptr) {
+        std::fprintf(stderr,
+                     "physics-sandbox: --export-scene: demo '%s' is scripted, not simulated; nothing to export\n",
+                     o.demo.c_str());
+        return kExitUsage;
+    }
+    std::vector<std::string> notes;
+    SceneDescription description = DescribeWorld(*world, info->title, &notes);
+    description.world.step = demo->PhysicsStep();
+    demo->ExportNotes(&notes);
+    const std::string text = WriteSceneText(description);
+    std::string error;
+    if (!WriteFileAtomic(o.exportScene, std::vector<std::uint8_t>(text.begin(), text.end()), &error)) {
+        std::fprintf(stderr, "physics-sandbox: --export-scene: %s\n", error.c_str());
+        return kExitFailure;
+    }
+    for (const std::string& note : notes)
+        std::fprintf(stderr, "physics-sandbox: --export-scene: not expressed: %s\n", note.c_str());
+    return kExitOk;
+}
+
 int RunUnguarded(const Options& given, RunStats* stats) {
+    if (!given.exportScene.empty()) return ExportScene(given);
     const Clock::time_point wallStart = Clock::now();
     const double processCpuStart = CpuSeconds(CLOCK_PROCESS_CPUTIME_ID);
     Options o = given;

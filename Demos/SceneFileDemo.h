@@ -27,6 +27,8 @@ public:
 
     const FileScene& Scene() const { return scene; }
 
+    const PhysicsSystem* World() const override { return &scene.System(); }
+
 private:
     FileScene scene;
 };

@@ -277,7 +277,9 @@ void ReadBody(const Json& j, const std::string& path, SceneBody* b, Problems* pr
                 problems->Add(r.PathOf("quaternion"), "must have a non-zero length", &j.at("quaternion"));
             } else {
                 b->hasQuaternion = true;
-                b->orientation = Normalized(quat(q[0], q[1], q[2], q[3]));
+                // Normalised unless already of unit length to 1e-6, so an exported orientation reads back exactly.
+                b->orientation = quat(q[0], q[1], q[2], q[3]);
+                if (std::fabs(len - 1.0f) > 1e-6f) b->orientation = Normalized(b->orientation);
             }
         }
         r.Vec3("angularVelocity", &b->angularVelocity);

@@ -133,3 +133,36 @@ TEST(SceneRun, BookScenesGiveTheirDemosStateByteForByte) {
             << id << ": scenes/" << id << ".json differs from --demo";
     }
 }
+
+TEST(SceneRun, ExportedDemoScenesRunAsTheirDemos) {
+    const std::string dir = ScratchDir("scene_export");
+    for (const std::string id : {"ch15", "ch16", "springs", "momentum", "linear-impulse"}) {
+        const std::string file = dir + "/" + id + ".json";
+        const SandboxResult exported = RunSandboxExe({"--demo", id, "--export-scene", file});
+        ASSERT_EQ(exported.exitCode, 0) << id << ": " << exported.err;
+        const SandboxResult demo = RunSandboxExe(
+            {"--demo", id, "--frames", "120", "--no-ui", "--state", dir + "/" + id + "-demo.csv", "--quiet"});
+        const SandboxResult scene = RunSandboxExe(
+            {"--scene", file, "--frames", "120", "--no-ui", "--state", dir + "/" + id + "-scene.csv", "--quiet"});
+        ASSERT_EQ(demo.exitCode, 0) << demo.err;
+        ASSERT_EQ(scene.exitCode, 0) << scene.err;
+        EXPECT_TRUE(ReadText(dir + "/" + id + "-demo.csv") == ReadText(dir + "/" + id + "-scene.csv")) << id;
+    }
+}
+
+TEST(SceneRun, ExportSaysWhatItCouldNotExpress) {
+    const std::string dir = ScratchDir("scene_export_notes");
+    const SandboxResult ch14 = RunSandboxExe({"--demo", "ch14", "--export-scene", dir + "/ch14.json"});
+    EXPECT_EQ(ch14.exitCode, 0) << ch14.err;
+    EXPECT_NE(ch14.err.find("not expressed: constraints[1]: orientation"), std::string::npos) << ch14.err;
+    EXPECT_NE(ch14.err.find("y = -5"), std::string::npos) << ch14.err;
+    const SandboxResult raycast = RunSandboxExe({"--demo", "raycast", "--export-scene", dir + "/raycast.json"});
+    EXPECT_EQ(raycast.exitCode, 2);
+    EXPECT_NE(raycast.err.find("scripted, not simulated"), std::string::npos) << raycast.err;
+    EXPECT_EQ(FilesIn(dir), std::vector<std::string>{"ch14.json"});
+    // --set applies before the export.
+    const SandboxResult set =
+        RunSandboxExe({"--demo", "ch15", "--set", "iterations=13", "--export-scene", dir + "/ch15.json"});
+    ASSERT_EQ(set.exitCode, 0) << set.err;
+    EXPECT_NE(ReadText(dir + "/ch15.json").find("\"iterations\": 13"), std::string::npos);
+}

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "Demos/Scenes/FileScene.h"
+#include "Demos/Scenes/SceneExport.h"
 #include "tests/support/Approx.h"
 
 namespace {
@@ -321,4 +322,48 @@ TEST(FileScene, StepsUnderTheFilesGravity) {
     EXPECT_FALSE(scene.Step(0.0f));
     scene.Reset();
     EXPECT_EQ(scene.Particles()[0].GetVelocity().y, 0.0f);
+}
+
+TEST(SceneExport, WrittenTextReadsBackToTheSameWorld) {
+    SceneDescription d;
+    ASSERT_TRUE(Problems(File(std::string(kBox) + "," + kP1 + "," + kP2 +
+                                  R"(, {"id": "s", "type": "sphere", "position": [1, 2, 3], "radius": 0.3,
+                                   "euler": [10, 20, 30], "velocity": [0.1, 0, 0], "friction": 0.25})",
+                              R"("springs": [{"a": "p", "b": "q", "stiffness": 5, "damping": 0.5, "restLength": 1.5}],
+                                 "joints": [{"a": "p", "b": "q", "length": 1}],
+                                 "constraints": [{"position": [0, -1, 0], "halfExtents": [5, 1, 5]}],
+                                 "cloths": [{"gridSize": 4, "spacing": 0.3, "position": [0, 4, 0]}],
+                                 "world": {"iterations": 7, "integrator": "rk4"})"),
+                         &d)
+                    .empty());
+    FileScene original(d);
+    std::vector<std::string> notes;
+    const SceneDescription described = DescribeWorld(original.System(), "round trip", &notes);
+    EXPECT_TRUE(notes.empty()) << notes.front();
+    SceneDescription read;
+    std::vector<std::string> errors;
+    ASSERT_TRUE(ParseSceneText(WriteSceneText(described), "export.json", &read, &errors)) << errors.front();
+    FileScene copy(read);
+    EXPECT_EQ(copy.System().settings.solverIterations, 7);
+    EXPECT_EQ(copy.System().settings.integrator, Integrator::RK4);
+    ASSERT_EQ(copy.System().Bodies().size(), original.System().Bodies().size());
+    ASSERT_EQ(copy.System().Springs().size(), 1u);
+    EXPECT_EQ(copy.System().Springs()[0].b, 0.5f);
+    EXPECT_EQ(copy.System().Joints().size(), 1u);
+    ASSERT_EQ(copy.System().Cloths().size(), 1u);
+    for (int step = 0; step < 30; ++step) {
+        original.Step(0.03f);
+        copy.Step(0.03f);
+    }
+    for (std::size_t i = 0; i < original.Volumes().size(); ++i) {
+        EXPECT_TRUE(VecNear(original.Volumes()[i].position, copy.Volumes()[i].position, 0.0f)) << i;
+    }
+    for (std::size_t i = 0; i < original.Particles().size(); ++i) {
+        EXPECT_TRUE(VecNear(original.Particles()[i].GetPosition(), copy.Particles()[i].GetPosition(), 0.0f)) << i;
+    }
+    const Cloth& a = *original.Cloths()[0];
+    const Cloth& b = *copy.Cloths()[0];
+    for (std::size_t i = 0; i < a.verts.size(); ++i) {
+        EXPECT_TRUE(VecNear(a.verts[i].GetPosition(), b.verts[i].GetPosition(), 0.0f)) << i;
+    }
 }
