@@ -76,6 +76,12 @@ const Flag kFlags[] = {
      [](Options& o, const FlagValue&) { o.mode = Options::Mode::List; }},
     {"--demo", "ID", ValueType::Text, 0, 0, "the demo to run (see --list)",
      [](Options& o, const FlagValue& v) { o.demo = v.text; }},
+    {"--scene", "FILE", ValueType::Text, 0, 0,
+     "run a scene file (docs/scenes.md) as a demo; --frames defaults to its duration",
+     [](Options& o, const FlagValue& v) { o.scene = v.text; }},
+    {"--export-scene", "FILE", ValueType::Text, 0, 0,
+     "write the demo's scene (after --set) as a scene file and exit; says what the format cannot express",
+     [](Options& o, const FlagValue& v) { o.exportScene = v.text; }},
     {"--frames", "N", ValueType::Int, 1, kMaxFrames,
      "output frames to run (default 1); one frame = 1/60 s of simulated time",
      [](Options& o, const FlagValue& v) { o.frames = int(v.integer), o.framesGiven = true; }},
@@ -263,20 +269,32 @@ const char* HeadlessOnlyFlag(const Options& o) {
 
 bool CheckCombinations(const Options& o, std::string* error) {
     if (o.mode != Options::Mode::Run) return true;
+    if (!o.demo.empty() && !o.scene.empty()) {
+        *error = "--demo and --scene both given; give one";
+        return false;
+    }
+    if (!o.exportScene.empty() && (o.demo.empty() || o.window)) {
+        *error = "--export-scene needs --demo ID (and no --window)";
+        return false;
+    }
     if (o.window) {
+        if (!o.scene.empty()) {
+            *error = "--scene runs headless; --window opens the book's demos only";
+            return false;
+        }
         if (const char* flag = HeadlessOnlyFlag(o)) {
             *error = std::string("--window shows frames on the screen; ") + flag + " is for headless runs";
             return false;
         }
         return true;  // no --demo: the book's start screen
     }
-    if (o.demo.empty())
-        *error = "no --demo given (see --list for the ids, --help for usage)";
+    if (o.demo.empty() && o.scene.empty())
+        *error = "no --demo or --scene given (see --list for the ids, --help for usage)";
     else if (o.updateGolden && o.compareDir.empty())
         *error = "--update-golden needs --compare DIR (the golden directory to rewrite)";
     else if (!o.compareDir.empty() && !o.updateGolden && o.outDir.empty())
         *error = "--compare needs --out DIR (frames and mismatch images are written there)";
-    else if (!o.onlyFrames.empty() && o.onlyFrames.back() >= o.frames)
+    else if (!o.onlyFrames.empty() && o.onlyFrames.back() >= o.frames && (o.scene.empty() || o.framesGiven))
         *error = "--only-frames " + std::to_string(o.onlyFrames.back()) + " is not below --frames " +
                  std::to_string(o.frames);
     else
@@ -322,6 +340,7 @@ ParseStatus ParseCommandLine(int argc, const char* const* argv, Options* o, std:
 std::string UsageText() {
     std::string text =
         "Usage: physics-sandbox --demo ID [options]\n"
+        "       physics-sandbox --scene FILE [options]\n"
         "       physics-sandbox --window [--demo ID] [--frames N] [--set KEY=VALUE]...\n"
         "       physics-sandbox --list | --help\n\n"
         "Renders a demo of the Game Physics Cookbook (ch. 14-16) off-screen (OSMesa or EGL, llvmpipe) to PNG frames\n"

@@ -18,6 +18,8 @@ struct Options {
     bool window = false;
 
     std::string demo;
+    std::string scene;        ///< --scene FILE: a scene file (docs/scenes.md) instead of --demo
+    std::string exportScene;  ///< --export-scene FILE: write the demo's scene as a scene file and exit
     int frames = 1;
     bool framesGiven = false;  ///< --frames was on the command line (--window then closes after that many)
     std::string outDir;        ///< "" = frames are rendered but not written

@@ -27,6 +27,10 @@
 #endif
 #include "Demos/DemoBase.h"
 #include "Demos/DemoRegistry.h"
+#include "Demos/SceneFileDemo.h"
+#include "Demos/Scenes/SceneExport.h"
+#include "Demos/Scenes/SceneFile.h"
+#include "Platform/Files/AtomicFile.h"
 #include "Platform/Files/TempRegistry.h"
 #include "Platform/HeadlessContext.h"
 #include "Windows/BookImGuiStyle.h"
@@ -122,7 +126,7 @@ int CheckBackend(const Options& o) {
 
 // One headless context, ImGui with its OpenGL2 back end (no ini file, fixed display size and delta time, the
 // book's look: docs/book-reference.md §1.7), the window and the demo. Exit 3 when the context or the demo cannot start.
-int StartSession(const Options& o, Session* s, RunStats* stats) {
+int StartSession(const Options& o, const SceneDescription* scene, Session* s, RunStats* stats) {
     PinSoftwareRasterizer();
     HeadlessInfo info;
     std::string error;
@@ -151,7 +155,9 @@ int StartSession(const Options& o, Session* s, RunStats* stats) {
     s->window->OnResize(o.width, o.height);
     s->window->SetUIVisible(!o.noUi);
     s->window->SetNominalFrameTime(float(1000.0 * o.frameTime.ToDouble()));
-    if (!s->window->StartDemo(o.demo) || !s->window->CurrentDemo()) {
+    const bool started = scene != nullptr ? s->window->StartDemo(std::make_unique<SceneFileDemo>(*scene), o.demo)
+                                          : s->window->StartDemo(o.demo);
+    if (!started || !s->window->CurrentDemo()) {
         std::fprintf(stderr, "physics-sandbox: demo '%s' failed to start\n", o.demo.c_str());
         return kExitFailure;
     }
@@ -364,15 +370,69 @@ void PrintSummary(const Options& o, const RunStats& s, const std::string& frameD
                  frameDir.empty() ? "" : "; frames in ", frameDir.c_str());
 }
 
-int RunUnguarded(const Options& o, RunStats* stats) {
+/// --scene: loads the file into *scene (exit 2 listing every problem, before anything is written), names the run
+/// after it in o->demo and, without --frames, runs the scene's duration.
+int LoadScene(Options* o, SceneDescription* scene) {
+    std::vector<std::string> errors;
+    if (!LoadSceneFile(o->scene, scene, &errors)) {
+        for (const std::string& e : errors) std::fprintf(stderr, "physics-sandbox: %s\n", e.c_str());
+        return kExitUsage;
+    }
+    o->demo = "scene " + o->scene;
+    if (!o->framesGiven) {
+        const double frames = std::ceil(double(scene->duration) / o->frameTime.ToDouble() - 1e-9);
+        o->frames = int(std::clamp(frames, 1.0, 1e8));
+    }
+    if (!o->onlyFrames.empty() && o->onlyFrames.back() >= o->frames) {
+        std::fprintf(stderr, "physics-sandbox: --only-frames %d is not below the scene's %d frames\n",
+                     o->onlyFrames.back(), o->frames);
+        return kExitUsage;
+    }
+    return kExitOk;
+}
+
+/// --export-scene: the demo (built without a GL context, --set applied) described as a scene file, written whole.
+/// Exit 2 for a demo whose motion is scripted; each thing the format cannot express is listed on stderr.
+int ExportScene(const Options& o) {
+    if (const int code = CheckDemoId(o.demo); code != kExitOk) return code;
+    const DemoInfo* info = FindDemo(o.demo);
+    std::unique_ptr<DemoBase> demo = info->create();
+    if (const int code = ApplyParameters(o, *demo); code != kExitOk || o.showParams) return code;
+    const PhysicsSystem* world = demo->World();
+    if (world == nullptr) {
+        std::fprintf(stderr,
+                     "physics-sandbox: --export-scene: demo '%s' is scripted, not simulated; nothing to export\n",
+                     o.demo.c_str());
+        return kExitUsage;
+    }
+    std::vector<std::string> notes;
+    SceneDescription description = DescribeWorld(*world, info->title, &notes);
+    description.world.step = demo->PhysicsStep();
+    demo->ExportNotes(&notes);
+    const std::string text = WriteSceneText(description);
+    std::string error;
+    if (!WriteFileAtomic(o.exportScene, std::vector<std::uint8_t>(text.begin(), text.end()), &error)) {
+        std::fprintf(stderr, "physics-sandbox: --export-scene: %s\n", error.c_str());
+        return kExitFailure;
+    }
+    for (const std::string& note : notes)
+        std::fprintf(stderr, "physics-sandbox: --export-scene: not expressed: %s\n", note.c_str());
+    return kExitOk;
+}
+
+int RunUnguarded(const Options& given, RunStats* stats) {
+    if (!given.exportScene.empty()) return ExportScene(given);
     const Clock::time_point wallStart = Clock::now();
     const double processCpuStart = CpuSeconds(CLOCK_PROCESS_CPUTIME_ID);
-    int code = CheckDemoId(o.demo);
+    Options o = given;
+    SceneDescription scene;
+    const bool fromFile = !o.scene.empty();
+    int code = fromFile ? LoadScene(&o, &scene) : CheckDemoId(o.demo);
     if (code == kExitOk) code = CheckBackend(o);
     if (code == kExitOk) code = CheckOutputArguments(o);
     if (code != kExitOk) return code;
     Session session;
-    if ((code = StartSession(o, &session, stats)) != kExitOk) return code;
+    if ((code = StartSession(o, fromFile ? &scene : nullptr, &session, stats)) != kExitOk) return code;
     DemoBase& demo = *session.window->CurrentDemo();
     if ((code = ApplyParameters(o, demo)) != kExitOk || o.showParams) return code;
     const float baseYaw = ApplyCamera(o, demo);

@@ -31,6 +31,11 @@ public:
     /// Rebuilds the scene from the current parameter values (the book's ResetDemo).
     void ResetDemo();
 
+    const PhysicsSystem* World() const override { return &scene.System(); }
+    void ExportNotes(std::vector<std::string>* notes) const override {
+        notes->push_back("the demo lifts particles below y = -5 back to it after each step (not in the format)");
+    }
+
 private:
     Ch14Scene scene;
     int particleCount = Ch14Params().particleCount;

@@ -22,6 +22,8 @@ public:
 
     const Ch15Scene& Scene() const { return scene; }
 
+    const PhysicsSystem* World() const override { return &scene.System(); }
+
 private:
     Ch15Scene scene;
 };

@@ -32,6 +32,8 @@ public:
 
     const Ch16Scene& Scene() const { return scene; }
 
+    const PhysicsSystem* World() const override { return &scene.System(); }
+
 private:
     Ch16Scene scene;
     bool reported = false;

@@ -21,6 +21,8 @@ public:
 
     const MomentumScene& Scene() const { return scene; }
 
+    const PhysicsSystem* World() const override { return &scene.System(); }
+
 private:
     MomentumScene scene;
 };

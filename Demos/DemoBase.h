@@ -9,6 +9,7 @@
 #include "Application/View/Camera.h"
 #include "Demos/ParameterPanel.h"
 #include "Demos/Scenes/Parameters.h"
+#include "Physics/PhysicsSystem.h"
 
 /// One row of the --state CSV.
 struct BodyState {
@@ -59,6 +60,11 @@ public:
     /// True once the demo's stability monitor has reported a blow-up (the world is then frozen); *report is
     /// the monitor's one-line message. Demos without a monitor are never unstable.
     virtual bool Unstable(std::string* /*report*/) const { return false; }
+    /// The simulated world, for --export-scene (docs/scenes.md, "Export"); nullptr for a demo whose motion is
+    /// scripted rather than simulated.
+    virtual const PhysicsSystem* World() const { return nullptr; }
+    /// Appends what the demo does beyond its world that a scene file cannot express (for --export-scene).
+    virtual void ExportNotes(std::vector<std::string>* /*notes*/) const {}
 
 protected:
     /// The demo's panel: BeginDemoPanel, the parameter table's widgets (DrawParameterPanel), End.

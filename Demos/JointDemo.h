@@ -32,6 +32,8 @@ public:
 
     const JointScene& Scene() const { return scene; }
 
+    const PhysicsSystem* World() const override { return &scene.System(); }
+
 private:
     MsvcRand rng;  // the book's rand(): seed 1, never reseeded, so each Reset spawns elsewhere
     JointScene scene;

@@ -22,6 +22,8 @@ public:
 
     const LinearImpulseScene& Scene() const { return scene; }
 
+    const PhysicsSystem* World() const override { return &scene.System(); }
+
 private:
     LinearImpulseScene scene;
 };

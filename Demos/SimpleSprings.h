@@ -32,6 +32,8 @@ public:
 
     const SpringsScene& Scene() const { return scene; }
 
+    const PhysicsSystem* World() const override { return &scene.System(); }
+
 private:
     SpringsScene scene;
     bool reported = false;

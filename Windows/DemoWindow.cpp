@@ -107,10 +107,17 @@ void DemoWindow::OnFixedUpdate(float fixedDeltaTime) {
 void DemoWindow::OnShutdown() { StopDemo(); }
 
 bool DemoWindow::StartDemo(const std::string& id) {
-    StopDemo();
     const DemoInfo* info = FindDemo(id);
-    if (info == nullptr) return false;
-    demo = info->create();
+    if (info == nullptr) {
+        StopDemo();
+        return false;
+    }
+    return StartDemo(info->create(), id);
+}
+
+bool DemoWindow::StartDemo(std::unique_ptr<DemoBase> created, const std::string& id) {
+    StopDemo();
+    demo = std::move(created);
     if (!demo) return false;
     demoId = id;
     demo->Initialize(width, height);

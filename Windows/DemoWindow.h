@@ -34,6 +34,9 @@ public:
     /// camera Update so the view is valid on the first frame (erratum 5.2-29). Needs the GL context current.
     /// False (and no demo running) if the id is unknown.
     bool StartDemo(const std::string& id);
+    /// Stops the current demo and starts `created` (a demo outside the id table, such as a scene file's) under
+    /// the name `id`, as StartDemo(id) does. False (and no demo running) if `created` is null.
+    bool StartDemo(std::unique_ptr<DemoBase> created, const std::string& id);
     /// Shuts the current demo down; nothing if none runs.
     void StopDemo();
     DemoBase* CurrentDemo() { return demo.get(); }

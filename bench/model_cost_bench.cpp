@@ -8,6 +8,8 @@
 #include "Demos/Scenes/Ch14Scene.h"
 #include "Demos/Scenes/Ch15Scene.h"
 #include "Demos/Scenes/Ch16Scene.h"
+#include "Demos/Scenes/FileScene.h"
+#include "Demos/Scenes/SceneFile.h"
 #include "Demos/Scenes/WorldBuilder.h"
 #include "Physics/Cloth.h"
 #include "Physics/RigidbodyVolume.h"
@@ -77,6 +79,26 @@ void BM_Ch16Step(benchmark::State& state) {
 
 }  // namespace
 
+/// A shipped scene file (scenes/NAME.json) as FileScene builds it: only what the file names is in the world.
+void SceneFileStep(benchmark::State& state, const char* name) {
+    SceneDescription description;
+    std::vector<std::string> errors;
+    if (!LoadSceneFile(std::string(PSB_SOURCE_DIR) + "/scenes/" + name + ".json", &description, &errors)) {
+        state.SkipWithError(errors.front().c_str());
+        return;
+    }
+    FileScene scene(description);
+    Extras extras;
+    extras.Add(int(state.range(0)), scene.System());
+    for (int i = 0; i < 100; ++i) scene.Step(0.03f);
+    for (auto _ : state) scene.Step(0.03f);
+    state.SetLabel(std::string(name) + ".json " + ExtraName(int(state.range(0))));
+}
+void BM_SceneFileCh14Step(benchmark::State& state) { SceneFileStep(state, "ch14"); }
+void BM_SceneFileCh16Step(benchmark::State& state) { SceneFileStep(state, "ch16"); }
+
+BENCHMARK(BM_SceneFileCh14Step)->Arg(kNone)->Arg(kEmptyCloth)->Arg(kFarVolume);
+BENCHMARK(BM_SceneFileCh16Step)->Arg(kNone)->Arg(kFarVolume);
 BENCHMARK(BM_Ch14Step)->Arg(kNone)->Arg(kEmptyCloth)->Arg(kFarVolume);
 BENCHMARK(BM_Ch15Step)->Arg(kNone)->Arg(kEmptyCloth)->Arg(kForcedBroadphase);
 BENCHMARK(BM_Ch16Step)->Arg(kNone)->Arg(kFarVolume);

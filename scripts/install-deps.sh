@@ -17,6 +17,7 @@ packages=(
   libgtest-dev
   libbenchmark-dev
   libpng-dev          # PNG encoder for frames
+  nlohmann-json3-dev  # scene files (--scene): JSON parsing, header-only
   gnuplot-nox         # speed/accuracy plots (bench/)
   ccache              # faster rebuilds (optional at build time)
   libglfw3-dev        # --window: the desktop window (X11)

@@ -22,7 +22,9 @@ void Require(bool ok, const char* what) {
 
 void CheckAccepted(const Options& o) {
     if (o.mode != Options::Mode::Run) return;
-    Require(!o.demo.empty() || o.window, "a headless run names a demo");
+    Require(!o.demo.empty() || !o.scene.empty() || o.window, "a headless run names a demo or a scene");
+    Require(o.demo.empty() || o.scene.empty(), "never both --demo and --scene");
+    Require(o.exportScene.empty() || (!o.demo.empty() && !o.window), "--export-scene exports a demo");
     Require(!o.window || (o.outDir.empty() && o.compareDir.empty() && o.stateFile.empty() && o.videoFile.empty()),
             "--window takes no headless outputs");
     Require(o.backend == "auto" || o.backend == "osmesa" || o.backend == "egl", "a known back end");

@@ -1,0 +1,492 @@
+#include "Demos/Scenes/SceneFile.h"
+
+#include <sys/stat.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+using Json = nlohmann::json;
+
+namespace {
+
+/// Value ranges a number may be restricted to (docs/scenes.md lists each field's).
+enum class Range { Any, NonNegative, Positive, Fraction };
+
+/// Collects "FILE: PATH: message (value)" lines.
+class Problems {
+public:
+    Problems(std::string fileName, std::vector<std::string>* out) : file(std::move(fileName)), lines(out) {}
+    void Add(const std::string& path, const std::string& message, const Json* value = nullptr) {
+        std::string line = file + ": " + (path.empty() ? std::string("(top level)") : path) + ": " + message;
+        if (value != nullptr) {
+            std::string text = value->dump();
+            if (text.size() > 60) text = text.substr(0, 57) + "...";
+            line += " (got " + text + ")";
+        }
+        lines->push_back(line);
+        ++count;
+    }
+    int Count() const { return count; }
+
+private:
+    std::string file;
+    std::vector<std::string>* lines;
+    int count = 0;
+};
+
+std::string Join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+std::string Index(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
+/// Reads the fields of one JSON object, remembering which keys were read so Finish can reject the rest.
+class ObjectReader {
+public:
+    ObjectReader(const Json& object, std::string objectPath, Problems* problems)
+        : obj(object), path(std::move(objectPath)), out(problems) {
+        ok = obj.is_object();
+        if (!ok) out->Add(path, "must be an object", &obj);
+    }
+    bool Valid() const { return ok; }
+    bool Has(const char* key) const { return ok && obj.contains(key); }
+
+    /// A number into *value; range-checked after conversion to float (so 1e39 is reported as infinite).
+    void Float(const char* key, float* value, Range range, bool required = false) {
+        const Json* v = Find(key, required);
+        if (v == nullptr) return;
+        if (!v->is_number()) return Bad(key, "must be a number", v);
+        const double d = v->get<double>();
+        const float f = static_cast<float>(d);
+        if (!std::isfinite(d) || !std::isfinite(f)) return Bad(key, "must be finite", v);
+        if (range == Range::NonNegative && f < 0.0f) return Bad(key, "must be >= 0", v);
+        if (range == Range::Positive && !(f > 0.0f)) return Bad(key, "must be > 0", v);
+        if (range == Range::Fraction && !(f >= 0.0f && f <= 1.0f)) return Bad(key, "must be in [0, 1]", v);
+        *value = f;
+    }
+    void Int(const char* key, int* value, int lo, int hi, bool required = false) {
+        const Json* v = Find(key, required);
+        if (v == nullptr) return;
+        if (!v->is_number_integer()) return Bad(key, "must be an integer", v);
+        const long long n = v->get<long long>();
+        if (n < lo || n > hi) {
+            return Bad(key, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]", v);
+        }
+        *value = static_cast<int>(n);
+    }
+    void Bool(const char* key, bool* value) {
+        const Json* v = Find(key, false);
+        if (v == nullptr) return;
+        if (!v->is_boolean()) return Bad(key, "must be true or false", v);
+        *value = v->get<bool>();
+    }
+    void String(const char* key, std::string* value, bool required = false) {
+        const Json* v = Find(key, required);
+        if (v == nullptr) return;
+        if (!v->is_string() || v->get<std::string>().empty()) return Bad(key, "must be a non-empty string", v);
+        *value = v->get<std::string>();
+    }
+    /// An array of `n` finite numbers (n <= 4); false if absent or bad.
+    bool Numbers(const char* key, float* values, int n, Range range, bool required = false) {
+        const Json* v = Find(key, required);
+        if (v == nullptr) return false;
+        if (!v->is_array() || v->size() != static_cast<std::size_t>(n)) {
+            Bad(key, "must be an array of " + std::to_string(n) + " numbers", v);
+            return false;
+        }
+        float tmp[4] = {};
+        bool good = true;
+        for (int i = 0; i < n; ++i) {
+            const Json& e = (*v)[static_cast<std::size_t>(i)];
+            const std::string at = Index(Join(path, key), static_cast<std::size_t>(i));
+            if (!e.is_number()) {
+                out->Add(at, "must be a number", &e);
+                good = false;
+                continue;
+            }
+            const float f = static_cast<float>(e.get<double>());
+            if (!std::isfinite(e.get<double>()) || !std::isfinite(f)) {
+                out->Add(at, "must be finite", &e);
+                good = false;
+            } else if (range == Range::Positive && !(f > 0.0f)) {
+                out->Add(at, "must be > 0", &e);
+                good = false;
+            } else if (range == Range::Fraction && !(f >= 0.0f && f <= 1.0f)) {
+                out->Add(at, "must be in [0, 1]", &e);
+                good = false;
+            }
+            tmp[i] = f;
+        }
+        if (good) std::copy(tmp, tmp + n, values);
+        return good;
+    }
+    bool Vec3(const char* key, vec3* value, Range range = Range::Any, bool required = false) {
+        float f[3];
+        if (!Numbers(key, f, 3, range, required)) return false;
+        *value = vec3(f[0], f[1], f[2]);
+        return true;
+    }
+    /// A sub-object, or nullptr if absent (reported if required).
+    const Json* Object(const char* key, bool required = false) { return Find(key, required); }
+    /// An array of at most `limit` entries, or nullptr if absent or bad.
+    const Json* Array(const char* key, std::size_t limit) {
+        const Json* v = Find(key, false);
+        if (v == nullptr) return nullptr;
+        if (!v->is_array()) {
+            Bad(key, "must be an array", v);
+            return nullptr;
+        }
+        if (v->size() > limit) {
+            const Json count = v->size();
+            Bad(key, "has more than the limit of " + std::to_string(limit) + " entries", &count);
+            return nullptr;
+        }
+        return v;
+    }
+    void Reject(const char* key, const std::string& why) {
+        if (Has(key)) Bad(key, why, &obj.at(key));
+        read.insert(key);
+    }
+    /// Reports every key that was never read.
+    void Finish() {
+        if (!ok) return;
+        for (auto it = obj.begin(); it != obj.end(); ++it) {
+            if (read.count(it.key()) == 0) out->Add(Join(path, it.key()), "unknown key");
+        }
+    }
+    const std::string& Path() const { return path; }
+    std::string PathOf(const char* key) const { return Join(path, key); }
+
+private:
+    const Json* Find(const char* key, bool required) {
+        read.insert(key);
+        if (!ok) return nullptr;
+        auto it = obj.find(key);
+        if (it == obj.end()) {
+            if (required) out->Add(Join(path, key), "is required");
+            return nullptr;
+        }
+        return &*it;
+    }
+    void Bad(const char* key, const std::string& message, const Json* value) {
+        out->Add(Join(path, key), message, value);
+    }
+
+    const Json& obj;
+    std::string path;
+    Problems* out;
+    bool ok = false;
+    std::set<std::string> read;
+};
+
+void ReadWorld(const Json& j, SceneWorld* w, Problems* problems) {
+    ObjectReader r(j, "world", problems);
+    r.Vec3("gravity", &w->gravity);
+    r.Float("step", &w->step, Range::NonNegative);
+    if (w->step > 1.0f) problems->Add("world.step", "must be at most 1 s", &j.at("step"));
+    std::string name;
+    r.String("integrator", &name);
+    if (!name.empty() && !ParseIntegrator(name, &w->integrator)) {
+        problems->Add("world.integrator", "is not an integrator (" + std::string(IntegratorIds()) + ")",
+                      &j.at("integrator"));
+    }
+    name.clear();
+    r.String("contactSolver", &name);
+    if (!name.empty() && !ParseContactSolver(name, &w->contactSolver)) {
+        problems->Add("world.contactSolver", "is not a contact solver (book, accumulated)", &j.at("contactSolver"));
+    }
+    r.Int("iterations", &w->iterations, 1, SceneLimits::kMaxIterations);
+    r.Float("penetrationSlop", &w->penetrationSlop, Range::NonNegative);
+    r.Bool("linearProjection", &w->linearProjection);
+    r.Float("projectionFraction", &w->projectionFraction, Range::Fraction);
+    r.Int("substeps", &w->maxSubsteps, 1, SceneLimits::kMaxSubsteps);
+    r.Float("warmStartFactor", &w->warmStartFactor, Range::Fraction);
+    r.Float("baumgarte", &w->baumgarte, Range::Fraction);
+    r.Float("restitutionThreshold", &w->restitutionThreshold, Range::NonNegative);
+    r.Reject("sleep", "is not supported: this engine has no sleeping bodies");
+    r.Finish();
+}
+
+void ReadCamera(const Json& j, SceneCamera* c, Problems* problems) {
+    ObjectReader r(j, "camera", problems);
+    r.Vec3("target", &c->target);
+    float rot[2];
+    if (r.Numbers("rotation", rot, 2, Range::Any)) c->rotation = vec2(rot[0], rot[1]);
+    r.Float("zoom", &c->zoom, Range::Positive);
+    r.Finish();
+}
+
+bool ParseKind(const std::string& text, SceneBodyKind* kind) {
+    if (text == "particle")
+        *kind = SceneBodyKind::Particle;
+    else if (text == "sphere")
+        *kind = SceneBodyKind::Sphere;
+    else if (text == "box")
+        *kind = SceneBodyKind::Box;
+    else
+        return false;
+    return true;
+}
+
+void ReadBody(const Json& j, const std::string& path, SceneBody* b, Problems* problems) {
+    ObjectReader r(j, path, problems);
+    if (!r.Valid()) return;
+    r.String("id", &b->id, true);
+    std::string type;
+    r.String("type", &type, true);
+    if (!type.empty() && !ParseKind(type, &b->kind)) {
+        problems->Add(r.PathOf("type"), "must be particle, sphere or box", &j.at("type"));
+    }
+    const bool particle = b->kind == SceneBodyKind::Particle;
+    if (particle) {
+        b->restitution = 0.7f;
+        b->velocityRetention = 0.95f;
+    }
+    r.Vec3("position", &b->position, Range::Any, true);
+    r.Vec3("velocity", &b->velocity);
+    r.Float("mass", &b->mass, Range::NonNegative);
+    r.Float("restitution", &b->restitution, Range::Fraction);
+    r.Float("velocityRetention", &b->velocityRetention, Range::Fraction);
+    float rgb[3];
+    if (r.Numbers("color", rgb, 3, Range::Fraction)) {
+        b->hasColor = true;
+        b->color = vec3(rgb[0], rgb[1], rgb[2]);
+    }
+    if (particle) {
+        const char* why = "is not a particle field (particles are points: no size, orientation, spin or friction)";
+        for (const char* key : {"halfExtents", "radius", "euler", "quaternion", "angularVelocity", "friction"}) {
+            r.Reject(key, why);
+        }
+    } else {
+        if (b->kind == SceneBodyKind::Box) {
+            r.Vec3("halfExtents", &b->halfExtents, Range::Positive);
+            r.Reject("radius", "is a sphere field; boxes take halfExtents");
+        } else {
+            r.Float("radius", &b->radius, Range::Positive);
+            r.Reject("halfExtents", "is a box field; spheres take radius");
+        }
+        if (r.Has("euler") && r.Has("quaternion")) {
+            problems->Add(path, "gives both euler and quaternion; give one orientation");
+        }
+        r.Vec3("euler", &b->eulerDegrees);
+        float q[4];
+        if (r.Numbers("quaternion", q, 4, Range::Any)) {
+            const float len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+            if (!(len > 1e-6f) || !std::isfinite(len)) {
+                problems->Add(r.PathOf("quaternion"), "must have a non-zero length", &j.at("quaternion"));
+            } else {
+                b->hasQuaternion = true;
+                // Normalised unless already of unit length to 1e-6, so an exported orientation reads back exactly.
+                b->orientation = quat(q[0], q[1], q[2], q[3]);
+                if (std::fabs(len - 1.0f) > 1e-6f) b->orientation = Normalized(b->orientation);
+            }
+        }
+        r.Vec3("angularVelocity", &b->angularVelocity);
+        r.Float("friction", &b->friction, Range::NonNegative);
+    }
+    r.Finish();
+}
+
+void ReadConstraint(const Json& j, const std::string& path, SceneConstraint* c, Problems* problems) {
+    ObjectReader r(j, path, problems);
+    r.Vec3("position", &c->position, Range::Any, true);
+    r.Vec3("halfExtents", &c->halfExtents, Range::Positive, true);
+    r.Vec3("euler", &c->eulerDegrees);
+    r.Finish();
+}
+
+/// Resolves the body id under `key` to an index of a particle; reports dangling ids and non-particles.
+bool ReadParticleRef(ObjectReader* r, const Json& j, const char* key, const std::map<std::string, std::size_t>& ids,
+                     const std::vector<SceneBody>& bodies, std::size_t* index, Problems* problems) {
+    std::string id;
+    r->String(key, &id, true);
+    if (id.empty()) return false;
+    auto it = ids.find(id);
+    if (it == ids.end()) {
+        problems->Add(r->PathOf(key), "names no body", &j.at(key));
+        return false;
+    }
+    if (bodies[it->second].kind != SceneBodyKind::Particle) {
+        problems->Add(r->PathOf(key), "must name a particle", &j.at(key));
+        return false;
+    }
+    *index = it->second;
+    return true;
+}
+
+void ReadCloth(const Json& j, const std::string& path, SceneCloth* c, Problems* problems) {
+    ObjectReader r(j, path, problems);
+    r.Int("gridSize", &c->gridSize, 3, SceneLimits::kMaxClothGrid, true);
+    r.Float("spacing", &c->spacing, Range::Positive, true);
+    r.Vec3("position", &c->position, Range::Any, true);
+    r.Float("particleMass", &c->particleMass, Range::Positive);
+    r.Float("velocityRetention", &c->velocityRetention, Range::Fraction);
+    struct Kind {
+        const char* key;
+        float* k;
+        float* b;
+    } kinds[] = {{"structural", &c->structuralStiffness, &c->structuralDamping},
+                 {"shear", &c->shearStiffness, &c->shearDamping},
+                 {"bend", &c->bendStiffness, &c->bendDamping}};
+    for (const Kind& kind : kinds) {
+        const Json* v = r.Object(kind.key);
+        if (v == nullptr) continue;
+        ObjectReader s(*v, r.PathOf(kind.key), problems);
+        s.Float("stiffness", kind.k, Range::NonNegative, true);
+        s.Float("damping", kind.b, Range::NonNegative);
+        s.Finish();
+    }
+    r.Finish();
+}
+
+void ReadTop(const Json& root, SceneDescription* d, Problems* problems) {
+    ObjectReader r(root, "", problems);
+    if (!r.Valid()) return;
+    r.Int("format", &d->format, 0, 1000000, true);
+    if (r.Has("format") && root.at("format").is_number_integer() && d->format != kSceneFormatVersion) {
+        problems->Add("format", "is not a version this build reads (" + std::to_string(kSceneFormatVersion) + ")",
+                      &root.at("format"));
+    }
+    r.String("name", &d->name, true);
+    r.Float("duration", &d->duration, Range::Positive);
+    if (d->duration > SceneLimits::kMaxDuration)
+        problems->Add("duration", "must be at most 3600 s", &root.at("duration"));
+    if (const Json* w = r.Object("world")) ReadWorld(*w, &d->world, problems);
+    if (const Json* c = r.Object("camera")) ReadCamera(*c, &d->camera, problems);
+
+    std::map<std::string, std::size_t> ids;
+    if (const Json* bodies = r.Array("bodies", SceneLimits::kMaxBodies)) {
+        d->bodies.resize(bodies->size());
+        for (std::size_t i = 0; i < bodies->size(); ++i) {
+            const std::string path = Index("bodies", i);
+            ReadBody((*bodies)[i], path, &d->bodies[i], problems);
+            const std::string& id = d->bodies[i].id;
+            if (id.empty()) continue;
+            if (!ids.emplace(id, i).second) {
+                problems->Add(path + ".id", "duplicates the id of bodies[" + std::to_string(ids[id]) + "]",
+                              &(*bodies)[i].at("id"));
+            }
+        }
+    }
+    if (const Json* list = r.Array("constraints", SceneLimits::kMaxConstraints)) {
+        d->constraints.resize(list->size());
+        for (std::size_t i = 0; i < list->size(); ++i) {
+            ReadConstraint((*list)[i], Index("constraints", i), &d->constraints[i], problems);
+        }
+    }
+    if (const Json* list = r.Array("springs", SceneLimits::kMaxSprings)) {
+        d->springs.resize(list->size());
+        for (std::size_t i = 0; i < list->size(); ++i) {
+            const Json& j = (*list)[i];
+            SceneSpring& s = d->springs[i];
+            ObjectReader sr(j, Index("springs", i), problems);
+            if (!sr.Valid()) continue;
+            const bool a = ReadParticleRef(&sr, j, "a", ids, d->bodies, &s.a, problems);
+            const bool b = ReadParticleRef(&sr, j, "b", ids, d->bodies, &s.b, problems);
+            if (a && b && s.a == s.b) problems->Add(sr.PathOf("b"), "must differ from a", &j.at("b"));
+            sr.Float("stiffness", &s.stiffness, Range::NonNegative, true);
+            sr.Float("damping", &s.damping, Range::NonNegative);
+            sr.Float("restLength", &s.restLength, Range::NonNegative, true);
+            sr.Finish();
+        }
+    }
+    if (const Json* list = r.Array("joints", SceneLimits::kMaxJoints)) {
+        d->joints.resize(list->size());
+        for (std::size_t i = 0; i < list->size(); ++i) {
+            const Json& j = (*list)[i];
+            SceneJoint& s = d->joints[i];
+            ObjectReader jr(j, Index("joints", i), problems);
+            if (!jr.Valid()) continue;
+            const bool a = ReadParticleRef(&jr, j, "a", ids, d->bodies, &s.a, problems);
+            const bool b = ReadParticleRef(&jr, j, "b", ids, d->bodies, &s.b, problems);
+            if (a && b && s.a == s.b) problems->Add(jr.PathOf("b"), "must differ from a", &j.at("b"));
+            jr.Float("length", &s.length, Range::Positive, true);
+            jr.Finish();
+        }
+    }
+    if (const Json* list = r.Array("cloths", SceneLimits::kMaxCloths)) {
+        d->cloths.resize(list->size());
+        for (std::size_t i = 0; i < list->size(); ++i)
+            ReadCloth((*list)[i], Index("cloths", i), &d->cloths[i], problems);
+    }
+    r.Finish();
+}
+
+}  // namespace
+
+void LineAndColumn(const std::string& text, std::size_t offset, int* line, int* column) {
+    if (offset > text.size()) offset = text.size();
+    int l = 1, c = 1;
+    for (std::size_t i = 0; i < offset; ++i) {
+        if (text[i] == '\n') {
+            ++l;
+            c = 1;
+        } else {
+            ++c;
+        }
+    }
+    *line = l;
+    *column = c;
+}
+
+bool ParseSceneText(const std::string& text, const std::string& fileName, SceneDescription* out,
+                    std::vector<std::string>* errors) {
+    Problems problems(fileName, errors);
+    if (text.size() > SceneLimits::kMaxFileBytes) {
+        problems.Add("", "is larger than the limit of " + std::to_string(SceneLimits::kMaxFileBytes) + " bytes");
+        return false;
+    }
+    Json root;
+    try {
+        root = Json::parse(text);
+    } catch (const Json::parse_error& e) {
+        // e.byte is 1-based: the byte at which the parser stopped.
+        int line = 0, column = 0;
+        LineAndColumn(text, e.byte > 0 ? e.byte - 1 : 0, &line, &column);
+        std::string what = e.what();
+        const std::size_t cut = what.find("syntax error");
+        if (cut != std::string::npos) what = what.substr(cut);
+        errors->push_back(fileName + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + what);
+        return false;
+    } catch (const Json::out_of_range& e) {
+        // A number beyond double range ("number overflow parsing '1e999'"): no byte position is given, so the
+        // quoted token is looked up in the text for its line and column.
+        std::string what = e.what();
+        const std::size_t open = what.find('\''), close = what.rfind('\'');
+        std::string where = fileName;
+        if (open != std::string::npos && close > open) {
+            const std::size_t at = text.find(what.substr(open + 1, close - open - 1));
+            int line = 0, column = 0;
+            LineAndColumn(text, at == std::string::npos ? 0 : at, &line, &column);
+            where += ":" + std::to_string(line) + ":" + std::to_string(column);
+            what = "number is not finite: " + what.substr(open);
+        }
+        errors->push_back(where + ": " + what);
+        return false;
+    }
+    *out = SceneDescription();
+    ReadTop(root, out, &problems);
+    return problems.Count() == 0;
+}
+
+bool LoadSceneFile(const std::string& fileName, SceneDescription* out, std::vector<std::string>* errors) {
+    struct stat st {};
+    if (stat(fileName.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) {
+        errors->push_back(fileName + ": cannot read: not a regular file");
+        return false;
+    }
+    if (static_cast<std::size_t>(st.st_size) > SceneLimits::kMaxFileBytes) {
+        errors->push_back(fileName + ": is larger than the limit of " + std::to_string(SceneLimits::kMaxFileBytes) +
+                          " bytes (got " + std::to_string(st.st_size) + ")");
+        return false;
+    }
+    std::ifstream in(fileName, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (!in && !in.eof()) {
+        errors->push_back(fileName + ": cannot read");
+        return false;
+    }
+    return ParseSceneText(text.str(), fileName, out, errors);
+}

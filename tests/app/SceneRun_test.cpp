@@ -1,0 +1,168 @@
+// physics-sandbox --scene FILE (docs/scenes.md): a scene file runs as a demo does (frames, --state, --set on its
+// model, its panel); a bad file exits 2 naming the file, the JSON path and the value, with nothing written.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "tests/app/SandboxRun.h"
+
+namespace {
+
+std::string WriteScene(const std::string& dir, const std::string& name, const std::string& text) {
+    const std::string path = dir + "/" + name;
+    std::ofstream(path) << text;
+    return path;
+}
+
+const char* kDrop = R"({"format": 1, "name": "Drop", "duration": 0.5,
+  "bodies": [{"id": "ground", "type": "box", "position": [0, -1, 0], "halfExtents": [5, 1, 5], "mass": 0},
+             {"id": "ball", "type": "sphere", "position": [0, 3, 0], "radius": 0.5},
+             {"id": "dot", "type": "particle", "position": [2, 3, 0]}],
+  "constraints": [{"position": [0, -1, 0], "halfExtents": [5, 1, 5]}]})";
+
+int CountLines(const std::string& text) {
+    int n = 0;
+    for (char c : text) n += c == '\n';
+    return n;
+}
+
+}  // namespace
+
+TEST(SceneRun, RunsTheFilesDurationAndWritesState) {
+    const std::string dir = ScratchDir("scene_run");
+    const std::string scene = WriteScene(dir, "drop.json", kDrop);
+    const SandboxResult r = RunSandboxExe({"--scene", scene, "--state", dir + "/s.csv", "--quiet"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string csv = ReadText(dir + "/s.csv");
+    // 0.5 s at 60 frames per second = 30 frames, 3 bodies each, plus the header.
+    EXPECT_EQ(CountLines(csv), 1 + 30 * 3);
+    EXPECT_NE(csv.find(",0,box,"), std::string::npos);
+    EXPECT_NE(csv.find(",1,sphere,"), std::string::npos);
+    EXPECT_NE(csv.find(",2,particle,"), std::string::npos);
+}
+
+TEST(SceneRun, IsDeterministicAndSetChangesTheModel) {
+    const std::string dir = ScratchDir("scene_set");
+    const std::string scene = WriteScene(dir, "drop.json", kDrop);
+    auto run = [&](const std::string& csv, std::vector<std::string> extra) {
+        std::vector<std::string> args = {"--scene", scene, "--frames", "60", "--state", dir + "/" + csv, "--quiet"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const SandboxResult r = RunSandboxExe(args);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return ReadText(dir + "/" + csv);
+    };
+    const std::string a = run("a.csv", {});
+    EXPECT_EQ(a, run("b.csv", {}));
+    EXPECT_NE(a, run("c.csv", {"--set", "integrator=rk4"}));
+    EXPECT_NE(a, run("d.csv", {"--set", "dt=0.01"}));
+}
+
+TEST(SceneRun, ParamsListTheModelSettings) {
+    const std::string dir = ScratchDir("scene_params");
+    const std::string scene = WriteScene(dir, "drop.json", kDrop);
+    const SandboxResult r = RunSandboxExe({"--scene", scene, "--set", "solver=accumulated", "--params"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("integrator"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("accumulated"), std::string::npos) << r.out;
+    const SandboxResult bad = RunSandboxExe({"--scene", scene, "--set", "nonsense=1"});
+    EXPECT_EQ(bad.exitCode, 2);
+}
+
+TEST(SceneRun, PanelShowsTheScenesNameAndDiffersFromNoUi) {
+    const std::string dir = ScratchDir("scene_panel");
+    const std::string scene = WriteScene(dir, "drop.json", kDrop);
+    const SandboxResult ui = RunSandboxExe({"--scene", scene, "--frames", "1", "--out", dir + "/ui", "--quiet"});
+    const SandboxResult none =
+        RunSandboxExe({"--scene", scene, "--frames", "1", "--out", dir + "/none", "--no-ui", "--quiet"});
+    ASSERT_EQ(ui.exitCode, 0) << ui.err;
+    ASSERT_EQ(none.exitCode, 0) << none.err;
+    EXPECT_NE(ReadText(dir + "/ui/frame_00000.png"), ReadText(dir + "/none/frame_00000.png"));
+}
+
+TEST(SceneRun, BadFileExitsTwoAndWritesNothing) {
+    const std::string dir = ScratchDir("scene_bad");
+    const std::string scene = WriteScene(dir, "bad.json", R"({"format": 1, "name": "x",
+  "bodies": [{"id": "a", "type": "box", "position": [0, 1, 0], "mass": -2}]})");
+    const SandboxResult r =
+        RunSandboxExe({"--scene", scene, "--frames", "5", "--out", dir + "/out", "--state", dir + "/s.csv"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find(scene + ": bodies[0].mass: must be >= 0 (got -2)"), std::string::npos) << r.err;
+    EXPECT_EQ(FilesIn(dir), std::vector<std::string>{"bad.json"});
+
+    const std::string broken = WriteScene(dir, "broken.json", "{\n  \"format\": 1,\n  \"name\": }\n");
+    const SandboxResult s = RunSandboxExe({"--scene", broken});
+    EXPECT_EQ(s.exitCode, 2);
+    EXPECT_NE(s.err.find(broken + ":3:11: syntax error"), std::string::npos) << s.err;
+
+    EXPECT_EQ(RunSandboxExe({"--scene", dir + "/missing.json"}).exitCode, 2);
+}
+
+TEST(SceneRun, ExactlyOneOfDemoAndScene) {
+    const SandboxResult both = RunSandboxExe({"--demo", "ch14", "--scene", "x.json"});
+    EXPECT_EQ(both.exitCode, 2);
+    EXPECT_NE(both.err.find("--demo and --scene"), std::string::npos) << both.err;
+    const SandboxResult none = RunSandboxExe({"--frames", "2"});
+    EXPECT_EQ(none.exitCode, 2);
+    EXPECT_NE(none.err.find("no --demo or --scene"), std::string::npos) << none.err;
+}
+
+TEST(SceneRun, EveryShippedSceneRuns) {
+    const std::string dir = ScratchDir("scene_shipped");
+    for (const std::string& name : FilesIn(std::string(PSB_SOURCE_DIR) + "/scenes")) {
+        if (name.size() < 5 || name.substr(name.size() - 5) != ".json" || name == "scene.schema.json") continue;
+        const SandboxResult r = RunSandboxExe({"--scene", std::string(PSB_SOURCE_DIR) + "/scenes/" + name, "--frames",
+                                               "30", "--state", dir + "/" + name + ".csv", "--quiet"});
+        EXPECT_EQ(r.exitCode, 0) << name << ": " << r.err;
+    }
+}
+
+TEST(SceneRun, BookScenesGiveTheirDemosStateByteForByte) {
+    const std::string dir = ScratchDir("scene_book");
+    for (const std::string id : {"ch14", "ch15", "ch16"}) {
+        const SandboxResult demo = RunSandboxExe(
+            {"--demo", id, "--frames", "300", "--no-ui", "--state", dir + "/" + id + "-demo.csv", "--quiet"});
+        const SandboxResult scene =
+            RunSandboxExe({"--scene", std::string(PSB_SOURCE_DIR) + "/scenes/" + id + ".json", "--frames", "300",
+                           "--no-ui", "--state", dir + "/" + id + "-scene.csv", "--quiet"});
+        ASSERT_EQ(demo.exitCode, 0) << demo.err;
+        ASSERT_EQ(scene.exitCode, 0) << scene.err;
+        const std::string a = ReadText(dir + "/" + id + "-demo.csv");
+        EXPECT_GT(CountLines(a), 300) << id;
+        EXPECT_TRUE(a == ReadText(dir + "/" + id + "-scene.csv"))
+            << id << ": scenes/" << id << ".json differs from --demo";
+    }
+}
+
+TEST(SceneRun, ExportedDemoScenesRunAsTheirDemos) {
+    const std::string dir = ScratchDir("scene_export");
+    for (const std::string id : {"ch15", "ch16", "springs", "momentum", "linear-impulse"}) {
+        const std::string file = dir + "/" + id + ".json";
+        const SandboxResult exported = RunSandboxExe({"--demo", id, "--export-scene", file});
+        ASSERT_EQ(exported.exitCode, 0) << id << ": " << exported.err;
+        const SandboxResult demo = RunSandboxExe(
+            {"--demo", id, "--frames", "120", "--no-ui", "--state", dir + "/" + id + "-demo.csv", "--quiet"});
+        const SandboxResult scene = RunSandboxExe(
+            {"--scene", file, "--frames", "120", "--no-ui", "--state", dir + "/" + id + "-scene.csv", "--quiet"});
+        ASSERT_EQ(demo.exitCode, 0) << demo.err;
+        ASSERT_EQ(scene.exitCode, 0) << scene.err;
+        EXPECT_TRUE(ReadText(dir + "/" + id + "-demo.csv") == ReadText(dir + "/" + id + "-scene.csv")) << id;
+    }
+}
+
+TEST(SceneRun, ExportSaysWhatItCouldNotExpress) {
+    const std::string dir = ScratchDir("scene_export_notes");
+    const SandboxResult ch14 = RunSandboxExe({"--demo", "ch14", "--export-scene", dir + "/ch14.json"});
+    EXPECT_EQ(ch14.exitCode, 0) << ch14.err;
+    EXPECT_NE(ch14.err.find("not expressed: constraints[1]: orientation"), std::string::npos) << ch14.err;
+    EXPECT_NE(ch14.err.find("y = -5"), std::string::npos) << ch14.err;
+    const SandboxResult raycast = RunSandboxExe({"--demo", "raycast", "--export-scene", dir + "/raycast.json"});
+    EXPECT_EQ(raycast.exitCode, 2);
+    EXPECT_NE(raycast.err.find("scripted, not simulated"), std::string::npos) << raycast.err;
+    EXPECT_EQ(FilesIn(dir), std::vector<std::string>{"ch14.json"});
+    // --set applies before the export.
+    const SandboxResult set =
+        RunSandboxExe({"--demo", "ch15", "--set", "iterations=13", "--export-scene", dir + "/ch15.json"});
+    ASSERT_EQ(set.exitCode, 0) << set.err;
+    EXPECT_NE(ReadText(dir + "/ch15.json").find("\"iterations\": 13"), std::string::npos);
+}

@@ -1,0 +1,70 @@
+// Fuzz target: bytes -> the scene-file loader (Demos/Scenes/SceneFile.h). Checks that a refused input says why
+// and that an accepted one lies within the documented limits (docs/scenes.md, "Limits") with finite numbers and
+// ids that resolve; small accepted scenes are built (FileScene) and stepped twice. docs/testing.md "Fuzzing".
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "Demos/Scenes/FileScene.h"
+#include "Demos/Scenes/SceneFile.h"
+
+namespace {
+
+void Require(bool ok, const char* what) {
+    if (ok) return;
+    std::fprintf(stderr, "scene_fuzz: check failed: %s\n", what);
+    std::abort();
+}
+
+bool Finite(const vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+void CheckAccepted(const SceneDescription& d) {
+    Require(d.format == kSceneFormatVersion && !d.name.empty(), "format and name");
+    Require(d.duration > 0.0f && d.duration <= SceneLimits::kMaxDuration, "duration in range");
+    Require(d.bodies.size() <= SceneLimits::kMaxBodies && d.constraints.size() <= SceneLimits::kMaxConstraints &&
+                d.springs.size() <= SceneLimits::kMaxSprings && d.joints.size() <= SceneLimits::kMaxJoints &&
+                d.cloths.size() <= SceneLimits::kMaxCloths,
+            "counts within the limits");
+    Require(Finite(d.world.gravity) && d.world.step >= 0.0f && d.world.step <= 1.0f, "world finite");
+    for (const SceneBody& b : d.bodies) {
+        Require(!b.id.empty() && Finite(b.position) && Finite(b.velocity) && Finite(b.angularVelocity), "body finite");
+        Require(b.mass >= 0.0f && std::isfinite(b.mass), "mass >= 0");
+        Require(b.halfExtents.x > 0.0f && b.halfExtents.y > 0.0f && b.halfExtents.z > 0.0f && b.radius > 0.0f,
+                "sizes > 0");
+    }
+    for (const SceneSpring& s : d.springs) {
+        Require(s.a < d.bodies.size() && s.b < d.bodies.size() && s.a != s.b, "spring ends resolve");
+        Require(d.bodies[s.a].kind == SceneBodyKind::Particle && d.bodies[s.b].kind == SceneBodyKind::Particle,
+                "spring ends are particles");
+    }
+    for (const SceneJoint& j : d.joints) {
+        Require(j.a < d.bodies.size() && j.b < d.bodies.size() && j.a != j.b, "joint ends resolve");
+    }
+    for (const SceneCloth& c : d.cloths) Require(c.gridSize >= 3 && c.gridSize <= SceneLimits::kMaxClothGrid, "grid");
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    SceneDescription d;
+    std::vector<std::string> errors;
+    const bool ok = ParseSceneText(text, "fuzz.json", &d, &errors);
+    Require(ok == errors.empty(), "refused exactly when a problem is reported");
+    for (const std::string& e : errors) Require(e.rfind("fuzz.json", 0) == 0, "every problem names the file");
+    if (!ok) return 0;
+    CheckAccepted(d);
+    std::size_t particles = d.bodies.size();
+    for (const SceneCloth& c : d.cloths) particles += std::size_t(c.gridSize) * std::size_t(c.gridSize);
+    if (particles <= 200) {
+        FileScene scene(d);
+        scene.Step(0.03f);
+        scene.Step(0.03f);
+    }
+    return 0;
+}

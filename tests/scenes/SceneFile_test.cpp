@@ -1,0 +1,369 @@
+// Scene files (docs/scenes.md): every error kind is reported with the file, the JSON path and the bad value; a valid
+// file is read field by field; FileScene builds only what the file names.
+#include "Demos/Scenes/SceneFile.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "Demos/Scenes/FileScene.h"
+#include "Demos/Scenes/SceneExport.h"
+#include "tests/support/Approx.h"
+
+namespace {
+
+/// Parses `text` as "t.json"; returns the problems (empty when it parsed).
+std::vector<std::string> Problems(const std::string& text, SceneDescription* out = nullptr) {
+    SceneDescription d;
+    std::vector<std::string> errors;
+    const bool ok = ParseSceneText(text, "t.json", out != nullptr ? out : &d, &errors);
+    EXPECT_EQ(ok, errors.empty());
+    return errors;
+}
+
+/// A minimal valid file with `bodies` spliced in as the bodies array and `extra` as further top-level members.
+std::string File(const std::string& bodies, const std::string& extra = "") {
+    return R"({"format": 1, "name": "t", "bodies": [)" + bodies + "]" + (extra.empty() ? "" : ", " + extra) + "}";
+}
+
+const char* kBox = R"({"id": "a", "type": "box", "position": [0, 1, 0]})";
+const char* kP1 = R"({"id": "p", "type": "particle", "position": [0, 1, 0]})";
+const char* kP2 = R"({"id": "q", "type": "particle", "position": [0, 2, 0]})";
+
+/// True if exactly one problem was reported and it contains every piece.
+::testing::AssertionResult OneProblem(const std::vector<std::string>& errors, std::vector<std::string> pieces) {
+    if (errors.size() != 1) {
+        std::string all;
+        for (const auto& e : errors) all += "\n  " + e;
+        return ::testing::AssertionFailure() << errors.size() << " problems:" << all;
+    }
+    for (const auto& piece : pieces) {
+        if (errors[0].find(piece) == std::string::npos) {
+            return ::testing::AssertionFailure() << "'" << errors[0] << "' lacks '" << piece << "'";
+        }
+    }
+    return ::testing::AssertionSuccess();
+}
+
+}  // namespace
+
+TEST(SceneFile, ReadsEveryField) {
+    SceneDescription d;
+    const std::string text = R"({"format": 1, "name": "All", "duration": 4.5,
+      "world": {"gravity": [0, -5, 0], "step": 0.01, "integrator": "rk4", "contactSolver": "accumulated",
+                "iterations": 12, "penetrationSlop": 0.02, "linearProjection": false, "projectionFraction": 0.3,
+                "substeps": 4, "warmStartFactor": 0.5, "baumgarte": 0.2, "restitutionThreshold": 2},
+      "camera": {"target": [1, 2, 3], "rotation": [10, 20], "zoom": 15},
+      "bodies": [{"id": "b", "type": "box", "position": [1, 2, 3], "halfExtents": [0.5, 1, 2], "euler": [0, 90, 0],
+                  "velocity": [1, 0, 0], "angularVelocity": [0, 1, 0], "mass": 2, "restitution": 0.1,
+                  "friction": 0.3, "velocityRetention": 1, "color": [1, 0, 0.5]},
+                 {"id": "s", "type": "sphere", "position": [0, 5, 0], "radius": 0.25, "quaternion": [0, 0, 0, 2]},
+                 {"id": "p", "type": "particle", "position": [0, 1, 0], "mass": 0},
+                 {"id": "q", "type": "particle", "position": [0, 3, 0]}],
+      "constraints": [{"position": [0, -1, 0], "halfExtents": [10, 1, 10], "euler": [5, 0, 0]}],
+      "springs": [{"a": "p", "b": "q", "stiffness": 50, "damping": 1, "restLength": 2}],
+      "joints": [{"a": "p", "b": "q", "length": 2}],
+      "cloths": [{"gridSize": 4, "spacing": 0.5, "position": [0, 6, 0], "particleMass": 0.5,
+                  "structural": {"stiffness": 100, "damping": 0.5}}]})";
+    ASSERT_TRUE(Problems(text, &d).empty());
+    EXPECT_EQ(d.name, "All");
+    EXPECT_EQ(d.duration, 4.5f);
+    EXPECT_TRUE(VecNear(d.world.gravity, vec3(0, -5, 0), 0.0f));
+    EXPECT_EQ(d.world.step, 0.01f);
+    EXPECT_EQ(d.world.integrator, Integrator::RK4);
+    EXPECT_EQ(d.world.contactSolver, ContactSolver::Accumulated);
+    EXPECT_EQ(d.world.iterations, 12);
+    EXPECT_FALSE(d.world.linearProjection);
+    EXPECT_EQ(d.world.maxSubsteps, 4);
+    EXPECT_EQ(d.world.baumgarte, 0.2f);
+    EXPECT_EQ(d.camera.zoom, 15.0f);
+    EXPECT_EQ(d.camera.rotation.y, 20.0f);
+    ASSERT_EQ(d.bodies.size(), 4u);
+    EXPECT_EQ(d.bodies[0].kind, SceneBodyKind::Box);
+    EXPECT_TRUE(VecNear(d.bodies[0].halfExtents, vec3(0.5f, 1, 2), 0.0f));
+    EXPECT_EQ(d.bodies[0].eulerDegrees.y, 90.0f);
+    EXPECT_EQ(d.bodies[0].friction, 0.3f);
+    EXPECT_TRUE(d.bodies[0].hasColor);
+    EXPECT_EQ(d.bodies[1].kind, SceneBodyKind::Sphere);
+    EXPECT_TRUE(d.bodies[1].hasQuaternion);
+    EXPECT_EQ(d.bodies[1].orientation.w, 1.0f);  // normalised
+    EXPECT_EQ(d.bodies[2].mass, 0.0f);
+    EXPECT_EQ(d.bodies[2].restitution, 0.7f);  // particle default: the book's bounce
+    ASSERT_EQ(d.springs.size(), 1u);
+    EXPECT_EQ(d.springs[0].a, 2u);
+    EXPECT_EQ(d.springs[0].b, 3u);
+    EXPECT_EQ(d.joints[0].length, 2.0f);
+    EXPECT_EQ(d.cloths[0].gridSize, 4);
+    EXPECT_EQ(d.cloths[0].structuralStiffness, 100.0f);
+}
+
+TEST(SceneFile, SyntaxErrorHasLineAndColumn) {
+    const auto e = Problems("{\"format\": 1,\n  \"name\": \"x\",\n  \"bodies\": [,]\n}");
+    EXPECT_TRUE(OneProblem(e, {"t.json:3:14:", "syntax error"}));
+}
+
+TEST(SceneFile, LineAndColumnCountsFromOne) {
+    int line = 0, column = 0;
+    LineAndColumn("ab\ncd", 4, &line, &column);
+    EXPECT_EQ(line, 2);
+    EXPECT_EQ(column, 2);
+    LineAndColumn("ab", 99, &line, &column);
+    EXPECT_EQ(line, 1);
+    EXPECT_EQ(column, 3);
+}
+
+TEST(SceneFile, WrongTypesNameThePathAndValue) {
+    EXPECT_TRUE(OneProblem(Problems(File(R"({"id": "a", "type": "box", "position": [0, 1, 0], "mass": "2"})")),
+                           {"t.json: bodies[0].mass: must be a number", "(got \"2\")"}));
+    EXPECT_TRUE(OneProblem(Problems(File(R"({"id": "a", "type": "box", "position": [0, "y", 0]})")),
+                           {"bodies[0].position[1]: must be a number"}));
+    EXPECT_TRUE(OneProblem(Problems(File(R"({"id": "a", "type": "box", "position": [0, 1]})")),
+                           {"bodies[0].position: must be an array of 3 numbers", "[0,1]"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"linearProjection": 1})")),
+                           {"world.linearProjection: must be true or false"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"iterations": 2.5})")),
+                           {"world.iterations: must be an integer", "2.5"}));
+    EXPECT_TRUE(OneProblem(Problems("[1, 2]"), {"t.json: (top level): must be an object"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("springs": {})")), {"springs: must be an array"}));
+}
+
+TEST(SceneFile, MissingRequiredFields) {
+    EXPECT_TRUE(OneProblem(Problems(R"({"name": "t"})"), {"format: is required"}));
+    EXPECT_TRUE(OneProblem(Problems(R"({"format": 1})"), {"name: is required"}));
+    EXPECT_TRUE(OneProblem(Problems(File(R"({"id": "a", "position": [0, 1, 0]})")), {"bodies[0].type: is required"}));
+    EXPECT_TRUE(OneProblem(Problems(File(R"({"type": "box", "position": [0, 1, 0]})")), {"bodies[0].id: is required"}));
+    EXPECT_TRUE(OneProblem(Problems(File(R"({"id": "a", "type": "box"})")), {"bodies[0].position: is required"}));
+    EXPECT_TRUE(
+        OneProblem(Problems(File(std::string(kP1) + "," + kP2, R"("springs": [{"a": "p", "b": "q", "stiffness": 1}])")),
+                   {"springs[0].restLength: is required"}));
+}
+
+TEST(SceneFile, NonFiniteNumbers) {
+    // JSON has no NaN literal: it is a syntax error with its position.
+    EXPECT_TRUE(OneProblem(Problems(File(R"({"id": "a", "type": "box", "position": [0, NaN, 0]})")),
+                           {"t.json:1:", "syntax error"}));
+    // Out of double range is refused by the parser (with its place); out of float range becomes infinite when
+    // stored.
+    EXPECT_TRUE(OneProblem(Problems("{\"format\": 1,\n \"name\": \"t\", \"duration\": 1e999}"),
+                           {"t.json:2:27: number is not finite: '1e999'"}));
+    EXPECT_TRUE(OneProblem(Problems(File(R"({"id": "a", "type": "box", "position": [0, 3.5e38, 0]})")),
+                           {"bodies[0].position[1]: must be finite", "3.5e+38"}));
+    EXPECT_TRUE(OneProblem(Problems(File(R"({"id": "a", "type": "box", "position": [0, 1, 0], "mass": 1e39})")),
+                           {"bodies[0].mass: must be finite", "1e+39"}));
+}
+
+TEST(SceneFile, ZeroOrNegativeSizesAndMasses) {
+    EXPECT_TRUE(OneProblem(Problems(File(R"({"id": "a", "type": "box", "position": [0, 1, 0], "mass": -1})")),
+                           {"bodies[0].mass: must be >= 0", "-1"}));
+    EXPECT_TRUE(
+        OneProblem(Problems(File(R"({"id": "a", "type": "box", "position": [0, 1, 0], "halfExtents": [1, 0, 1]})")),
+                   {"bodies[0].halfExtents[1]: must be > 0"}));
+    EXPECT_TRUE(OneProblem(Problems(File(R"({"id": "a", "type": "sphere", "position": [0, 1, 0], "radius": -2})")),
+                           {"bodies[0].radius: must be > 0", "-2"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("cloths": [{"gridSize": 5, "spacing": 0, "position": [0, 0, 0]}])")),
+                           {"cloths[0].spacing: must be > 0"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("camera": {"zoom": 0})")), {"camera.zoom: must be > 0"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("duration": -1)")), {"duration: must be > 0"}));
+}
+
+TEST(SceneFile, OutOfRangeValuesAndNames) {
+    EXPECT_TRUE(OneProblem(Problems(File(R"({"id": "a", "type": "box", "position": [0, 1, 0], "restitution": 1.5})")),
+                           {"bodies[0].restitution: must be in [0, 1]"}));
+    EXPECT_TRUE(OneProblem(Problems(File(R"({"id": "a", "type": "cone", "position": [0, 1, 0]})")),
+                           {"bodies[0].type: must be particle, sphere or box", "\"cone\""}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"integrator": "leapfrog"})")),
+                           {"world.integrator: is not an integrator", "rk4", "\"leapfrog\""}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"contactSolver": "pgs"})")),
+                           {"world.contactSolver: is not a contact solver"}));
+    EXPECT_TRUE(
+        OneProblem(Problems(File(kBox, R"("world": {"iterations": 0})")), {"world.iterations: must be in [1, 1000]"}));
+    EXPECT_TRUE(OneProblem(Problems(R"({"format": 2, "name": "t"})"), {"format: is not a version this build reads"}));
+    EXPECT_TRUE(
+        OneProblem(Problems(File(R"({"id": "a", "type": "box", "position": [0, 1, 0], "quaternion": [0, 0, 0, 0]})")),
+                   {"bodies[0].quaternion: must have a non-zero length"}));
+}
+
+TEST(SceneFile, UnknownKeysAreErrors) {
+    EXPECT_TRUE(OneProblem(Problems(File(R"({"id": "a", "type": "box", "position": [0, 1, 0], "mas": 2})")),
+                           {"bodies[0].mas: unknown key"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("wrold": {})")), {"t.json: wrold: unknown key"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"gravty": [0, 0, 0]})")), {"world.gravty: unknown key"}));
+    // A field of another kind of body is named as such, not silently ignored.
+    EXPECT_TRUE(OneProblem(Problems(File(R"({"id": "p", "type": "particle", "position": [0, 1, 0], "friction": 0.5})")),
+                           {"bodies[0].friction: is not a particle field"}));
+    EXPECT_TRUE(
+        OneProblem(Problems(File(R"({"id": "s", "type": "sphere", "position": [0, 1, 0], "halfExtents": [1, 1, 1]})")),
+                   {"bodies[0].halfExtents: is a box field"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"sleep": true})")), {"world.sleep: is not supported"}));
+}
+
+TEST(SceneFile, DanglingAndDuplicateIds) {
+    EXPECT_TRUE(OneProblem(Problems(File(std::string(kBox) + "," + kBox)),
+                           {"bodies[1].id: duplicates the id of bodies[0]", "\"a\""}));
+    EXPECT_TRUE(OneProblem(Problems(File(kP1, R"("joints": [{"a": "p", "b": "nobody", "length": 1}])")),
+                           {"joints[0].b: names no body", "\"nobody\""}));
+    EXPECT_TRUE(OneProblem(Problems(File(std::string(kP1) + "," + kBox,
+                                         R"("springs": [{"a": "p", "b": "a", "stiffness": 1, "restLength": 1}])")),
+                           {"springs[0].b: must name a particle"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kP1, R"("joints": [{"a": "p", "b": "p", "length": 1}])")),
+                           {"joints[0].b: must differ from a"}));
+}
+
+TEST(SceneFile, CountsOverLimits) {
+    std::string many;
+    for (std::size_t i = 0; i <= SceneLimits::kMaxConstraints; ++i) {
+        many += std::string(i ? "," : "") + R"({"position": [0, 0, 0], "halfExtents": [1, 1, 1]})";
+    }
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, "\"constraints\": [" + many + "]")),
+                           {"constraints: has more than the limit of 1000 entries", "1001"}));
+    EXPECT_TRUE(
+        OneProblem(Problems(File(kBox, R"("cloths": [{"gridSize": 101, "spacing": 1, "position": [0, 0, 0]}])")),
+                   {"cloths[0].gridSize: must be in [3, 100]"}));
+    const std::string huge(SceneLimits::kMaxFileBytes + 1, ' ');
+    EXPECT_TRUE(OneProblem(Problems(huge), {"t.json: (top level): is larger than the limit of 4194304 bytes"}));
+}
+
+TEST(SceneFile, ReportsEveryProblemNotJustTheFirst) {
+    const auto e = Problems(File(R"({"id": "a", "type": "box", "position": [0, 1, 0], "mass": -1, "friction": -1},
+                                   {"id": "a", "type": "box", "position": [0, 1, 0], "colour": [1, 1, 1]})"));
+    EXPECT_EQ(e.size(), 4u);
+}
+
+TEST(SceneFile, LoadReportsUnreadableAndOversizedFiles) {
+    SceneDescription d;
+    std::vector<std::string> errors;
+    EXPECT_FALSE(LoadSceneFile("/nonexistent/scene.json", &d, &errors));
+    ASSERT_EQ(errors.size(), 1u);
+    EXPECT_NE(errors[0].find("/nonexistent/scene.json: cannot read"), std::string::npos);
+    errors.clear();
+    EXPECT_FALSE(LoadSceneFile("/tmp", &d, &errors));
+    EXPECT_EQ(errors.size(), 1u);
+
+    const std::string path = ::testing::TempDir() + "psb_scenefile_test.json";
+    {
+        std::ofstream out(path);
+        out << File(kBox);
+    }
+    errors.clear();
+    EXPECT_TRUE(LoadSceneFile(path, &d, &errors));
+    EXPECT_EQ(d.bodies.size(), 1u);
+    std::remove(path.c_str());
+}
+
+TEST(FileScene, BuildsOnlyWhatTheFileNames) {
+    SceneDescription d;
+    ASSERT_TRUE(Problems(File(std::string(kP1) + "," + kP2), &d).empty());
+    FileScene particlesOnly(d);
+    EXPECT_EQ(particlesOnly.System().Particles().size(), 2u);
+    EXPECT_TRUE(particlesOnly.System().Volumes().empty());
+    EXPECT_TRUE(particlesOnly.System().Springs().empty());
+    EXPECT_TRUE(particlesOnly.System().Cloths().empty());
+    EXPECT_TRUE(particlesOnly.System().Joints().empty());
+    EXPECT_TRUE(particlesOnly.System().Constraints().empty());
+
+    ASSERT_TRUE(Problems(File(std::string(kBox) + "," + kP1 + "," + kP2,
+                              R"("springs": [{"a": "p", "b": "q", "stiffness": 5, "restLength": 1}],
+                                 "joints": [{"a": "p", "b": "q", "length": 1}],
+                                 "constraints": [{"position": [0, -1, 0], "halfExtents": [5, 1, 5]}],
+                                 "cloths": [{"gridSize": 3, "spacing": 1, "position": [0, 4, 0]}])"),
+                         &d)
+                    .empty());
+    FileScene all(d);
+    EXPECT_EQ(all.System().Volumes().size(), 1u);
+    EXPECT_EQ(all.System().Particles().size(), 2u);
+    EXPECT_EQ(all.System().Springs().size(), 1u);
+    EXPECT_EQ(all.System().Joints().size(), 1u);
+    EXPECT_EQ(all.System().Constraints().size(), 1u);
+    ASSERT_EQ(all.System().Cloths().size(), 1u);
+    EXPECT_EQ(all.System().Cloths()[0]->verts.size(), 9u);
+    EXPECT_EQ(all.BodyIndex()[1].kind, SceneBodyKind::Particle);
+    EXPECT_EQ(all.BodyIndex()[2].index, 1u);
+}
+
+TEST(FileScene, AppliesWorldSettingsAndBodyFields) {
+    SceneDescription d;
+    ASSERT_TRUE(Problems(File(R"({"id": "s", "type": "sphere", "position": [0, 5, 0], "radius": 0.5, "mass": 3,
+                                   "quaternion": [0, 0.7071068, 0, 0.7071068], "friction": 0.2},
+                                  {"id": "p", "type": "particle", "position": [1, 2, 3], "restitution": 0.3})",
+                              R"("world": {"gravity": [0, -2, 0], "iterations": 9, "integrator": "verlet",
+                                           "contactSolver": "accumulated", "substeps": 3})"),
+                         &d)
+                    .empty());
+    FileScene scene(d);
+    const WorldSettings& s = scene.System().settings;
+    EXPECT_EQ(s.solverIterations, 9);
+    EXPECT_EQ(s.integrator, Integrator::PositionVerlet);
+    EXPECT_EQ(s.contactSolver, ContactSolver::Accumulated);
+    EXPECT_EQ(s.maxVolumeSubsteps, 3);
+    const RigidbodyVolume& v = scene.Volumes()[0];
+    EXPECT_EQ(v.type, RigidbodyType::Sphere);
+    EXPECT_EQ(v.sphere.radius, 0.5f);
+    EXPECT_EQ(v.mass, 3.0f);
+    EXPECT_EQ(v.friction, 0.2f);
+    EXPECT_NEAR(v.orientation.y, 0.7071068f, 1e-6f);
+    EXPECT_TRUE(VecNear(v.gravity, vec3(0, -2, 0), 0.0f));
+    const Particle& p = scene.Particles()[0];
+    EXPECT_TRUE(VecNear(p.GetPosition(), vec3(1, 2, 3), 0.0f));
+    EXPECT_EQ(p.GetBounce(), 0.3f);
+    EXPECT_TRUE(VecNear(p.GetGravity(), vec3(0, -2, 0), 0.0f));
+}
+
+TEST(FileScene, StepsUnderTheFilesGravity) {
+    SceneDescription d;
+    ASSERT_TRUE(Problems(File(kP1, R"("world": {"gravity": [0, -4, 0]})"), &d).empty());
+    FileScene scene(d);
+    for (int i = 0; i < 10; ++i) EXPECT_TRUE(scene.Step(0.03f));
+    EXPECT_LT(scene.Particles()[0].GetVelocity().y, -0.5f);
+    EXPECT_GT(scene.Particles()[0].GetVelocity().y, -4.0f * 0.3f - 1e-4f);
+    EXPECT_FALSE(scene.Step(0.0f));
+    scene.Reset();
+    EXPECT_EQ(scene.Particles()[0].GetVelocity().y, 0.0f);
+}
+
+TEST(SceneExport, WrittenTextReadsBackToTheSameWorld) {
+    SceneDescription d;
+    ASSERT_TRUE(Problems(File(std::string(kBox) + "," + kP1 + "," + kP2 +
+                                  R"(, {"id": "s", "type": "sphere", "position": [1, 2, 3], "radius": 0.3,
+                                   "euler": [10, 20, 30], "velocity": [0.1, 0, 0], "friction": 0.25})",
+                              R"("springs": [{"a": "p", "b": "q", "stiffness": 5, "damping": 0.5, "restLength": 1.5}],
+                                 "joints": [{"a": "p", "b": "q", "length": 1}],
+                                 "constraints": [{"position": [0, -1, 0], "halfExtents": [5, 1, 5]}],
+                                 "cloths": [{"gridSize": 4, "spacing": 0.3, "position": [0, 4, 0]}],
+                                 "world": {"iterations": 7, "integrator": "rk4"})"),
+                         &d)
+                    .empty());
+    FileScene original(d);
+    std::vector<std::string> notes;
+    const SceneDescription described = DescribeWorld(original.System(), "round trip", &notes);
+    EXPECT_TRUE(notes.empty()) << notes.front();
+    SceneDescription read;
+    std::vector<std::string> errors;
+    ASSERT_TRUE(ParseSceneText(WriteSceneText(described), "export.json", &read, &errors)) << errors.front();
+    FileScene copy(read);
+    EXPECT_EQ(copy.System().settings.solverIterations, 7);
+    EXPECT_EQ(copy.System().settings.integrator, Integrator::RK4);
+    ASSERT_EQ(copy.System().Bodies().size(), original.System().Bodies().size());
+    ASSERT_EQ(copy.System().Springs().size(), 1u);
+    EXPECT_EQ(copy.System().Springs()[0].b, 0.5f);
+    EXPECT_EQ(copy.System().Joints().size(), 1u);
+    ASSERT_EQ(copy.System().Cloths().size(), 1u);
+    for (int step = 0; step < 30; ++step) {
+        original.Step(0.03f);
+        copy.Step(0.03f);
+    }
+    for (std::size_t i = 0; i < original.Volumes().size(); ++i) {
+        EXPECT_TRUE(VecNear(original.Volumes()[i].position, copy.Volumes()[i].position, 0.0f)) << i;
+    }
+    for (std::size_t i = 0; i < original.Particles().size(); ++i) {
+        EXPECT_TRUE(VecNear(original.Particles()[i].GetPosition(), copy.Particles()[i].GetPosition(), 0.0f)) << i;
+    }
+    const Cloth& a = *original.Cloths()[0];
+    const Cloth& b = *copy.Cloths()[0];
+    for (std::size_t i = 0; i < a.verts.size(); ++i) {
+        EXPECT_TRUE(VecNear(a.verts[i].GetPosition(), b.verts[i].GetPosition(), 0.0f)) << i;
+    }
+}
