@@ -135,7 +135,7 @@ bool VideoEncoder::Open(const std::string& target, int w, int h, double framesPe
                                      "-vf",
                                      "pad=ceil(iw/2)*2:ceil(ih/2)*2"};
     if (format == Format::Mp4) {
-        for (const char* a : {"-c:v", "libx264", "-preset", "veryfast", "-crf", "18", "-pix_fmt", "yuv420p",
+        for (const char* a : {"-c:v", "libx264", "-preset", "ultrafast", "-crf", "18", "-pix_fmt", "yuv420p",
                               "-movflags", "+faststart", "-f", "mp4"})
             args.push_back(a);
     } else {

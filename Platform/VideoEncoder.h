@@ -1,8 +1,9 @@
 #pragma once
 // Records frames as a video through the ffmpeg program (Debian's `ffmpeg`): frames go as raw RGB down a
 // pipe to an ffmpeg process, which encodes on its own core while the caller renders the next frames.
-// .mp4 is H.264 (libx264), .webm is VP9 (libvpx-vp9), .gif uses a palette generated from the frames
-// themselves (palettegen, then paletteuse without dithering, so the demos' flat colours stay exact).
+// .mp4 is H.264 (libx264 ultrafast), .webm is VP9 (libvpx-vp9 realtime), .gif uses a palette generated from
+// all the frames (palettegen, then paletteuse without dithering, so the demos' flat colours stay exact): a
+// second pass after the run, so a GIF costs more than the other two (bench/video_bench.sh).
 // The file appears only when the recording is complete: ffmpeg writes a temporary file beside it, renamed at
 // Finish; Abort (or the destructor) removes it, and so does SIGINT/SIGTERM (Platform/Files/TempRegistry.h),
 // after killing ffmpeg. docs/app.md, "Video".
