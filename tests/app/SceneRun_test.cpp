@@ -42,6 +42,22 @@ TEST(SceneRun, RunsTheFilesDurationAndWritesState) {
     EXPECT_NE(csv.find(",2,particle,"), std::string::npos);
 }
 
+TEST(SceneRun, OnlyFramesAreCheckedAgainstTheFilesLength) {
+    // Without --frames the run's length is the file's duration (30 frames here), known only after loading:
+    // frame 29 is the last one, 30 is refused with nothing written. cli_fuzz leaves this case to the Runner.
+    const std::string dir = ScratchDir("scene_only_frames");
+    const std::string scene = WriteScene(dir, "drop.json", kDrop);
+    const SandboxResult late =
+        RunSandboxExe({"--scene", scene, "--only-frames", "30", "--out", dir + "/late", "--no-ui", "--quiet"});
+    EXPECT_EQ(late.exitCode, 2);
+    EXPECT_NE(late.err.find("--only-frames 30 is not below the scene's 30 frames"), std::string::npos) << late.err;
+    EXPECT_EQ(FilesIn(dir), std::vector<std::string>{"drop.json"});
+    const SandboxResult last =
+        RunSandboxExe({"--scene", scene, "--only-frames", "29", "--out", dir + "/last", "--no-ui", "--quiet"});
+    ASSERT_EQ(last.exitCode, 0) << last.err;
+    EXPECT_EQ(FilesIn(dir + "/last"), std::vector<std::string>{"frame_00029.png"});
+}
+
 TEST(SceneRun, IsDeterministicAndSetChangesTheModel) {
     const std::string dir = ScratchDir("scene_set");
     const std::string scene = WriteScene(dir, "drop.json", kDrop);

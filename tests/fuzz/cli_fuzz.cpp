@@ -32,7 +32,10 @@ void CheckAccepted(const Options& o) {
     Require(o.width >= 16 && o.width <= 8192 && o.height >= 16 && o.height <= 8192, "size within 16..8192");
     for (std::size_t i = 1; i < o.onlyFrames.size(); ++i)
         Require(o.onlyFrames[i - 1] < o.onlyFrames[i], "--only-frames sorted and unique");
-    Require(o.onlyFrames.empty() || (o.onlyFrames.front() >= 0 && o.onlyFrames.back() < o.frames),
+    // With --scene and no --frames the run's length comes from the file, so the parser leaves this check
+    // to the Runner after loading (Application/Runner.cpp); otherwise it is the parser's.
+    const bool lengthKnown = o.scene.empty() || o.framesGiven;
+    Require(o.onlyFrames.empty() || (o.onlyFrames.front() >= 0 && (!lengthKnown || o.onlyFrames.back() < o.frames)),
             "--only-frames within the run");
     Require(o.frameTime.num > 0 && o.frameTime.den > 0 && o.step.num > 0 && o.step.den > 0, "positive times");
     Require(o.thresholds.channelTolerance >= 0 && o.thresholds.channelTolerance <= 255, "tolerance 0..255");
