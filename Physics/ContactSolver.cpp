@@ -17,7 +17,8 @@ struct IdName {
     ContactSolver solver;
     const char* id;
 };
-constexpr IdName kIds[] = {{ContactSolver::Book, "book"}, {ContactSolver::Accumulated, "accumulated"}};
+constexpr IdName kIds[] = {
+    {ContactSolver::Book, "book"}, {ContactSolver::Accumulated, "accumulated"}, {ContactSolver::Soft, "soft"}};
 
 /// Orthonormal t1, t2 with n x t1 = t2, a fixed function of n: the same normal gives the same basis every step.
 void TangentBasis(const vec3& n, vec3* t1, vec3* t2) {

@@ -8,6 +8,9 @@
 //                contact a normal and two tangent impulses are accumulated over the solverIterations passes and the
 //                running totals are clamped (normal >= 0, friction inside the Coulomb cone mu*jn), not the
 //                increments; impulses are warm-started from the previous step's matched contacts. Stacks stand.
+//   Soft         a soft step (SoftSolver.h): contacts found once per step with feature ids and a speculative
+//                margin, then per substep: integrate velocities, warm start, biased soft solve, integrate
+//                positions, relax without bias; restitution once at the end of the step.
 // docs/ch15.md has the design notes and the measured figures.
 
 #include <cstddef>
@@ -24,16 +27,41 @@ struct StepContext;
 enum class ContactSolver {
     Book,         ///< per-contact impulses divided by the contact count, no memory (the book's solver)
     Accumulated,  ///< sequential impulses, accumulated and clamped, warm-started from persistent contacts
+    Soft,         ///< substepped soft-constraint solver (soft step), feature-id contacts, relax pass
 };
 
-/// Stable id used on the command line and in CSV files: "book", "accumulated".
+/// Stable id used on the command line and in CSV files: "book", "accumulated", "soft".
 const char* ToString(ContactSolver solver);
 /// Parses an id from ToString; false (output untouched) for anything else.
 bool ParseContactSolver(const std::string& text, ContactSolver* out);
 /// Comma-separated list of every valid id, for error messages.
 std::string ContactSolverIds();
 /// Every solver, in enum order.
-constexpr ContactSolver kAllContactSolvers[] = {ContactSolver::Book, ContactSolver::Accumulated};
+constexpr ContactSolver kAllContactSolvers[] = {ContactSolver::Book, ContactSolver::Accumulated, ContactSolver::Soft};
+
+/// Settings of ContactSolver::Soft (WorldSettings::soft). Its friction and restitution combine as the book's do.
+struct SoftSolverSettings {
+    /// Substeps per step, count (each: integrate velocities, warm start, solve, integrate positions, relax).
+    int substeps = 4;
+    /// Biased solve passes per substep, count (Box2D's soft step: 1).
+    int iterations = 1;
+    /// Relax passes (no bias) per substep, count (Box2D's soft step: 1).
+    int relaxIterations = 1;
+    /// Hz: stiffness of the contact constraint; capped at a quarter of the substep rate.
+    float contactHertz = 30.0f;
+    /// Damping ratio of the contact spring, dimensionless (1 critical; larger is stiffer to push-out overshoot).
+    float contactDampingRatio = 10.0f;
+    /// m/s: the fastest a penetrating contact is pushed apart by the position bias.
+    float maxPushoutSpeed = 3.0f;
+    /// m: contacts are created while the surfaces are within this distance (speculative contacts).
+    float speculativeMargin = 0.02f;
+    /// m: penetration allowed before the bias pushes (keeps resting contacts from jittering).
+    float linearSlop = 0.005f;
+    /// m/s: restitution only for a closing speed above this.
+    float restitutionThreshold = 1.0f;
+    /// Fraction (0..1) of last step's matched impulse applied as the warm start.
+    float warmStartFactor = 1.0f;
+};
 
 /// Settings of the Accumulated solver (WorldSettings::accumulated). Iterations and slop are WorldSettings'
 /// solverIterations and penetrationSlop; linear projection still runs after integration when

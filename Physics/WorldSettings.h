@@ -45,6 +45,9 @@ struct WorldSettings {
     float projectionFraction = 0.45f;
     /// Settings of ContactSolver::Accumulated (its iterations and slop are the two above).
     AccumulatedSolverSettings accumulated;
+    /// Settings of ContactSolver::Soft (its own iterations, substeps and slop; the book's solverIterations,
+    /// penetrationSlop and linear projection are not used by it).
+    SoftSolverSettings soft;
     /// Volumes have no continuous collision, so a step in which a dynamic volume would travel
     /// (|v| dt + |g| dt^2 / 2) more than substepTravelFraction * (its smallest half extent + the smallest in the
     /// world) is split into n equal volume substeps, n <= maxVolumeSubsteps (count; beyond, clamped with a

@@ -194,7 +194,8 @@ void ReadWorld(const Json& j, SceneWorld* w, Problems* problems) {
     name.clear();
     r.String("contactSolver", &name);
     if (!name.empty() && !ParseContactSolver(name, &w->contactSolver)) {
-        problems->Add("world.contactSolver", "is not a contact solver (book, accumulated)", &j.at("contactSolver"));
+        problems->Add("world.contactSolver", "is not a contact solver (" + ContactSolverIds() + ")",
+                      &j.at("contactSolver"));
     }
     r.Int("iterations", &w->iterations, 1, SceneLimits::kMaxIterations);
     r.Float("penetrationSlop", &w->penetrationSlop, Range::NonNegative);

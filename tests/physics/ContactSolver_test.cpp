@@ -92,7 +92,7 @@ TEST(ContactSolver, NamesRoundTrip) {
     EXPECT_FALSE(ParseContactSolver("Book", &untouched));
     EXPECT_FALSE(ParseContactSolver("", &untouched));
     EXPECT_EQ(untouched, ContactSolver::Accumulated);
-    EXPECT_EQ(ContactSolverIds(), "book, accumulated");
+    EXPECT_EQ(ContactSolverIds(), "book, accumulated, soft");
     EXPECT_EQ(PhysicsSystem().settings.contactSolver, ContactSolver::Book) << "the book's solver must stay the default";
 }
 

@@ -1,0 +1,33 @@
+#pragma once
+// Solver manifolds for ContactSolver::Soft (docs/ch15.md, "The soft-step solver"): at most four points per pair,
+// each with its separation (negative when penetrating, up to +margin for a speculative contact) and a feature id
+// that names the pair of features that made it, so a solver can match contacts across steps by id instead of
+// by distance. The book's manifolds (CollisionManifold, Manifolds.cpp) are unchanged and still drive the Book and
+// Accumulated solvers.
+
+#include <cstdint>
+
+#include "Physics/Geometry/Geometry3D.h"
+
+/// Most points a solver manifold keeps (deepest first, then the ones that span the largest area).
+constexpr int kMaxManifoldPoints = 4;
+
+struct ManifoldPoint {
+    vec3 point;               ///< world, midway between the two surfaces along the normal
+    float separation = 0.0f;  ///< m along the normal; < 0 penetrating, in (0, margin] speculative
+    std::uint32_t id = 0;     ///< feature id: the same two features give the same id from step to step
+};
+
+/// One pair's contact: a normal from A to B and up to four points. pointCount 0 means further apart than margin.
+struct ContactManifold {
+    vec3 normal{0.0f, 1.0f, 0.0f};
+    int pointCount = 0;
+    ManifoldPoint points[kMaxManifoldPoints];
+};
+
+/// Box A against box B. Points are reported while the boxes are within `margin` (m) of touching.
+void CollideBoxes(const OBB& A, const OBB& B, float margin, ContactManifold* out);
+/// Box A against sphere B (normal from the box to the sphere); one point, id 0.
+void CollideBoxSphere(const OBB& A, const Sphere& B, float margin, ContactManifold* out);
+/// Sphere A against sphere B; one point, id 0.
+void CollideSpheres(const Sphere& A, const Sphere& B, float margin, ContactManifold* out);
