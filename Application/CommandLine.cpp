@@ -263,6 +263,7 @@ const char* HeadlessOnlyFlag(const Options& o) {
     if (!o.stateFile.empty()) return "--state";
     if (!o.videoFile.empty()) return "--video";
     if (!o.onlyFrames.empty()) return "--only-frames";
+    if (o.updateGolden) return "--update-golden";
     if (o.showParams) return "--params";
     return nullptr;
 }

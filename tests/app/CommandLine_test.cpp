@@ -144,6 +144,8 @@ TEST(CommandLine, ErrorsNameTheFlagAndValue) {
     ExpectError({"--demo", "x", "--frames", "10", "--only-frames", "10"}, "not below --frames");
     ExpectError({"--demo", "x", "--compare", "g"}, "--compare needs --out");
     ExpectError({"--demo", "x", "--update-golden"}, "--update-golden needs --compare");
+    ExpectError({"--demo", "x", "--update-golden", "--window"}, "--update-golden is for headless runs");
+    ExpectError({"--window", "--only-frames", "3"}, "--only-frames is for headless runs");
     ExpectError({"--demo", "x", "--png-level", "10"}, "--png-level 10");
     ExpectError({"--no-ui=1", "--demo", "x"}, "takes no value");
 }
