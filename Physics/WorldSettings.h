@@ -21,6 +21,21 @@ inline float FactorOverStep(float factor, float referenceStep, float dt) {
     return std::pow(factor, dt / referenceStep);
 }
 
+/// Islands and sleep for rigid volumes (WorldSettings::sleep). Off by default (the book has no sleep), in the
+/// benchmarks and in the sweep.
+struct SleepSettings {
+    /// On: an island of touching dynamic volumes that all stay slower than the speeds below for timeToSleep
+    /// sleeps (no integration, no pair tests among its bodies) until a new contact, an impulse or a changed
+    /// property wakes it.
+    bool enabled = false;
+    /// s a body must stay slow before its island may sleep.
+    float timeToSleep = 0.5f;
+    /// m/s: a body is slow while its linear speed is below this.
+    float linearSpeed = 0.05f;
+    /// rad/s: ... and its angular speed below this (2 degrees per second).
+    float angularSpeed = 0.035f;
+};
+
 /// Engine settings of one PhysicsSystem (its `settings`), read by every stage of every step.
 struct WorldSettings {
     // ---- particles (ch14, ch16)
@@ -48,6 +63,8 @@ struct WorldSettings {
     /// Settings of ContactSolver::Soft (its own iterations, substeps and slop; the book's solverIterations,
     /// penetrationSlop and linear projection are not used by it).
     SoftSolverSettings soft;
+    /// Islands and sleep (rigid volumes only).
+    SleepSettings sleep;
     /// Volumes have no continuous collision, so a step in which a dynamic volume would travel
     /// (|v| dt + |g| dt^2 / 2) more than substepTravelFraction * (its smallest half extent + the smallest in the
     /// world) is split into n equal volume substeps, n <= maxVolumeSubsteps (count; beyond, clamped with a
