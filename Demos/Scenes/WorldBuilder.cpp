@@ -157,6 +157,48 @@ std::vector<BodySpec> BounceScene(float e, float retention) {
     return {ground, ball};
 }
 
+BodySpec PeerCube() {
+    BodySpec s = BoxSpec(vec3(), vec3(0.5f, 0.5f, 0.5f), 1.0f);
+    s.friction = 0.6f;
+    s.restitution = 0.0f;
+    s.velocityRetention = 1.0f;
+    s.velocityEpsilon = 0.0f;
+    return s;
+}
+
+BodySpec PeerGround() {
+    BodySpec s = GroundSpec(vec3(50.0f, 0.5f, 50.0f));
+    s.friction = 0.6f;
+    s.restitution = 0.0f;
+    s.velocityRetention = 1.0f;
+    s.velocityEpsilon = 0.0f;
+    return s;
+}
+
+std::vector<BodySpec> PeerBoxpile(int count) {
+    std::vector<BodySpec> out;
+    out.reserve(static_cast<std::size_t>(count > 0 ? count : 0) + 1);
+    out.push_back(PeerGround());
+    // The layout is computed in double and rounded once, so both engines (and any later port) get the same floats.
+    const int g = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count) / 10.0)));
+    const double centre = 0.5 * static_cast<double>(g - 1);
+    for (int i = 0; i < count; ++i) {
+        const int c = i % (g * g), l = i / (g * g), cx = c % g, cz = c / g;
+        const double di = static_cast<double>(i);
+        BodySpec s = PeerCube();
+        s.position =
+            vec3(static_cast<float>((cx - centre) * 1.5 + 0.1 * std::sin(1.7 * di)), static_cast<float>(1.0 + 1.5 * l),
+                 static_cast<float>((cz - centre) * 1.5 + 0.1 * std::cos(2.3 * di)));
+        s.eulerRadians = vec3(0.0f, static_cast<float>(0.2 * std::sin(0.9 * di)), 0.0f);
+        out.push_back(s);
+    }
+    return out;
+}
+
+std::vector<BodySpec> PeerPyramid(int base) { return WithGround(PeerGround(), Pyramid(base, PeerCube(), 0.05f)); }
+
+std::vector<BodySpec> PeerTower(int height) { return WithGround(PeerGround(), Tower(height, PeerCube())); }
+
 RigidWorld::RigidWorld(const std::vector<BodySpec>& specs) {
     bodies = MakeBodies(specs);
     start.reserve(specs.size());

@@ -79,6 +79,27 @@ std::vector<BodySpec> TowerScene(int height);
 /// velocity retention `retention` per 0.03 s; the ground's restitution is 1, so the pair uses e.
 std::vector<BodySpec> BounceScene(float e, float retention);
 
+// ---- The peer benchmark's scenes (psb-peer-bench, docs/peers.md): one definition that this engine and the
+// peer engine both build from. Cubes of half extent 0.5 m, 1 kg, friction 0.6, restitution 0 and no damping
+// (velocityRetention 1, velocityEpsilon 0) on a static ground box of half extents (50, 0.5, 50) centred at
+// (0, -0.5, 0) (top at y = 0), ground at index 0.
+
+/// The peer scenes' cube: half extent 0.5 m, 1 kg, friction 0.6, restitution 0, undamped; at the origin.
+BodySpec PeerCube();
+/// The peer scenes' ground: a static box of half extents (50, 0.5, 50) centred at (0, -0.5, 0), friction 0.6,
+/// restitution 0.
+BodySpec PeerGround();
+/// `count` PeerCubes in layers on a g x g grid, g = ceil(sqrt(count / 10)): cube i has c = i mod g^2,
+/// l = floor(i / g^2), cx = c mod g, cz = floor(c / g), centre x = (cx - (g - 1) / 2) 1.5 + 0.1 sin(1.7 i),
+/// z = (cz - (g - 1) / 2) 1.5 + 0.1 cos(2.3 i), y = 1 + 1.5 l, rotated 0.2 sin(0.9 i) rad about +Y (right-handed:
+/// its local x axis at (cos a, 0, -sin a)). The ground first.
+std::vector<BodySpec> PeerBoxpile(int count);
+/// A 2-D pyramid of PeerCubes with `base` in the bottom row: row r holds base - r cubes, cube k of it at
+/// x = (k - (base - r - 1) / 2) 1.05, y = 0.5 + r, z = 0 (0.05 m gaps). The ground first.
+std::vector<BodySpec> PeerPyramid(int base);
+/// `height` PeerCubes in one column, cube i at (0, 0.5 + i, 0). The ground first.
+std::vector<BodySpec> PeerTower(int height);
+
 /// Bodies built from a scene definition and the PhysicsSystem they are added to. The bodies are built once, in
 /// spec order, and never move in memory (the system holds pointers to them); the system keeps its defaults, so
 /// set solver settings on `system` before stepping.

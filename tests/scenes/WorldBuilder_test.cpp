@@ -212,3 +212,100 @@ TEST(WorldBuilder, SameSpecsGiveBitwiseIdenticalRuns) {
     RigidWorld fresh(BoxpileScene(30));
     EXPECT_NE(std::memcmp(a.data(), Snapshot(fresh.Bodies()).data(), a.size()), 0);
 }
+
+TEST(WorldBuilder, PeerCubeAndGroundAreTheSharedDefinition) {
+    const BodySpec cube = PeerCube();
+    EXPECT_EQ(cube.shape, RigidbodyType::Box);
+    EXPECT_TRUE(VecNear(cube.halfExtents, vec3(0.5f, 0.5f, 0.5f), 0.0f));
+    EXPECT_EQ(cube.mass, 1.0f);
+    EXPECT_EQ(cube.friction, 0.6f);
+    EXPECT_EQ(cube.restitution, 0.0f);
+    EXPECT_EQ(cube.velocityRetention, 1.0f);  // no damping
+    EXPECT_EQ(cube.velocityEpsilon, 0.0f);
+    const BodySpec ground = PeerGround();
+    EXPECT_EQ(ground.mass, 0.0f);
+    EXPECT_TRUE(VecNear(ground.halfExtents, vec3(50, 0.5f, 50), 0.0f));
+    EXPECT_TRUE(VecNear(ground.position, vec3(0, -0.5f, 0), 0.0f));
+    EXPECT_EQ(ground.friction, 0.6f);
+    EXPECT_EQ(ground.restitution, 0.0f);
+    for (const std::vector<BodySpec>& scene : {PeerBoxpile(50), PeerPyramid(4), PeerTower(3)}) {
+        ASSERT_FALSE(scene.empty());
+        EXPECT_EQ(std::memcmp(&scene[0], &ground, sizeof(BodySpec)), 0);  // ground at index 0
+        for (std::size_t i = 1; i < scene.size(); ++i) {
+            EXPECT_TRUE(VecNear(scene[i].halfExtents, cube.halfExtents, 0.0f)) << i;
+            EXPECT_EQ(scene[i].mass, 1.0f) << i;
+            EXPECT_EQ(scene[i].friction, 0.6f) << i;
+            EXPECT_EQ(scene[i].restitution, 0.0f) << i;
+            EXPECT_EQ(scene[i].velocityRetention, 1.0f) << i;
+            EXPECT_EQ(scene[i].velocityEpsilon, 0.0f) << i;
+        }
+    }
+}
+
+TEST(WorldBuilder, PeerBoxpileFollowsItsFormula) {
+    // Hand-computed from the definition (docs/peers.md): boxpile 1000 has g = 10, so (g - 1) / 2 = 4.5.
+    // Box 0: c = 0, l = 0: x = -6.75 + 0.1 sin 0, z = -6.75 + 0.1 cos 0, y = 1, angle 0.
+    // Box 123: c = 23, l = 1, cx = 3, cz = 2: x = -2.25 + 0.1 sin 209.1, z = -3.75 + 0.1 cos 282.9, y = 2.5,
+    // angle 0.2 sin 110.7. Box 999: c = 99, l = 9: x = 6.75 + 0.1 sin 1698.3, y = 14.5.
+    const std::vector<BodySpec> pile = PeerBoxpile(1000);
+    ASSERT_EQ(pile.size(), 1001u);
+    struct Expect {
+        int i;
+        vec3 position;
+        float yaw;
+    };
+    const Expect expected[] = {{0, vec3(-6.75f, 1.0f, -6.65f), 0.0f},
+                               {123, vec3(-2.151690f, 2.5f, -3.651225f), -0.135485f},
+                               {999, vec3(6.846399f, 14.5f, 6.713370f), 0.113670f}};
+    for (const Expect& e : expected) {
+        const BodySpec& s = pile[static_cast<std::size_t>(e.i) + 1];
+        EXPECT_TRUE(VecNear(s.position, e.position, tol::kTight)) << e.i;
+        EXPECT_TRUE(VecNear(s.eulerRadians, vec3(0, e.yaw, 0), tol::kExact)) << e.i;
+    }
+    // Boxpile 100: g = ceil(sqrt(10)) = 4, 16 per layer; box 37: c = 5, l = 2, cx = cz = 1.
+    const std::vector<BodySpec> small = PeerBoxpile(100);
+    ASSERT_EQ(small.size(), 101u);
+    EXPECT_TRUE(VecNear(small[38].position, vec3(-0.743191f, 4.0f, -0.846188f), tol::kTight));
+    EXPECT_NEAR(small[38].eulerRadians.y, 0.190266f, tol::kExact);
+    EXPECT_EQ(small[100].position.y, 10.0f);  // box 99: layer 6
+    // Boxpile 4000: g = 20; the last box, 3999, is at c = 399, l = 9.
+    const std::vector<BodySpec> big = PeerBoxpile(4000);
+    ASSERT_EQ(big.size(), 4001u);
+    EXPECT_TRUE(VecNear(big[4000].position, vec3(14.239370f, 14.5f, 14.313461f), tol::kTight));
+    EXPECT_TRUE(PeerBoxpile(0).size() == 1u);  // the ground alone
+}
+
+TEST(WorldBuilder, PeerBoxpileRotatesRightHandedAboutYAndStartsApart) {
+    const std::vector<BodySpec> pile = PeerBoxpile(100);
+    // Box 37 turned by a = 0.190266 rad about +Y: its local x axis is (cos a, 0, -sin a) in the world.
+    const RigidbodyVolume b = MakeBody(pile[38]);
+    const float a = 0.190266f;
+    EXPECT_TRUE(VecNear(GetRow(b.box.orientation, 0), vec3(std::cos(a), 0, -std::sin(a)), tol::kTight));
+    EXPECT_TRUE(VecNear(GetRow(b.box.orientation, 1), vec3(0, 1, 0), tol::kTight));
+    // No two bodies touch at the start (the ground included): this engine's manifolds find no pair.
+    std::vector<RigidbodyVolume> bodies = MakeBodies(pile);
+    CollisionManifold m;
+    int touching = 0;
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+        for (std::size_t j = i + 1; j < bodies.size(); ++j) {
+            FindCollisionFeatures(bodies[i], bodies[j], &m);
+            if (m.colliding) ++touching;
+        }
+    EXPECT_EQ(touching, 0);
+}
+
+TEST(WorldBuilder, PeerPyramidAndTowerLayouts) {
+    const std::vector<BodySpec> p = PeerPyramid(20);
+    ASSERT_EQ(p.size(), 211u);                                                 // 20 + 19 + ... + 1 cubes and the ground
+    EXPECT_TRUE(VecNear(p[1].position, vec3(-9.975f, 0.5f, 0), tol::kTight));  // row 0, k 0: -9.5 * 1.05
+    EXPECT_TRUE(VecNear(p[20].position, vec3(9.975f, 0.5f, 0), tol::kTight));  // row 0, k 19
+    EXPECT_TRUE(VecNear(p[21].position, vec3(-9.45f, 1.5f, 0), tol::kTight));  // row 1, k 0: -9 * 1.05
+    EXPECT_TRUE(VecNear(p[210].position, vec3(0, 19.5f, 0), tol::kTight));     // the top
+    EXPECT_NEAR(p[2].position.x - p[1].position.x, 1.05f, tol::kTight);        // 0.05 m gaps
+    EXPECT_EQ(PeerPyramid(30).size(), 466u);
+    const std::vector<BodySpec> t = PeerTower(20);
+    ASSERT_EQ(t.size(), 21u);
+    for (int i = 0; i < 20; ++i)
+        EXPECT_TRUE(VecNear(t[static_cast<std::size_t>(i) + 1].position, vec3(0, 0.5f + float(i), 0), 0.0f)) << i;
+    EXPECT_EQ(t[1].position.y - t[1].halfExtents.y, 0.0f);  // resting on the ground's top
+}
