@@ -26,6 +26,7 @@ packages=(
   parallel            # GNU parallel: scripts/sweep-parallel.sh runs sweep shards on cores or ssh hosts
   clang               # libFuzzer targets (scripts/fuzz.sh, docs/testing.md)
   libclang-rt-14-dev  # clang 14's libFuzzer and sanitizer runtimes (only Recommended by clang, so named here)
+  libbullet-dev       # Bullet 3.24, the peer engine of psb-peer-bench (bench/peers; optional at build time)
 )
 
 missing=()

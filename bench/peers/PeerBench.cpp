@@ -1,0 +1,322 @@
+// psb-peer-bench: one scene definition (Demos/Scenes/WorldBuilder.h, PeerBoxpile / PeerPyramid / PeerTower) built
+// in Bullet (BulletWorld.h) and in this engine (RigidWorld), run alternately in one process, timed per step, and
+// measured for quality with one engine-independent probe. Prints one line of key=value pairs. docs/peers.md has
+// the method, the scenes and the figures.
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "Demos/Scenes/WorldBuilder.h"
+#include "Physics/Broadphase.h"
+#include "Physics/ContactSolver.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/RigidbodyVolume.h"
+#include "bench/peers/BulletWorld.h"
+
+namespace {
+
+constexpr float kDt = 1.0f / 60.0f;
+/// Steps at the end of a run over which the deepest penetration is taken (one second at 60 Hz).
+constexpr int kPenetrationWindow = 60;
+
+const char kUsage[] =
+    "Usage: psb-peer-bench SCENE N [--solver book|accumulated|soft] [--steps S] [--warmup W] [--repeat R]\n"
+    "  SCENE N      boxpile N (cubes, 1..100000), pyramid N (base, 1..300) or tower N (height, 1..1000)\n"
+    "  --solver S   this engine's contact solver (default accumulated; 10 iterations for accumulated)\n"
+    "  --steps S    steps per run at 1/60 s (default 600)\n"
+    "  --warmup W   first steps left out of the timing median (default 60, < S)\n"
+    "  --repeat R   rounds; each round runs both engines, the first alternating (default 3)\n"
+    "Builds the scene in Bullet and in this engine from one definition and prints one line of key=value pairs:\n"
+    "scene, n, solver, bullet_ms, psb_ms, ratio (psb / bullet; medians of ms per step after the warm-up, median\n"
+    "over rounds) and each engine's quality: pen (deepest penetration over the last 60 steps, m, measured with\n"
+    "this engine's box manifolds on both), and per scene ke (final kinetic energy, J) and below (bodies with\n"
+    "centre below y = 0) for boxpile, disp (largest |p_end - p_start|, m) for pyramid and tower, drift (top\n"
+    "box's x-z distance from its start, m) for tower. docs/peers.md has the method.\n";
+
+struct Options {
+    std::string scene;
+    int n = 0;
+    ContactSolver solver = ContactSolver::Accumulated;
+    int steps = 600;
+    int warmup = 60;
+    int repeat = 3;
+};
+
+/// Quality figures of one run, computed the same way for both engines (Probe).
+struct Quality {
+    float penetration = 0.0f;  // m
+    float kineticEnergy = 0.0f;
+    int below = 0;
+    float displacement = 0.0f;  // m
+    float drift = 0.0f;         // m
+};
+
+/// This engine's copy of a scene, fed with either engine's poses: the metrics never depend on which engine
+/// produced the state. Penetration is this engine's manifold depth (FindCollisionFeatures) on every pair whose
+/// AABBs overlap (Broadphase's sweep).
+class Probe {
+public:
+    explicit Probe(const std::vector<BodySpec>& specs) : bodies(MakeBodies(specs)) {
+        start.reserve(bodies.size());
+        pointers.reserve(bodies.size());
+        for (RigidbodyVolume& b : bodies) {
+            start.push_back(b.position);
+            pointers.push_back(&b);
+        }
+    }
+
+    void Set(std::size_t i, const BodyState& s) {
+        RigidbodyVolume& b = bodies[i];
+        b.position = s.position;
+        b.orientation = s.orientation;
+        b.velocity = s.velocity;
+        b.angVel = s.angularVelocity;
+        b.SynchCollisionVolumes();
+    }
+
+    /// Deepest penetration over every touching pair of the current poses, m (0 when nothing touches).
+    float DeepestPenetration() {
+        broadphase.FindPairs(pointers, &pairs);
+        float deepest = 0.0f;
+        for (const std::pair<int, int>& p : pairs) {
+            FindCollisionFeatures(bodies[static_cast<std::size_t>(p.first)], bodies[static_cast<std::size_t>(p.second)],
+                                  &manifold);
+            if (manifold.colliding && std::isfinite(manifold.depth)) deepest = std::fmax(deepest, manifold.depth);
+        }
+        return deepest;
+    }
+
+    Quality Final(float penetration) const {
+        Quality q;
+        q.penetration = penetration;
+        for (std::size_t i = 0; i < bodies.size(); ++i) {
+            const RigidbodyVolume& b = bodies[i];
+            if (!(b.mass > 0.0f)) continue;
+            q.kineticEnergy += 0.5f * b.mass * MagnitudeSq(b.velocity) +
+                               0.5f * Dot(b.angVel, MultiplyVector(b.angVel, b.InertiaTensor()));
+            if (b.position.y < 0.0f) ++q.below;
+            q.displacement = std::fmax(q.displacement, Magnitude(b.position - start[i]));
+        }
+        const vec3 d = bodies.back().position - start.back();  // the top of a tower is its last body
+        q.drift = std::sqrt(d.x * d.x + d.z * d.z);
+        return q;
+    }
+
+private:
+    std::vector<RigidbodyVolume> bodies;
+    std::vector<RigidbodyVolume*> pointers;
+    std::vector<vec3> start;
+    Broadphase broadphase;
+    std::vector<std::pair<int, int>> pairs;
+    CollisionManifold manifold;
+};
+
+/// This engine with the bench's settings: the chosen contact solver, 10 iterations for Accumulated (the book's
+/// 5 otherwise), sleeping off; damping off comes from the specs.
+class PsbEngine {
+public:
+    PsbEngine(const std::vector<BodySpec>& specs, ContactSolver solver) : world(specs) {
+        WorldSettings& s = world.system.settings;
+        s.contactSolver = solver;
+        if (solver == ContactSolver::Accumulated) s.solverIterations = 10;
+        s.sleep.enabled = false;
+    }
+    void Step() { world.system.Update(kDt); }
+    std::size_t BodyCount() const { return world.Bodies().size(); }
+    BodyState State(std::size_t i) const {
+        const RigidbodyVolume& b = world.Body(i);
+        return BodyState{b.position, b.orientation, b.velocity, b.angVel};
+    }
+    /// Empty unless the world refused a body.
+    const std::string& Error() const { return world.system.LastError(); }
+
+private:
+    RigidWorld world;
+};
+
+/// Bullet with the bench's settings: 10 solver iterations, split impulse, one internal step per frame.
+class BulletEngine {
+public:
+    explicit BulletEngine(const std::vector<BodySpec>& specs) : world(specs, 10) {}
+    void Step() { world.Step(kDt); }
+    std::size_t BodyCount() const { return world.BodyCount(); }
+    BodyState State(std::size_t i) const { return world.State(i); }
+
+private:
+    BulletWorld world;
+};
+
+double Median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    const std::size_t mid = v.size() / 2;
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(mid), v.end());
+    const double upper = v[mid];
+    if (v.size() % 2 == 1) return upper;
+    return 0.5 * (upper + *std::max_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(mid)));
+}
+
+struct RunResult {
+    double msPerStep = 0.0;  // median over the steps after the warm-up
+    Quality quality;
+};
+
+/// One full run of `engine`: every step timed on its own; after each of the last kPenetrationWindow steps (not
+/// timed) the probe takes the poses and measures penetration.
+template <typename Engine>
+RunResult Run(Engine& engine, Probe& probe, const Options& o) {
+    std::vector<double> ms(static_cast<std::size_t>(o.steps));
+    float penetration = 0.0f;
+    const std::size_t count = engine.BodyCount();
+    for (int s = 0; s < o.steps; ++s) {
+        const auto t0 = std::chrono::steady_clock::now();
+        engine.Step();
+        const auto t1 = std::chrono::steady_clock::now();
+        ms[static_cast<std::size_t>(s)] = std::chrono::duration<double, std::milli>(t1 - t0).count();
+        if (s >= o.steps - kPenetrationWindow) {
+            for (std::size_t i = 0; i < count; ++i) probe.Set(i, engine.State(i));
+            penetration = std::fmax(penetration, probe.DeepestPenetration());
+        }
+    }
+    RunResult r;
+    r.msPerStep = Median(std::vector<double>(ms.begin() + o.warmup, ms.end()));
+    r.quality = probe.Final(penetration);
+    return r;
+}
+
+bool ParseInt(const char* text, int* out) {
+    if (text == nullptr || *text == '\0') return false;
+    char* end = nullptr;
+    errno = 0;
+    const long v = std::strtol(text, &end, 10);
+    if (*end != '\0' || errno != 0 || v < -2147483647L || v > 2147483647L) return false;
+    *out = static_cast<int>(v);
+    return true;
+}
+
+int Usage(const char* message, const char* value) {
+    std::fprintf(stderr, "psb-peer-bench: %s '%s'\n%s", message, value, kUsage);
+    return 2;
+}
+
+/// 0 on success, else the exit code (2) after printing why.
+int Parse(int argc, char** argv, Options* o, bool* help) {
+    std::vector<const char*> positional;
+    for (int i = 1; i < argc; ++i) {
+        const char* arg = argv[i];
+        if (std::strcmp(arg, "--help") == 0 || std::strcmp(arg, "-h") == 0) {
+            *help = true;
+            return 0;
+        }
+        if (std::strncmp(arg, "--", 2) != 0) {
+            positional.push_back(arg);
+            continue;
+        }
+        if (i + 1 >= argc) return Usage("missing value after", arg);
+        const char* value = argv[++i];
+        if (std::strcmp(arg, "--solver") == 0) {
+            if (!ParseContactSolver(value, &o->solver)) {
+                std::fprintf(stderr, "psb-peer-bench: unknown --solver '%s' (one of %s)\n", value,
+                             ContactSolverIds().c_str());
+                return 2;
+            }
+        } else if (std::strcmp(arg, "--steps") == 0) {
+            if (!ParseInt(value, &o->steps) || o->steps < 1 || o->steps > 1000000)
+                return Usage("--steps must be an integer in 1..1000000, got", value);
+        } else if (std::strcmp(arg, "--warmup") == 0) {
+            if (!ParseInt(value, &o->warmup) || o->warmup < 0)
+                return Usage("--warmup must be an integer >= 0, got", value);
+        } else if (std::strcmp(arg, "--repeat") == 0) {
+            if (!ParseInt(value, &o->repeat) || o->repeat < 1 || o->repeat > 1000)
+                return Usage("--repeat must be an integer in 1..1000, got", value);
+        } else {
+            return Usage("unknown option", arg);
+        }
+    }
+    if (positional.size() != 2) {
+        std::fprintf(stderr, "psb-peer-bench: expected SCENE N, got %zu argument(s)\n%s", positional.size(), kUsage);
+        return 2;
+    }
+    o->scene = positional[0];
+    int limit = 0;
+    if (o->scene == "boxpile") {
+        limit = 100000;
+    } else if (o->scene == "pyramid") {
+        limit = 300;
+    } else if (o->scene == "tower") {
+        limit = 1000;
+    } else {
+        return Usage("unknown scene (boxpile, pyramid or tower)", positional[0]);
+    }
+    if (!ParseInt(positional[1], &o->n) || o->n < 1 || o->n > limit) {
+        std::fprintf(stderr, "psb-peer-bench: N for %s must be an integer in 1..%d, got '%s'\n", o->scene.c_str(),
+                     limit, positional[1]);
+        return 2;
+    }
+    if (o->warmup >= o->steps) {
+        std::fprintf(stderr, "psb-peer-bench: --warmup %d must be smaller than --steps %d\n", o->warmup, o->steps);
+        return 2;
+    }
+    return 0;
+}
+
+std::vector<BodySpec> Scene(const Options& o) {
+    if (o.scene == "boxpile") return PeerBoxpile(o.n);
+    if (o.scene == "pyramid") return PeerPyramid(o.n);
+    return PeerTower(o.n);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Options o;
+    bool help = false;
+    if (const int code = Parse(argc, argv, &o, &help)) return code;
+    if (help) {
+        std::fputs(kUsage, stdout);
+        return 0;
+    }
+    const std::vector<BodySpec> specs = Scene(o);
+    Probe probe(specs);
+    std::vector<double> bulletMs, psbMs;
+    RunResult bullet, psb;
+    for (int round = 0; round < o.repeat; ++round) {
+        // Alternate which engine goes first, so neither always runs on a warmer (or busier) machine.
+        for (int k = 0; k < 2; ++k) {
+            if ((k == 0) == (round % 2 == 0)) {
+                BulletEngine engine(specs);
+                bullet = Run(engine, probe, o);
+                bulletMs.push_back(bullet.msPerStep);
+            } else {
+                PsbEngine engine(specs, o.solver);
+                if (!engine.Error().empty()) {
+                    std::fprintf(stderr, "psb-peer-bench: the scene was refused: %s\n", engine.Error().c_str());
+                    return 1;
+                }
+                psb = Run(engine, probe, o);
+                psbMs.push_back(psb.msPerStep);
+            }
+        }
+    }
+    const double bMs = Median(bulletMs), pMs = Median(psbMs);
+    std::printf("scene=%s n=%d solver=%s bullet_ms=%.4g psb_ms=%.4g ratio=%.3f", o.scene.c_str(), o.n,
+                ToString(o.solver), bMs, pMs, bMs > 0.0 ? pMs / bMs : 0.0);
+    const Quality& b = bullet.quality;
+    const Quality& p = psb.quality;
+    std::printf(" bullet_pen=%.4g psb_pen=%.4g", b.penetration, p.penetration);
+    if (o.scene == "boxpile") {
+        std::printf(" bullet_ke=%.4g psb_ke=%.4g bullet_below=%d psb_below=%d", b.kineticEnergy, p.kineticEnergy,
+                    b.below, p.below);
+    } else {
+        std::printf(" bullet_disp=%.4g psb_disp=%.4g", b.displacement, p.displacement);
+        if (o.scene == "tower") std::printf(" bullet_drift=%.4g psb_drift=%.4g", b.drift, p.drift);
+    }
+    std::printf(" steps=%d warmup=%d repeat=%d\n", o.steps, o.warmup, o.repeat);
+    return 0;
+}

@@ -1,0 +1,95 @@
+#!/bin/sh
+# Smoke test of psb-peer-bench (docs/peers.md) on small scenes: one line with every key, finite positive times,
+# what the physics must show in both engines, and bad usage refused with exit 2 and the bad value named. No
+# timing assertions (the machine may be busy). Usage: peer_bench_test.sh PATH/TO/psb-peer-bench
+set -eu
+bench=$1
+fail() { echo "peers.smoke: FAIL: $*" >&2; exit 1; }
+out=$(mktemp) err=$(mktemp)
+trap 'rm -f "$out" "$err"' EXIT
+
+# value KEY: the value of KEY in the line in $out (empty if absent).
+value() { tr ' ' '\n' <"$out" | awk -F= -v k="$1" '$1 == k { print $2 }'; }
+# check_keys KEY...: each key present exactly once with a non-empty value.
+check_keys() {
+  for k in "$@"; do
+    [ "$(tr ' ' '\n' <"$out" | grep -c "^$k=.")" -eq 1 ] || fail "key '$k' missing or repeated in: $(cat "$out")"
+  done
+}
+# holds EXPR: an awk condition over the line's keys (as variables) that must be true.
+holds() {
+  tr ' ' '\n' <"$out" | awk -F= -v what="$1" '{ v[$1] = $2 }
+    END {
+      split(what, t, " ")
+      # t[1] key, t[2] operator, t[3] number
+      x = v[t[1]]
+      if (x == "" || x ~ /nan|inf/) exit 1
+      if (t[2] == "<") exit !(x + 0 < t[3] + 0)
+      if (t[2] == ">") exit !(x + 0 > t[3] + 0)
+      if (t[2] == "==") exit !(x + 0 == t[3] + 0)
+      exit 1
+    }' || fail "expected $1 in: $(cat "$out")"
+}
+common="scene n solver bullet_ms psb_ms ratio bullet_pen psb_pen steps warmup repeat"
+
+# --- help and bad usage
+"$bench" --help >"$out" || fail "--help exited $?"
+grep -q "^Usage: psb-peer-bench SCENE N" "$out" || fail "--help prints no usage"
+refused() {  # refused NEEDLE ARGS...: exit 2 and NEEDLE on stderr
+  needle=$1
+  shift
+  set +e
+  "$bench" "$@" >"$out" 2>"$err"
+  code=$?
+  set -e
+  [ "$code" -eq 2 ] || fail "'$*' exited $code, expected 2"
+  grep -q -- "$needle" "$err" || fail "'$*': stderr does not name '$needle': $(cat "$err")"
+  [ ! -s "$out" ] || fail "'$*' printed a result line"
+}
+refused "expected SCENE N"
+refused "'spiral'" spiral 5
+refused "'0'" tower 0
+refused "'five'" tower five
+refused "'200000'" boxpile 200000
+refused "'nope'" tower 5 --solver nope
+refused "'--frobnicate'" tower 5 --frobnicate 1
+refused "--warmup 10 must be smaller than --steps 10" tower 5 --steps 10 --warmup 10
+refused "'0'" tower 5 --repeat 0
+refused "'-3'" tower 5 --steps -3
+refused "missing value after '--steps'" tower 5 --steps
+
+# --- tower 5, accumulated: stands in both engines
+"$bench" tower 5 --solver accumulated --steps 120 --warmup 10 --repeat 1 >"$out" 2>"$err" || fail "tower 5 exited $?"
+[ "$(wc -l <"$out")" -eq 1 ] || fail "tower 5 printed $(wc -l <"$out") lines"
+check_keys $common bullet_disp psb_disp bullet_drift psb_drift
+[ "$(value scene)" = tower ] && [ "$(value n)" = 5 ] && [ "$(value solver)" = accumulated ] ||
+  fail "scene, n or solver not echoed: $(cat "$out")"
+holds "bullet_ms > 0"
+holds "psb_ms > 0"
+holds "ratio > 0"
+for e in bullet psb; do
+  holds "${e}_disp < 0.05"
+  holds "${e}_drift < 0.05"
+  holds "${e}_pen < 0.05"
+done
+
+# --- boxpile 100: nothing falls through the ground; the pile is not exploding
+"$bench" boxpile 100 --solver accumulated --steps 120 --warmup 10 --repeat 1 >"$out" 2>"$err" ||
+  fail "boxpile 100 exited $?"
+check_keys $common bullet_ke psb_ke bullet_below psb_below
+holds "bullet_ms > 0"
+holds "psb_ms > 0"
+for e in bullet psb; do
+  holds "${e}_below == 0"
+  holds "${e}_pen < 0.5"
+  holds "${e}_ke < 1000"
+done
+
+# --- pyramid 4 with the book's solver, two rounds: the keys of a pyramid
+"$bench" pyramid 4 --solver book --steps 30 --warmup 5 --repeat 2 >"$out" 2>"$err" || fail "pyramid 4 exited $?"
+check_keys $common bullet_disp psb_disp
+[ "$(value solver)" = book ] && [ "$(value repeat)" = 2 ] || fail "solver or repeat not echoed: $(cat "$out")"
+holds "bullet_ms > 0"
+holds "psb_ms > 0"
+holds "bullet_disp < 1"
+echo "peers.smoke: ok"
