@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <string>
 #include <utility>
 #include <vector>
@@ -32,13 +33,14 @@ const char kUsage[] =
     "  --solver S   this engine's contact solver (default accumulated; 10 iterations for accumulated)\n"
     "  --steps S    steps per run at 1/60 s (default 600)\n"
     "  --warmup W   first steps left out of the timing median (default 60, < S)\n"
-    "  --repeat R   rounds; each round runs both engines, the first alternating (default 3)\n"
+    "  --repeat R   rounds, each running both engines, Bullet first in odd rounds (default 3)\n"
     "Builds the scene in Bullet and in this engine from one definition and prints one line of key=value pairs:\n"
-    "scene, n, solver, bullet_ms, psb_ms, ratio (psb / bullet; medians of ms per step after the warm-up, median\n"
-    "over rounds) and each engine's quality: pen (deepest penetration over the last 60 steps, m, measured with\n"
-    "this engine's box manifolds on both), and per scene ke (final kinetic energy, J) and below (bodies with\n"
-    "centre below y = 0) for boxpile, disp (largest |p_end - p_start|, m) for pyramid and tower, drift (top\n"
-    "box's x-z distance from its start, m) for tower. docs/peers.md has the method.\n";
+    "scene, n, solver; bullet_ms, psb_ms, ratio (psb / bullet): medians of wall ms per step after the warm-up,\n"
+    "median over rounds; bullet_cpu_ms, psb_cpu_ms, cpu_ratio: the same from this thread's CPU time; each\n"
+    "engine's quality: pen (deepest penetration over the last 60 steps, m, measured with this engine's box\n"
+    "manifolds on both engines' poses), and ke (final kinetic energy, J) and below (bodies with centre below\n"
+    "y = 0) for boxpile, disp (largest |p_end - p_start|, m) for pyramid and tower, drift (top box's x-z\n"
+    "distance from its start, m) for tower; steps, warmup, repeat. docs/peers.md has the method.\n";
 
 struct Options {
     std::string scene;
@@ -162,8 +164,18 @@ double Median(std::vector<double> v) {
     return 0.5 * (upper + *std::max_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(mid)));
 }
 
+/// CPU time this thread has used, ms. On a busy machine a step's wall time includes the time it waited for a
+/// core, and a long step is preempted more often than a short one, so wall medians favour the faster engine; the
+/// CPU-time medians are printed beside them (docs/peers.md, "Timing").
+double ThreadCpuMs() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
+}
+
 struct RunResult {
-    double msPerStep = 0.0;  // median over the steps after the warm-up
+    double msPerStep = 0.0;     // wall clock: median over the steps after the warm-up
+    double cpuMsPerStep = 0.0;  // this thread's CPU time: median over the same steps
     Quality quality;
 };
 
@@ -171,14 +183,17 @@ struct RunResult {
 /// timed) the probe takes the poses and measures penetration.
 template <typename Engine>
 RunResult Run(Engine& engine, Probe& probe, const Options& o) {
-    std::vector<double> ms(static_cast<std::size_t>(o.steps));
+    std::vector<double> ms(static_cast<std::size_t>(o.steps)), cpuMs(ms.size());
     float penetration = 0.0f;
     const std::size_t count = engine.BodyCount();
     for (int s = 0; s < o.steps; ++s) {
+        const double c0 = ThreadCpuMs();  // outside the wall-clock interval: its system call is not timed
         const auto t0 = std::chrono::steady_clock::now();
         engine.Step();
         const auto t1 = std::chrono::steady_clock::now();
+        const double c1 = ThreadCpuMs();
         ms[static_cast<std::size_t>(s)] = std::chrono::duration<double, std::milli>(t1 - t0).count();
+        cpuMs[static_cast<std::size_t>(s)] = c1 - c0;
         if (s >= o.steps - kPenetrationWindow) {
             for (std::size_t i = 0; i < count; ++i) probe.Set(i, engine.State(i));
             penetration = std::fmax(penetration, probe.DeepestPenetration());
@@ -186,6 +201,7 @@ RunResult Run(Engine& engine, Probe& probe, const Options& o) {
     }
     RunResult r;
     r.msPerStep = Median(std::vector<double>(ms.begin() + o.warmup, ms.end()));
+    r.cpuMsPerStep = Median(std::vector<double>(cpuMs.begin() + o.warmup, cpuMs.end()));
     r.quality = probe.Final(penetration);
     return r;
 }
@@ -284,7 +300,7 @@ int main(int argc, char** argv) {
     }
     const std::vector<BodySpec> specs = Scene(o);
     Probe probe(specs);
-    std::vector<double> bulletMs, psbMs;
+    std::vector<double> bulletMs, psbMs, bulletCpuMs, psbCpuMs;
     RunResult bullet, psb;
     for (int round = 0; round < o.repeat; ++round) {
         // Alternate which engine goes first, so neither always runs on a warmer (or busier) machine.
@@ -293,6 +309,7 @@ int main(int argc, char** argv) {
                 BulletEngine engine(specs);
                 bullet = Run(engine, probe, o);
                 bulletMs.push_back(bullet.msPerStep);
+                bulletCpuMs.push_back(bullet.cpuMsPerStep);
             } else {
                 PsbEngine engine(specs, o.solver);
                 if (!engine.Error().empty()) {
@@ -301,12 +318,15 @@ int main(int argc, char** argv) {
                 }
                 psb = Run(engine, probe, o);
                 psbMs.push_back(psb.msPerStep);
+                psbCpuMs.push_back(psb.cpuMsPerStep);
             }
         }
     }
     const double bMs = Median(bulletMs), pMs = Median(psbMs);
     std::printf("scene=%s n=%d solver=%s bullet_ms=%.4g psb_ms=%.4g ratio=%.3f", o.scene.c_str(), o.n,
                 ToString(o.solver), bMs, pMs, bMs > 0.0 ? pMs / bMs : 0.0);
+    const double bCpu = Median(bulletCpuMs), pCpu = Median(psbCpuMs);
+    std::printf(" bullet_cpu_ms=%.4g psb_cpu_ms=%.4g cpu_ratio=%.3f", bCpu, pCpu, bCpu > 0.0 ? pCpu / bCpu : 0.0);
     const Quality& b = bullet.quality;
     const Quality& p = psb.quality;
     std::printf(" bullet_pen=%.4g psb_pen=%.4g", b.penetration, p.penetration);

@@ -30,7 +30,7 @@ holds() {
       exit 1
     }' || fail "expected $1 in: $(cat "$out")"
 }
-common="scene n solver bullet_ms psb_ms ratio bullet_pen psb_pen steps warmup repeat"
+common="scene n solver bullet_ms psb_ms ratio bullet_cpu_ms psb_cpu_ms cpu_ratio bullet_pen psb_pen steps warmup repeat"
 
 # --- help and bad usage
 "$bench" --help >"$out" || fail "--help exited $?"
@@ -64,9 +64,9 @@ refused "missing value after '--steps'" tower 5 --steps
 check_keys $common bullet_disp psb_disp bullet_drift psb_drift
 [ "$(value scene)" = tower ] && [ "$(value n)" = 5 ] && [ "$(value solver)" = accumulated ] ||
   fail "scene, n or solver not echoed: $(cat "$out")"
-holds "bullet_ms > 0"
-holds "psb_ms > 0"
-holds "ratio > 0"
+for k in bullet_ms psb_ms ratio bullet_cpu_ms psb_cpu_ms cpu_ratio; do
+  holds "$k > 0"
+done
 for e in bullet psb; do
   holds "${e}_disp < 0.05"
   holds "${e}_drift < 0.05"
