@@ -74,6 +74,7 @@ public:
         }
     }
 
+    /// Body i takes the pose and velocities `s` (world) and syncs its collision volumes.
     void Set(std::size_t i, const BodyState& s) {
         RigidbodyVolume& b = bodies[i];
         b.position = s.position;
@@ -95,6 +96,8 @@ public:
         return deepest;
     }
 
+    /// The run's quality from the bodies' current states (set from the last step) and the deepest
+    /// `penetration` (m) seen over the window.
     Quality Final(float penetration) const {
         Quality q;
         q.penetration = penetration;
