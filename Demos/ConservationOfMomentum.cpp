@@ -5,14 +5,20 @@
 #include "Application/Render/FixedFunctionPhysics.h"
 #include "Application/Render/FixedFunctionPrimitives.h"
 #include "Demos/ParameterPanel.h"
+#include "Demos/Scenes/ContactSolverParameters.h"
 
-ConservationOfMomentum::ConservationOfMomentum() { scene.AddParameters(&params); }
-
-void ConservationOfMomentum::Initialize(int width, int height) {
-    DemoBase::Initialize(width, height);
+ConservationOfMomentum::ConservationOfMomentum() {
     // docs/book-reference.md §2.4 gives only the zoom; target and rotation are the CH14 preset the other ch15 demos
     // use.
     UseBookCamera(12.0f);
+    scene.AddParameters(&params);
+    // Not a book row: the panel shows a non-book contact solver in effect (--set solver=).
+    params.AddPanelText(
+        [this] { return ContactSolverRow(scene.System().settings.contactSolver, scene.Params().soft); });
+}
+
+void ConservationOfMomentum::Initialize(int width, int height) {
+    DemoBase::Initialize(width, height);
     glPointSize(5.0f);
     EnableBookLighting();
     scene.Reset();
@@ -30,7 +36,9 @@ void ConservationOfMomentum::Update(float dt) {
 }
 
 void ConservationOfMomentum::ImGUI() {
-    DrawPanel("Conservation Demo", BookPanel::kTallHeight);
+    // The book's panel; a non-book contact solver adds its row.
+    const bool bookSolver = scene.System().settings.contactSolver == ContactSolver::Book;
+    DrawPanel("Conservation Demo", BookPanel::kTallHeight + (bookSolver ? 0.0f : BookPanel::kRowHeight));
     DemoBase::ImGUI();
 }
 

@@ -5,12 +5,18 @@
 #include "Application/Render/FixedFunctionPhysics.h"
 #include "Application/Render/FixedFunctionPrimitives.h"
 #include "Demos/ParameterPanel.h"
+#include "Demos/Scenes/ContactSolverParameters.h"
 
-LinearImpulse::LinearImpulse() { scene.AddParameters(&params); }
+LinearImpulse::LinearImpulse() {
+    UseBookCamera(9.0f);
+    scene.AddParameters(&params);
+    // Not a book row: the panel shows a non-book contact solver in effect (--set solver=).
+    params.AddPanelText(
+        [this] { return ContactSolverRow(scene.System().settings.contactSolver, scene.Params().soft); });
+}
 
 void LinearImpulse::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
-    UseBookCamera(9.0f);
     glPointSize(5.0f);
     EnableBookLighting();
     scene.Reset();
@@ -28,7 +34,9 @@ void LinearImpulse::Update(float dt) {
 }
 
 void LinearImpulse::ImGUI() {
-    DrawPanel("Linear Impulse Demo", BookPanel::kTallHeight);
+    // The book's panel; a non-book contact solver adds its row.
+    const bool bookSolver = scene.System().settings.contactSolver == ContactSolver::Book;
+    DrawPanel("Linear Impulse Demo", BookPanel::kTallHeight + (bookSolver ? 0.0f : BookPanel::kRowHeight));
     DemoBase::ImGUI();
 }
 
