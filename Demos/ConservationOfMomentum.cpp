@@ -36,9 +36,8 @@ void ConservationOfMomentum::Update(float dt) {
 }
 
 void ConservationOfMomentum::ImGUI() {
-    // The book's panel; a non-book contact solver adds its row.
-    const bool bookSolver = scene.System().settings.contactSolver == ContactSolver::Book;
-    DrawPanel("Conservation Demo", BookPanel::kTallHeight + (bookSolver ? 0.0f : BookPanel::kRowHeight));
+    // The book's 100 px panel has room below its widgets for the row naming a non-book contact solver.
+    DrawPanel("Conservation Demo", BookPanel::kTallHeight);
     DemoBase::ImGUI();
 }
 

@@ -34,9 +34,8 @@ void LinearImpulse::Update(float dt) {
 }
 
 void LinearImpulse::ImGUI() {
-    // The book's panel; a non-book contact solver adds its row.
-    const bool bookSolver = scene.System().settings.contactSolver == ContactSolver::Book;
-    DrawPanel("Linear Impulse Demo", BookPanel::kTallHeight + (bookSolver ? 0.0f : BookPanel::kRowHeight));
+    // The book's 100 px panel has room below its widgets for the row naming a non-book contact solver.
+    DrawPanel("Linear Impulse Demo", BookPanel::kTallHeight);
     DemoBase::ImGUI();
 }
 
