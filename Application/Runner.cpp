@@ -408,6 +408,11 @@ int ExportScene(const Options& o) {
     std::vector<std::string> notes;
     SceneDescription description = DescribeWorld(*world, info->title, &notes);
     description.world.step = demo->PhysicsStep();
+    // The demo's own view (set by its constructor) with the run's camera flags, as a run would start.
+    ApplyCamera(o, *demo);
+    description.camera.target = demo->camera.GetTarget();
+    description.camera.rotation = demo->camera.GetRotation();
+    description.camera.zoom = demo->camera.GetZoom();
     demo->ExportNotes(&notes);
     const std::string text = WriteSceneText(description);
     std::string error;

@@ -15,6 +15,7 @@ constexpr std::size_t kDeltaHistory = 120;
 }  // namespace
 
 CH14Demo::CH14Demo() {
+    UseBookCamera(9.0f);
     // The panel (docs/book-reference.md §2.1): the delta row, "Particle count" with a 100 px slider, Reset,
     // Show Help; then the model's --set keys.
     using Widget = ParameterSet::Widget;

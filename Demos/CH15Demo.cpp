@@ -7,19 +7,18 @@
 #include "Application/Render/FixedFunctionPhysics.h"
 #include "Application/Render/FixedFunctionPrimitives.h"
 #include "Demos/ParameterPanel.h"
+#include "Demos/Scenes/ContactSolverParameters.h"
 
 CH15Demo::CH15Demo() {
+    UseBookCamera(12.0f);
     scene.AddParameters(&params);
     // Not a book row: the panel shows a non-book contact solver in effect.
-    params.AddPanelText([this] {
-        return scene.Params().solver == 0 ? std::string()
-                                          : std::string("Contact solver: ") + ToString(ContactSolver::Accumulated);
-    });
+    params.AddPanelText(
+        [this] { return ContactSolverRow(scene.System().settings.contactSolver, scene.Params().soft); });
 }
 
 void CH15Demo::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
-    UseBookCamera(12.0f);
     glPointSize(5.0f);
     EnableBookLighting();
     scene.Reset();
@@ -38,7 +37,7 @@ void CH15Demo::Update(float dt) {
 
 void CH15Demo::ImGUI() {
     // The book's panel is 75 high; a non-book contact solver adds its row.
-    const bool bookSolver = scene.Params().solver == 0;
+    const bool bookSolver = scene.System().settings.contactSolver == ContactSolver::Book;
     DrawPanel("Chapter 15 Demo", BookPanel::kHeight + (bookSolver ? 0.0f : BookPanel::kSolverRowHeight));
     DemoBase::ImGUI();
 }

@@ -4,7 +4,10 @@
 #include "Application/Render/FixedFunctionPrimitives.h"
 #include "Demos/SoftDemoPanel.h"
 
-CH16Demo::CH16Demo() { scene.AddParameters(&params); }
+CH16Demo::CH16Demo() {
+    UseBookCamera(9.0f);
+    scene.AddParameters(&params);
+}
 
 void CH16Demo::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);

@@ -5,14 +5,20 @@
 #include "Application/Render/FixedFunctionPhysics.h"
 #include "Application/Render/FixedFunctionPrimitives.h"
 #include "Demos/ParameterPanel.h"
+#include "Demos/Scenes/ContactSolverParameters.h"
 
-ConservationOfMomentum::ConservationOfMomentum() { scene.AddParameters(&params); }
-
-void ConservationOfMomentum::Initialize(int width, int height) {
-    DemoBase::Initialize(width, height);
+ConservationOfMomentum::ConservationOfMomentum() {
     // docs/book-reference.md §2.4 gives only the zoom; target and rotation are the CH14 preset the other ch15 demos
     // use.
     UseBookCamera(12.0f);
+    scene.AddParameters(&params);
+    // Not a book row: the panel shows a non-book contact solver in effect (--set solver=).
+    params.AddPanelText(
+        [this] { return ContactSolverRow(scene.System().settings.contactSolver, scene.Params().soft); });
+}
+
+void ConservationOfMomentum::Initialize(int width, int height) {
+    DemoBase::Initialize(width, height);
     glPointSize(5.0f);
     EnableBookLighting();
     scene.Reset();
@@ -30,6 +36,7 @@ void ConservationOfMomentum::Update(float dt) {
 }
 
 void ConservationOfMomentum::ImGUI() {
+    // The book's 100 px panel has room below its widgets for the row naming a non-book contact solver.
     DrawPanel("Conservation Demo", BookPanel::kTallHeight);
     DemoBase::ImGUI();
 }

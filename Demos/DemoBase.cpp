@@ -72,7 +72,6 @@ void DemoBase::EnableBookLighting() {
 void DemoBase::InitializeBookView() {
     EnableBookLighting();
     SetLightDirection(vec3(0.5f, 1.0f, -1.5f));
-    UseBookCamera(9.0f);
 }
 
 void DemoBase::SetMouseState(bool left, bool middle, bool right, const vec2& delta, const vec2& mouse) {

@@ -21,6 +21,8 @@ struct BodyState {
 
 class DemoBase {
 public:
+    /// The view; each demo sets its starting view in its constructor (UseBookCamera), so it is known before
+    /// Initialize (--export-scene writes it).
     OrbitCamera camera;
 
     DemoBase();
@@ -72,12 +74,14 @@ protected:
     /// Appends the book's panel-only "Show Help" button (on the line of the widget before it) to the table.
     void AddShowHelpButton();
     /// The book's chapter 14-16 camera preset (docs/book-reference.md §1.4): target (3.75622, 2.98255, 0), rotation
-    /// (-67.9312, 19.8) degrees, and `zoom` (9 in most demos; 12 in CH15 and Conservation Of Momentum).
+    /// (-67.9312, 19.8) degrees, and `zoom` (9 in most demos; 12 in CH15 and Conservation Of Momentum). Called in
+    /// the demo's constructor (the book does it in Initialize), so `camera` is the demo's view before any GL context
+    /// exists: --export-scene writes it.
     void UseBookCamera(float zoom);
     /// Turns on GL_LIGHTING and GL_LIGHT0, as each demo's Initialize does (docs/book-reference.md §1.5).
     static void EnableBookLighting();
     /// CH14's and the chapter 16 demos' Initialize view: EnableBookLighting, the light (0.5, 1, -1.5, 0) until
-    /// the first Render (docs/book-reference.md §1.5), and UseBookCamera(9).
+    /// the first Render (docs/book-reference.md §1.5). Their camera is set by their constructor (UseBookCamera(9)).
     void InitializeBookView();
 
     bool show_help = false;

@@ -5,6 +5,7 @@
 #include "Demos/SoftDemoPanel.h"
 
 JointDemo::JointDemo() : scene(JointParams(), &rng) {
+    UseBookCamera(9.0f);
     scene.AddParameters(&params);
     AddShowHelpButton();
 }

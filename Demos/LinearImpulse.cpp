@@ -5,12 +5,18 @@
 #include "Application/Render/FixedFunctionPhysics.h"
 #include "Application/Render/FixedFunctionPrimitives.h"
 #include "Demos/ParameterPanel.h"
+#include "Demos/Scenes/ContactSolverParameters.h"
 
-LinearImpulse::LinearImpulse() { scene.AddParameters(&params); }
+LinearImpulse::LinearImpulse() {
+    UseBookCamera(9.0f);
+    scene.AddParameters(&params);
+    // Not a book row: the panel shows a non-book contact solver in effect (--set solver=).
+    params.AddPanelText(
+        [this] { return ContactSolverRow(scene.System().settings.contactSolver, scene.Params().soft); });
+}
 
 void LinearImpulse::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
-    UseBookCamera(9.0f);
     glPointSize(5.0f);
     EnableBookLighting();
     scene.Reset();
@@ -28,6 +34,7 @@ void LinearImpulse::Update(float dt) {
 }
 
 void LinearImpulse::ImGUI() {
+    // The book's 100 px panel has room below its widgets for the row naming a non-book contact solver.
     DrawPanel("Linear Impulse Demo", BookPanel::kTallHeight);
     DemoBase::ImGUI();
 }

@@ -5,6 +5,7 @@
 #include "Demos/SoftDemoPanel.h"
 
 SimpleSprings::SimpleSprings() {
+    UseBookCamera(9.0f);
     scene.AddParameters(&params);
     AddShowHelpButton();
 }

@@ -2,9 +2,9 @@
 """Validates every shipped scene (scenes/*.json) against scenes/scene.schema.json (docs/scenes.md).
 
 Implements the subset of JSON Schema the schema uses (type, const, enum, required, properties,
-additionalProperties: false, items, minItems/maxItems, minimum/maximum/exclusiveMinimum, minLength, $ref into
-$defs) with the standard library only. Also checks what a schema cannot: ids unique, springs and joints naming
-bodies. Exit 0 when every scene passes, 1 listing each problem as FILE: PATH: message."""
+additionalProperties: false, items, minItems/maxItems, minimum/maximum/exclusiveMinimum, minLength, oneOf, $ref
+into $defs) with the standard library only. Also checks what a schema cannot: no key given twice in one object,
+ids unique, springs and joints naming bodies. Exit 0 when every scene passes, 1 listing each problem as FILE: PATH: message."""
 import json
 import os
 import sys
@@ -24,6 +24,12 @@ def validate(value, schema, root, path, problems):
     if "$ref" in schema:
         name = schema["$ref"].split("/")[-1]
         return validate(value, root["$defs"][name], root, path, problems)
+    if "oneOf" in schema:
+        fits = [alt for alt in schema["oneOf"] if not validate_quiet(value, alt, root)]
+        if len(fits) != 1:
+            problems.append(f"{path}: must match exactly one of {len(schema['oneOf'])} forms (got {json.dumps(value)})")
+            return
+        return validate(value, fits[0], root, path, problems)
     if "type" in schema and not type_ok(value, schema["type"]):
         problems.append(f"{path}: must be of type {schema['type']} (got {json.dumps(value)})")
         return
@@ -58,6 +64,26 @@ def validate(value, schema, root, path, problems):
                 problems.append(f"{where}: unknown key")
 
 
+def validate_quiet(value, schema, root):
+    problems = []
+    validate(value, schema, root, "", problems)
+    return problems
+
+
+class DuplicateKey(ValueError):
+    pass
+
+
+def unique_keys(pairs):
+    """object_pairs_hook: json keeps the last of a key given twice; a scene file refuses it (docs/scenes.md)."""
+    seen = {}
+    for key, value in pairs:
+        if key in seen:
+            raise DuplicateKey(f"duplicate key {key!r}")
+        seen[key] = value
+    return seen
+
+
 def check_ids(scene, problems):
     ids = set()
     for i, body in enumerate(scene.get("bodies", [])):
@@ -84,9 +110,14 @@ def main():
     for name in names:
         problems = []
         with open(os.path.join(scenes, name), encoding="utf-8") as f:
-            scene = json.load(f)
-        validate(scene, schema, schema, "", problems)
-        check_ids(scene, problems)
+            try:
+                scene = json.load(f, object_pairs_hook=unique_keys)
+            except DuplicateKey as e:
+                scene = None
+                problems.append(str(e))
+        if scene is not None:
+            validate(scene, schema, schema, "", problems)
+            check_ids(scene, problems)
         for p in problems:
             print(f"scenes/{name}: {p}")
         failures += bool(problems)

@@ -34,7 +34,8 @@ trap 'rm -rf "$work"' EXIT
 { head -n 1 "${inputs[0]}"; for f in "${inputs[@]}"; do tail -n +2 "$f"; done | sort -t, -k1,1n; } > "$work/all.csv"
 
 # Columns: 1 run, 2 problem, 3 integrator, 4 dt, 5 substeps, 6 iterations, 7 projection, 8 solver, 9 param,
-# 10 error, 11 cpu_per_sim_s, 12 stable, 13 steps, 14 sim_s, 15 note.
+# 10 error, 11 cpu_per_sim_s, 12 stable, 13 steps, 14 sim_s, 15 note, 16 soft_substeps .. 25 (the soft solver's
+# settings; '-' on other rows, absent in CSVs written before it).
 series_name() {  # awk snippet: the legend of a row
   cat <<'AWK'
 function series(   s) {
@@ -42,6 +43,7 @@ function series(   s) {
   if ($6 != "-") s = s " it=" $6;
   if ($7 != "-") s = s " proj=" ($7 == "1" ? "on" : "off");
   if ($5 != "1") s = s " sub=" $5;
+  if (NF >= 16 && $16 != "-") s = s " soft-substeps=" $16;
   if ($9 != "-" && multi) s = s " " pname "=" $9;
   return s;
 }
@@ -107,7 +109,7 @@ stability_map() {  # problem(s) regex, output name, y label, tolerance, panel (3
   mkdir -p "$dir"
   awk -F, -v re="$regex" -v dir="$dir" -v tol="$tol" -v col="$col" '
     NR > 1 && $2 ~ re {
-      panel = (col == "si") ? $8 "-" $6 : $col; f = dir "/" panel;
+      panel = (col == "si") ? $8 "-" (NF >= 16 && $16 != "-" ? "sub" $16 : $6) : $col; f = dir "/" panel;
       if (!(panel in seen)) { seen[panel] = 1; order[++n] = panel }
       y = $9 + 0; if (y < 0) y = -y;
       cls = ($12 != 1 || $10 == "inf" || $10 == "nan") ? 2 : (($10 + 0) > tol ? 1 : 0);
@@ -147,6 +149,7 @@ awk -F, -v maps=" $maps " '
     if ($5 != "1") s = s " substeps=" $5;
     if ($6 != "-") s = s " iterations=" $6;
     if ($7 != "-") s = s " projection=" ($7 == "1" ? "on" : "off");
+    if (NF >= 16 && $16 != "-") s = s " soft-substeps=" $16;
     label = $2; if ($9 != "-") label = label " (param " $9 ")";
     for (t = 1; t <= 3; t++) {
       target = 10 ^ -t; k = label SUBSEP target;

@@ -1,5 +1,7 @@
 #include "Demos/Scenes/Ch15Scene.h"
 
+#include "Demos/Scenes/ContactSolverParameters.h"
+
 Ch15Scene::Ch15Scene(const Ch15Params& p) : params(p) { Reset(); }
 
 void Ch15Scene::Reset() {
@@ -36,7 +38,8 @@ void Ch15Scene::ApplySettings() {
     system->settings.solverIterations = params.iterations;
     system->settings.linearProjection = params.linearProjection;
     system->DebugRender = params.debugRender;
-    system->settings.contactSolver = params.solver == 0 ? ContactSolver::Book : ContactSolver::Accumulated;
+    system->settings.contactSolver = ContactSolverAt(params.solver);
+    system->settings.soft = params.soft;
 }
 
 void Ch15Scene::Step(float dt) {
@@ -64,6 +67,8 @@ void Ch15Scene::AddParameters(ParameterSet* set) {
         .OnPanel(Widget::Checkbox("Debug Render").SameLine());
     set->AddBool("linear-projection", &params.linearProjection, "DoLinearProjection: positional correction", apply)
         .OnPanel(Widget::Checkbox("Linear Projection").SameLine());
-    set->AddChoice("solver", &params.solver, {ToString(ContactSolver::Book), ToString(ContactSolver::Accumulated)},
-                   "contact solver: the book's per-contact impulses, or accumulated impulses (stacks stand)", apply);
+    AddContactSolverParameters(set, &params.solver, &params.soft,
+                               "contact solver: the book's per-contact impulses, accumulated impulses (stacks stand) "
+                               "or the soft step",
+                               apply);
 }

@@ -20,8 +20,11 @@ struct Ch15Params {
     int iterations = 8;             ///< WorldSettings::solverIterations (ImpulseIteration, "Iteration")
     bool linearProjection = true;   ///< positional correction on (DoLinearProjection, "Linear Projection")
     bool debugRender = false;       ///< draw box edges and manifolds (DebugRender, "Debug Render")
-    /// Not a book widget: 0 = the book's per-contact solver, 1 = accumulated impulses (ContactSolver.h).
+    /// Not a book widget: the contact solver as an index of ContactSolverChoices() (the enum's value: 0 the
+    /// book's per-contact solver, 1 accumulated impulses, 2 the soft step; ContactSolver.h).
     int solver = 0;
+    /// WorldSettings::soft, used when solver is soft (`--set soft-substeps=...`, ContactSolverParameters.h).
+    SoftSolverSettings soft;
 };
 
 class Ch15Scene {
@@ -32,7 +35,7 @@ public:
     /// Copies the panel values into the system, then one physics step of dt seconds.
     void Step(float dt);
     /// Registers the panel's widgets in panel order (projection-fraction, slop, iterations, reset, debug,
-    /// linear-projection) and the solver choice on *set.
+    /// linear-projection), then the solver choice and the soft solver's keys (no widgets) on *set.
     void AddParameters(ParameterSet* set);
 
     Ch15Params& Params() { return params; }

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <iterator>
 
+#include "Demos/Scenes/ContactSolverParameters.h"
 #include "Demos/Scenes/WorldBuilder.h"
 
 namespace {
@@ -32,7 +33,7 @@ FileScene::FileScene(const SceneDescription& d) : description(d) {
     for (std::size_t i = 0; i < std::size(kAllIntegrators); ++i) {
         if (kAllIntegrators[i] == d.world.integrator) integratorChoice = static_cast<int>(i);
     }
-    solverChoice = d.world.contactSolver == ContactSolver::Accumulated ? 1 : 0;
+    solverChoice = ContactSolverIndex(d.world.contactSolver);
     Reset();
 }
 
@@ -41,14 +42,15 @@ void FileScene::AddParameters(ParameterSet* set) {
     SceneWorld& w = description.world;
     auto apply = [this] {
         description.world.integrator = kAllIntegrators[integratorChoice];
-        description.world.contactSolver = solverChoice == 1 ? ContactSolver::Accumulated : ContactSolver::Book;
+        description.world.contactSolver = ContactSolverAt(solverChoice);
         ApplyWorldSettings();
     };
     std::vector<std::string> integrators;
     for (Integrator i : kAllIntegrators) integrators.emplace_back(ToString(i));
     set->AddChoice("integrator", &integratorChoice, integrators, "how particles are integrated", apply);
-    set->AddChoice("solver", &solverChoice, {ToString(ContactSolver::Book), ToString(ContactSolver::Accumulated)},
-                   "contact solver: the book's per-contact impulses, or accumulated impulses", apply);
+    AddContactSolverParameters(set, &solverChoice, &w.soft,
+                               "contact solver: the book's per-contact impulses, accumulated impulses or the soft step",
+                               apply);
     set->AddInt("iterations", &w.iterations, 1, SceneLimits::kMaxIterations, "contact solver passes per step", apply);
     set->AddFloat("slop", &w.penetrationSlop, 0.0f, 1.0f, "penetration left uncorrected (m)", apply);
     set->AddBool("linear-projection", &w.linearProjection, "positional correction after integration", apply);
@@ -63,13 +65,19 @@ void FileScene::AddParameters(ParameterSet* set) {
 
 std::string FileScene::ModelSummary() const {
     const SceneWorld& w = description.world;
-    char row[160];
-    if (w.step > 0.0f) {
-        std::snprintf(row, sizeof row, "Model: %s, %s solver, %d iterations, dt %g s", ToString(w.integrator),
-                      ToString(w.contactSolver), w.iterations, static_cast<double>(w.step));
+    char passes[64];
+    if (w.contactSolver == ContactSolver::Soft) {  // its passes are its own (world.soft), not world.iterations
+        std::snprintf(passes, sizeof passes, "%d substeps, %g Hz", w.soft.substeps,
+                      static_cast<double>(w.soft.contactHertz));
     } else {
-        std::snprintf(row, sizeof row, "Model: %s, %s solver, %d iterations", ToString(w.integrator),
-                      ToString(w.contactSolver), w.iterations);
+        std::snprintf(passes, sizeof passes, "%d iterations", w.iterations);
+    }
+    std::string row =
+        std::string("Model: ") + ToString(w.integrator) + ", " + ToString(w.contactSolver) + " solver, " + passes;
+    if (w.step > 0.0f) {
+        char step[32];
+        std::snprintf(step, sizeof step, ", dt %g s", static_cast<double>(w.step));
+        row += step;
     }
     return row;
 }
@@ -87,6 +95,8 @@ void FileScene::ApplyWorldSettings() {
     s.accumulated.warmStartFactor = w.warmStartFactor;
     s.accumulated.baumgarte = w.baumgarte;
     s.accumulated.restitutionThreshold = w.restitutionThreshold;
+    s.soft = w.soft;
+    s.sleep = w.sleep;
 }
 
 void FileScene::Reset() {

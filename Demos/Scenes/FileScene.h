@@ -30,7 +30,8 @@ public:
     /// One physics step of dt seconds; false (and the world frozen) once the stability monitor reports a blow-up
     /// or for dt <= 0 or non-finite.
     bool Step(float dt);
-    /// Registers the model settings (integrator, solver, iterations, slop, projection, dt) and reset on *set;
+    /// Registers the model settings (integrator, solver and the soft solver's keys, iterations, slop, projection,
+    /// dt) and reset on *set;
     /// a change applies to the running world at once (dt from the next host step).
     void AddParameters(ParameterSet* set);
     /// One line naming the model in effect: integrator, contact solver, iterations, step.
@@ -54,7 +55,7 @@ private:
 
     SceneDescription description;
     int integratorChoice = 0;  // index into kAllIntegrators, mirrors description.world.integrator
-    int solverChoice = 0;      // 0 book, 1 accumulated
+    int solverChoice = 0;      // index of ContactSolverChoices(), mirrors description.world.contactSolver
     std::unique_ptr<PhysicsSystem> system;
     std::vector<Particle> particles;       // never resized after Reset: the system and springs point in
     std::vector<RigidbodyVolume> volumes;  // likewise

@@ -1,5 +1,7 @@
 #include "Demos/Scenes/LinearImpulseScene.h"
 
+#include "Demos/Scenes/ContactSolverParameters.h"
+
 LinearImpulseScene::LinearImpulseScene(const LinearImpulseParams& p) : params(p) { Reset(); }
 
 void LinearImpulseScene::Reset() {
@@ -29,6 +31,12 @@ void LinearImpulseScene::Reset() {
         body.SynchCollisionVolumes();  // erratum 5.2-28: the book leaves the volumes at the origin until drawn
         system->AddRigidbody(&body);
     }
+    ApplySolverSettings();
+}
+
+void LinearImpulseScene::ApplySolverSettings() {
+    system->settings.contactSolver = ContactSolverAt(params.solver);
+    system->settings.soft = params.soft;
 }
 
 void LinearImpulseScene::RequestSteps() { pendingSteps = params.frames; }
@@ -60,4 +68,7 @@ void LinearImpulseScene::AddParameters(ParameterSet* set) {
     set->AddBool("drop", &params.drop, "drop the bodies onto each other instead of throwing them (resets)",
                  [this] { Reset(); })
         .OnPanel(Widget::Checkbox("Drop").SameLine().AppliesAtOnce());
+    AddContactSolverParameters(set, &params.solver, &params.soft,
+                               "contact solver: the book's per-contact impulses, accumulated impulses or the soft step",
+                               [this] { ApplySolverSettings(); });
 }

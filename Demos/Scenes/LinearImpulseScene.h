@@ -17,6 +17,10 @@ struct LinearImpulseParams {
     bool drop = false;     ///< "Drop": stacked at rest instead of thrown
     bool pause = false;    ///< "Pause"
     int frames = 1;        ///< "Frames": steps taken by one press of "Step"
+    /// Not a book widget: the contact solver, an index of ContactSolverChoices() (0 the book's; `--set solver=`).
+    int solver = 0;
+    /// WorldSettings::soft, used when solver is soft (`--set soft-substeps=...`, ContactSolverParameters.h).
+    SoftSolverSettings soft;
 };
 
 class LinearImpulseScene {
@@ -28,7 +32,8 @@ public:
     void RequestSteps();
     /// The book's Update: one physics step of dt seconds unless paused; while paused, one queued step if any.
     void Step(float dt);
-    /// Registers the panel's widgets (docs/book-reference.md §2.3) on *set: step, frames, reset, pause, spheres, drop.
+    /// Registers the panel's widgets (docs/book-reference.md §2.3) on *set: step, frames, reset, pause, spheres, drop;
+    /// then the solver choice and the soft solver's keys (no widgets), which apply to the running world at once.
     void AddParameters(ParameterSet* set);
 
     LinearImpulseParams& Params() { return params; }
@@ -39,6 +44,8 @@ public:
     const std::vector<RigidbodyVolume>& Bodies() const { return bodies; }
 
 private:
+    void ApplySolverSettings();
+
     LinearImpulseParams params;
     int pendingSteps = 0;
     std::unique_ptr<PhysicsSystem> system;

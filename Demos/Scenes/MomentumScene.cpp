@@ -1,5 +1,7 @@
 #include "Demos/Scenes/MomentumScene.h"
 
+#include "Demos/Scenes/ContactSolverParameters.h"
+
 MomentumScene::MomentumScene(const MomentumParams& p) : params(p) { Reset(); }
 
 void MomentumScene::Reset() {
@@ -30,6 +32,12 @@ void MomentumScene::Reset() {
         body.SynchCollisionVolumes();  // erratum 5.2-28: the book leaves the volumes at the origin until drawn
         system->AddRigidbody(&body);
     }
+    ApplySolverSettings();
+}
+
+void MomentumScene::ApplySolverSettings() {
+    system->settings.contactSolver = ContactSolverAt(params.solver);
+    system->settings.soft = params.soft;
 }
 
 void MomentumScene::Step(float dt) { system->Update(dt); }
@@ -38,6 +46,9 @@ void MomentumScene::AddParameters(ParameterSet* set) {
     set->AddAction(
            "reset", [this] { Reset(); }, "rebuild the scene")
         .OnPanel(ParameterSet::Widget::Button("Reset"));
+    AddContactSolverParameters(set, &params.solver, &params.soft,
+                               "contact solver: the book's per-contact impulses, accumulated impulses or the soft step",
+                               [this] { ApplySolverSettings(); });
 }
 
 vec3 MomentumScene::TotalMomentum() const {

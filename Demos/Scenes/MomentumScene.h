@@ -15,6 +15,10 @@ struct MomentumParams {
     /// Velocity kept per 0.03 s by every sphere (RigidbodyVolume::velocityRetention; the book's damping 0.98).
     float velocityRetention = 0.98f;
     bool gravity = true;  ///< false: no gravity, so the spheres never touch the ground (0.01 m gap)
+    /// Not a book widget: the contact solver, an index of ContactSolverChoices() (0 the book's; `--set solver=`).
+    int solver = 0;
+    /// WorldSettings::soft, used when solver is soft (`--set soft-substeps=...`, ContactSolverParameters.h).
+    SoftSolverSettings soft;
 };
 
 class MomentumScene {
@@ -27,7 +31,8 @@ public:
     void Reset();
     /// One physics step of dt seconds.
     void Step(float dt);
-    /// Registers the reset action, the panel's only widget (docs/book-reference.md §2.4), on *set.
+    /// Registers the reset action, the panel's only widget (docs/book-reference.md §2.4), on *set; then the solver
+    /// choice and the soft solver's keys (no widgets), which apply to the running world at once.
     void AddParameters(ParameterSet* set);
     /// Sum of m v over the spheres (kg m/s).
     vec3 TotalMomentum() const;
@@ -39,6 +44,8 @@ public:
     const std::vector<RigidbodyVolume>& Bodies() const { return bodies; }
 
 private:
+    void ApplySolverSettings();
+
     MomentumParams params;
     std::unique_ptr<PhysicsSystem> system;
     std::vector<RigidbodyVolume> bodies;

@@ -30,6 +30,40 @@ double Shortest(float v) {
 Json J(float v) { return Shortest(v); }
 Json J(const vec3& v) { return Json::array({Shortest(v.x), Shortest(v.y), Shortest(v.z)}); }
 
+/// world.soft: the soft solver's fields that differ from their defaults (an empty object when none does).
+Json SoftObject(const SoftSolverSettings& soft) {
+    const SoftSolverSettings d;
+    Json o = Json::object();
+    if (soft.substeps != d.substeps) o["substeps"] = soft.substeps;
+    if (soft.iterations != d.iterations) o["iterations"] = soft.iterations;
+    if (soft.relaxIterations != d.relaxIterations) o["relaxIterations"] = soft.relaxIterations;
+    const struct {
+        const char* key;
+        float value, defaultValue;
+    } numbers[] = {{"contactHertz", soft.contactHertz, d.contactHertz},
+                   {"contactDampingRatio", soft.contactDampingRatio, d.contactDampingRatio},
+                   {"maxPushoutSpeed", soft.maxPushoutSpeed, d.maxPushoutSpeed},
+                   {"speculativeMargin", soft.speculativeMargin, d.speculativeMargin},
+                   {"linearSlop", soft.linearSlop, d.linearSlop},
+                   {"restitutionThreshold", soft.restitutionThreshold, d.restitutionThreshold},
+                   {"warmStartFactor", soft.warmStartFactor, d.warmStartFactor}};
+    for (const auto& n : numbers)
+        if (n.value != n.defaultValue) o[n.key] = J(n.value);
+    return o;
+}
+
+/// world.sleep: nothing (null) at the defaults, true when only `enabled` differs, else the whole object.
+Json SleepValue(const SleepSettings& sleep) {
+    const SleepSettings d;
+    const bool sameThresholds = sleep.timeToSleep == d.timeToSleep && sleep.linearSpeed == d.linearSpeed &&
+                                sleep.angularSpeed == d.angularSpeed;
+    if (sameThresholds) return sleep.enabled == d.enabled ? Json() : Json(sleep.enabled);
+    return {{"enabled", sleep.enabled},
+            {"timeToSleep", J(sleep.timeToSleep)},
+            {"linearSpeed", J(sleep.linearSpeed)},
+            {"angularSpeed", J(sleep.angularSpeed)}};
+}
+
 bool SameMatrix(const mat3& a, const mat3& b) {
     for (int i = 0; i < 9; ++i) {
         if (a.asArray[i] != b.asArray[i]) return false;
@@ -53,6 +87,8 @@ SceneDescription DescribeWorld(const PhysicsSystem& system, const std::string& n
     d.world.warmStartFactor = s.accumulated.warmStartFactor;
     d.world.baumgarte = s.accumulated.baumgarte;
     d.world.restitutionThreshold = s.accumulated.restitutionThreshold;
+    d.world.soft = s.soft;
+    d.world.sleep = s.sleep;
 
     bool haveGravity = false;
     auto gravityOf = [&](const vec3& g, const std::string& what) {
@@ -204,6 +240,9 @@ std::string WriteSceneText(const SceneDescription& d) {
                   {"baumgarte", J(w.baumgarte)},
                   {"restitutionThreshold", J(w.restitutionThreshold)}};
     if (w.step > 0.0f) world["step"] = J(w.step);
+    // Written only where they differ from the defaults (docs/scenes.md, "Export").
+    if (const Json soft = SoftObject(w.soft); !soft.empty()) world["soft"] = soft;
+    if (const Json sleep = SleepValue(w.sleep); !sleep.is_null()) world["sleep"] = sleep;
     root["world"] = world;
     root["camera"] = {{"target", J(d.camera.target)},
                       {"rotation", Json::array({Shortest(d.camera.rotation.x), Shortest(d.camera.rotation.y)})},

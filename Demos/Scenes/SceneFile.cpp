@@ -3,11 +3,15 @@
 #include <sys/stat.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
+
+#include "Demos/Scenes/ContactSolverParameters.h"
+#include "Demos/Scenes/DuplicateKeys.h"
 
 using Json = nlohmann::json;
 
@@ -38,6 +42,13 @@ private:
     int count = 0;
 };
 
+/// A bound as the shortest decimal that names it ("0.1", "1000").
+std::string Decimal(float v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", static_cast<double>(v));
+    return text;
+}
+
 std::string Join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
 std::string Index(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
 
@@ -63,6 +74,15 @@ public:
         if (range == Range::NonNegative && f < 0.0f) return Bad(key, "must be >= 0", v);
         if (range == Range::Positive && !(f > 0.0f)) return Bad(key, "must be > 0", v);
         if (range == Range::Fraction && !(f >= 0.0f && f <= 1.0f)) return Bad(key, "must be in [0, 1]", v);
+        *value = f;
+    }
+    /// A number into *value, in [lo, hi] (inclusive, compared as the float that is stored).
+    void FloatIn(const char* key, float* value, float lo, float hi) {
+        float f = 0.0f;
+        Float(key, &f, Range::Any);  // reports a non-number or a non-finite one; only a stored number goes on
+        if (!Has(key) || !obj.at(key).is_number() || static_cast<float>(obj.at(key).get<double>()) != f) return;
+        if (!(f >= lo && f <= hi))
+            return Bad(key, "must be in [" + Decimal(lo) + ", " + Decimal(hi) + "]", &obj.at(key));
         *value = f;
     }
     void Int(const char* key, int* value, int lo, int hi, bool required = false) {
@@ -180,6 +200,39 @@ private:
     std::set<std::string> read;
 };
 
+/// world.soft: the soft solver's settings, in the ranges `--set soft-...` takes (ContactSolverParameters.h).
+void ReadSoft(const Json& j, SoftSolverSettings* soft, Problems* problems) {
+    using L = SoftSolverLimits;
+    ObjectReader r(j, "world.soft", problems);
+    r.Int("substeps", &soft->substeps, 1, L::kMaxSubsteps);
+    r.Int("iterations", &soft->iterations, 1, L::kMaxIterations);
+    r.Int("relaxIterations", &soft->relaxIterations, 0, L::kMaxIterations);
+    r.FloatIn("contactHertz", &soft->contactHertz, L::kMinContactHertz, L::kMaxContactHertz);
+    r.FloatIn("contactDampingRatio", &soft->contactDampingRatio, 0.0f, L::kMaxDampingRatio);
+    r.FloatIn("maxPushoutSpeed", &soft->maxPushoutSpeed, 0.0f, L::kMaxPushoutSpeed);
+    r.Float("speculativeMargin", &soft->speculativeMargin, Range::NonNegative);
+    r.Float("linearSlop", &soft->linearSlop, Range::NonNegative);
+    r.Float("restitutionThreshold", &soft->restitutionThreshold, Range::NonNegative);
+    r.Float("warmStartFactor", &soft->warmStartFactor, Range::Fraction);
+    r.Finish();
+}
+
+/// world.sleep: true or false, or an object of sleep settings (sleep on unless its `enabled` is false).
+void ReadSleep(const Json& j, SleepSettings* sleep, Problems* problems) {
+    if (j.is_boolean()) {
+        sleep->enabled = j.get<bool>();
+        return;
+    }
+    if (!j.is_object()) return problems->Add("world.sleep", "must be true, false or an object", &j);
+    ObjectReader r(j, "world.sleep", problems);
+    sleep->enabled = true;
+    r.Bool("enabled", &sleep->enabled);
+    r.Float("timeToSleep", &sleep->timeToSleep, Range::NonNegative);
+    r.Float("linearSpeed", &sleep->linearSpeed, Range::NonNegative);
+    r.Float("angularSpeed", &sleep->angularSpeed, Range::NonNegative);
+    r.Finish();
+}
+
 void ReadWorld(const Json& j, SceneWorld* w, Problems* problems) {
     ObjectReader r(j, "world", problems);
     r.Vec3("gravity", &w->gravity);
@@ -205,7 +258,8 @@ void ReadWorld(const Json& j, SceneWorld* w, Problems* problems) {
     r.Float("warmStartFactor", &w->warmStartFactor, Range::Fraction);
     r.Float("baumgarte", &w->baumgarte, Range::Fraction);
     r.Float("restitutionThreshold", &w->restitutionThreshold, Range::NonNegative);
-    r.Reject("sleep", "is not supported: this engine has no sleeping bodies");
+    if (const Json* soft = r.Object("soft")) ReadSoft(*soft, &w->soft, problems);
+    if (const Json* sleep = r.Object("sleep")) ReadSleep(*sleep, &w->sleep, problems);
     r.Finish();
 }
 
@@ -464,6 +518,16 @@ bool ParseSceneText(const std::string& text, const std::string& fileName, SceneD
             what = "number is not finite: " + what.substr(open);
         }
         errors->push_back(where + ": " + what);
+        return false;
+    }
+    // The parser keeps the last of a key given twice; a scene file refuses it, at the second one.
+    DuplicateKey duplicate;
+    if (FindDuplicateKey(text, &duplicate)) {
+        int line = 0, column = 0;
+        LineAndColumn(text, duplicate.offset, &line, &column);
+        errors->push_back(fileName + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
+                          Join(duplicate.objectPath, duplicate.key) + ": duplicate key \"" + duplicate.key +
+                          "\" (a key may be given once per object)");
         return false;
     }
     *out = SceneDescription();

@@ -1,7 +1,7 @@
 #pragma once
 // Scene files (docs/scenes.md): a JSON file read into a plain SceneDescription, validated at the boundary. Every
-// problem is reported as "FILE: PATH: message (value)" with a JSON path such as bodies[3].mass; syntax errors carry
-// the line and column. Unknown keys are errors, so typos are caught. GL-free.
+// problem is reported as "FILE: PATH: message (value)" with a JSON path such as bodies[3].mass; syntax errors and
+// a key given twice in one object carry the line and column. Unknown keys are errors, so typos are caught. GL-free.
 
 #include <cstddef>
 #include <string>
@@ -11,6 +11,7 @@
 #include "Math/vectors.h"
 #include "Physics/ContactSolver.h"
 #include "Physics/Integrator.h"
+#include "Physics/WorldSettings.h"
 
 /// Documented limits of one scene file (docs/scenes.md, "Limits"); larger files or counts are errors.
 struct SceneLimits {
@@ -43,6 +44,8 @@ struct SceneWorld {
     float warmStartFactor = 1.0f;       ///< accumulated solver, 0..1
     float baumgarte = 0.0f;             ///< accumulated solver, 0..1
     float restitutionThreshold = 1.0f;  ///< accumulated solver, m/s
+    SoftSolverSettings soft;            ///< world.soft: the soft solver's settings (units in ContactSolver.h)
+    SleepSettings sleep;                ///< world.sleep: islands and sleep (units in WorldSettings.h), off
 };
 
 /// The book's orbit camera (docs/book-reference.md §1.4).

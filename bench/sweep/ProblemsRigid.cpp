@@ -38,6 +38,7 @@ struct VolumeWorld : RigidWorld {
         if (s.iterations >= 0) system.settings.solverIterations = s.iterations;
         if (s.projection >= 0) system.settings.linearProjection = s.projection != 0;
         if (s.solver >= 0) system.settings.contactSolver = ContactSolver(s.solver);
+        system.settings.soft = s.soft;
     }
     /// One frame: `substeps` updates of dt / substeps.
     void Frame(const Settings& s) {
@@ -70,6 +71,22 @@ Settings Base(double dt, int iterations, int projection, double param = 0.0, int
 Settings With(ContactSolver solver, Settings s) {
     s.solver = int(solver);
     return s;
+}
+
+/// The solvers whose knob is WorldSettings::solverIterations (and linear projection): the grids sweep those.
+constexpr ContactSolver kIteratedSolvers[] = {ContactSolver::Book, ContactSolver::Accumulated};
+
+/// The soft solver's points at one param: its own substep count is its knob (1, 2, 4, 8 per step; only 1 below a
+/// 1 ms step, where a substep would be shorter than the finest step of the grid's other solvers), its passes
+/// and softness at their defaults; the book's iterations and projection do not apply ("-").
+void AddSoftPoints(std::vector<Settings>* g, bool quick, double param = 0.0) {
+    for (int substeps : quick ? std::vector<int>{4} : std::vector<int>{1, 2, 4, 8})
+        for (double dt : quick ? QuickStepSizes() : StepSizes()) {
+            if (substeps > 1 && dt < 1e-3 && !quick) continue;
+            Settings s = With(ContactSolver::Soft, Base(dt, -1, -1, param));
+            s.soft.substeps = substeps;
+            g->push_back(s);
+        }
 }
 
 // ---- bounce-sphere: radius 0.5, dropped 5 m (bottom to ground), restitution e; first five apex heights.
@@ -229,7 +246,7 @@ Outcome RunStack(const Settings& s, int height, double topMass, double seconds) 
 std::vector<Settings> StackGrid(bool quick) {
     std::vector<Settings> g;
     const std::vector<int> iterations = quick ? std::vector<int>{5} : std::vector<int>{1, 5, 20};
-    for (ContactSolver solver : kAllContactSolvers)
+    for (ContactSolver solver : kIteratedSolvers)
         for (int it : iterations)
             for (int proj : {1, 0})
                 for (double dt : quick ? QuickStepSizes() : StepSizes()) g.push_back(With(solver, Base(dt, it, proj)));
@@ -238,6 +255,7 @@ std::vector<Settings> StackGrid(bool quick) {
     if (!quick)
         for (double dt : StepSizes())
             if (dt >= 2e-3) g.push_back(With(ContactSolver::Book, Base(dt, 5, 1, 0.0, 4)));
+    AddSoftPoints(&g, quick);
     return g;
 }
 
@@ -250,11 +268,12 @@ void AddRigidProblems(std::vector<Problem>* out) {
                     "max relative apex error", "e",
                     [](bool q) {
                         std::vector<Settings> g;
-                        for (ContactSolver solver : kAllContactSolvers)
+                        for (ContactSolver solver : kIteratedSolvers)
                             for (double e : {0.5, 0.9})
                                 for (int proj : {1, 0})
                                     for (double dt : q ? QuickStepSizes() : StepSizes())
                                         g.push_back(With(solver, Base(dt, 5, proj, e)));
+                        for (double e : {0.5, 0.9}) AddSoftPoints(&g, q, e);
                         return g;
                     },
                     RunBounceSphere});
@@ -272,11 +291,12 @@ void AddRigidProblems(std::vector<Problem>* out) {
                     "relative acceleration error", "",
                     [](bool q) {
                         std::vector<Settings> g;
-                        for (ContactSolver solver : kAllContactSolvers)
+                        for (ContactSolver solver : kIteratedSolvers)
                             for (int it : q ? std::vector<int>{5} : std::vector<int>{1, 5, 20})
                                 for (int proj : {1, 0})
                                     for (double dt : q ? QuickStepSizes() : StepSizes())
                                         g.push_back(With(solver, Base(dt, it, proj)));
+                        AddSoftPoints(&g, q);
                         return g;
                     },
                     RunIncline});
@@ -292,11 +312,12 @@ void AddRigidProblems(std::vector<Problem>* out) {
                         std::vector<Settings> g;
                         const std::vector<double> ratios =
                             q ? std::vector<double>{1e-3, 1e3} : std::vector<double>{1e-3, 1e-2, 0.1, 1, 10, 100, 1e3};
-                        for (ContactSolver solver : kAllContactSolvers)
+                        for (ContactSolver solver : kIteratedSolvers)
                             for (int it : q ? std::vector<int>{5} : std::vector<int>{5, 20})
                                 for (double r : ratios)
                                     for (double dt : q ? QuickStepSizes() : StepSizes())
                                         g.push_back(With(solver, Base(dt, it, 1, r)));
+                        for (double r : ratios) AddSoftPoints(&g, q, r);
                         return g;
                     },
                     [](const Settings& s) { return RunStack(s, 5, s.param, 5.0); }});

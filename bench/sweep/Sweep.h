@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "Physics/ContactSolver.h"
 #include "Physics/Integrator.h"
 
 namespace sweep {
@@ -21,7 +22,10 @@ struct Settings {
     int iterations = -1;  ///< PhysicsSystem::ImpulseIteration; -1 = not used
     int projection = -1;  ///< PhysicsSystem::DoLinearProjection as 0/1; -1 = not used
     int solver = -1;      ///< PhysicsSystem::contactSolver as int(ContactSolver); -1 = not used
-    double param = 0.0;   ///< the problem's swept physical parameter (stiffness, mass ratio, e); 0 = none
+    /// WorldSettings::soft of the run (the soft solver's own substeps and passes); written to the CSV, and used,
+    /// only when solver is ContactSolver::Soft.
+    SoftSolverSettings soft;
+    double param = 0.0;  ///< the problem's swept physical parameter (stiffness, mass ratio, e); 0 = none
 };
 
 /// What one run measured.

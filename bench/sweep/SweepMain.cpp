@@ -20,7 +20,7 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: psb-sweep [--problem NAME]... [--quick] [--dt LIST] [--shard I/N] [--runs LIST] [--out FILE] [--list]\n"
-    "                 [--help]\n"
+    "                 [--plan] [--help]\n"
     "Runs the reference problems of docs/sweep.md over their settings; one CSV row per run.\n"
     "  --problem NAME  run only this problem (repeatable; default: every problem --list does not mark\n"
     "                  'not in the default set')\n"
@@ -33,15 +33,22 @@ constexpr const char* kUsage =
     "                  same runs, with the same numbers, as in a full run's CSV\n"
     "  --out FILE      write the CSV to FILE instead of stdout\n"
     "  --list          print the problems (name, error measured, swept parameter) and exit\n"
+    "  --plan          print the selected grid without running it: per run its index and settings columns\n"
+    "                  (the outcome columns empty), e.g. to find a committed row's run today\n"
     "  --help          this text\n"
     "Progress goes to stderr. Columns: run,problem,integrator,dt,substeps,iterations,projection,solver,param,\n"
-    "error,cpu_per_sim_s,stable,steps,sim_s,note ('-' = setting not used by the problem; solver = the contact\n"
-    "solver of volume problems, book or accumulated; stable = 1 when every sampled state stayed finite and\n"
-    "bounded).\n";
+    "error,cpu_per_sim_s,stable,steps,sim_s,note, then the soft solver's settings soft_substeps,soft_iterations,\n"
+    "soft_relax_iterations,soft_contact_hertz,soft_contact_damping_ratio,soft_max_pushout_speed,\n"
+    "soft_speculative_margin,soft_linear_slop,soft_restitution_threshold,soft_warm_start_factor ('-' = setting\n"
+    "not used by the run; solver = the contact solver of volume problems, book, accumulated or soft; iterations\n"
+    "and projection are the book and accumulated solvers' knobs, the soft columns the soft solver's; stable = 1\n"
+    "when every sampled state stayed finite and bounded).\n";
 
 constexpr const char* kHeader =
     "run,problem,integrator,dt,substeps,iterations,projection,solver,param,error,cpu_per_sim_s,stable,steps,sim_s,"
-    "note\n";
+    "note,soft_substeps,soft_iterations,soft_relax_iterations,soft_contact_hertz,soft_contact_damping_ratio,"
+    "soft_max_pushout_speed,soft_speculative_margin,soft_linear_slop,soft_restitution_threshold,"
+    "soft_warm_start_factor\n";
 
 /// A failed write of the CSV: the temporary is already removed; exit 3.
 int WriteFailed(const std::string& message) {
@@ -86,7 +93,7 @@ bool ParseShard(const std::string& text, int* index, int* count) {
 
 struct Arguments {
     std::vector<const sweep::Problem*> selected;
-    bool quick = false, list = false;
+    bool quick = false, list = false, plan = false;
     int shardIndex = 1, shardCount = 1;
     std::string outPath;
     std::vector<long> runs;  ///< --runs: only these indices of the grid (sorted, unique); empty = all
@@ -152,6 +159,8 @@ int ParseArguments(int argc, char** argv, Arguments* args) {
             return 0;
         } else if (arg == "--list") {
             args->list = true;
+        } else if (arg == "--plan") {
+            args->plan = true;
         } else if (arg == "--quick") {
             args->quick = true;
         } else if (arg == "--problem") {
@@ -192,7 +201,9 @@ std::vector<Run> ShardRuns(const Arguments& args) {
     std::vector<Run> all;
     for (const sweep::Problem* p : args.selected)
         for (const sweep::Settings& s : p->grid(args.quick)) {
-            const double iterations = s.iterations > 0 ? double(s.iterations) : 0.0;
+            double iterations = s.iterations > 0 ? double(s.iterations) : 0.0;
+            if (s.solver == int(ContactSolver::Soft))  // its passes: (solve + relax) per substep
+                iterations = double(s.soft.substeps) * double(s.soft.iterations + s.soft.relaxIterations);
             all.push_back({p, s, long(all.size()), double(s.substeps) / s.dt * (1.0 + iterations / 4.0)});
         }
     std::vector<const Run*> order;
@@ -225,19 +236,43 @@ int CheckRuns(const Arguments& args) {
     return -1;
 }
 
-std::string Row(const Run& run, const sweep::Outcome& o) {
+/// The settings columns before the outcome: run .. param.
+std::string SettingsColumns(const Run& run) {
     const sweep::Settings& s = run.settings;
-    const double cost = o.simSeconds > 0.0 ? o.cpuSeconds / o.simSeconds : 0.0;
     std::ostringstream row;
     row << run.index << "," << run.problem->name << "," << (s.hasIntegrator ? ToString(s.integrator) : "-") << ","
         << Number(s.dt) << "," << s.substeps << ","
         << (s.iterations < 0 ? std::string("-") : std::to_string(s.iterations)) << ","
         << (s.projection < 0 ? std::string("-") : std::to_string(s.projection)) << ","
         << (s.solver < 0 ? "-" : ToString(ContactSolver(s.solver))) << ","
-        << (run.problem->paramName.empty() ? std::string("-") : Number(s.param)) << "," << Number(o.error) << ","
-        << Number(cost) << "," << (o.stable ? 1 : 0) << "," << o.steps << "," << Number(o.simSeconds) << ","
-        << CleanNote(o.note) << "\n";
+        << (run.problem->paramName.empty() ? std::string("-") : Number(s.param));
     return row.str();
+}
+
+/// The soft solver's settings columns after the note: its values for a soft run, '-' for any other.
+std::string SoftColumns(const sweep::Settings& s) {
+    if (s.solver != int(ContactSolver::Soft)) return ",-,-,-,-,-,-,-,-,-,-";
+    const SoftSolverSettings& f = s.soft;
+    std::ostringstream row;
+    row << "," << f.substeps << "," << f.iterations << "," << f.relaxIterations << "," << Number(f.contactHertz) << ","
+        << Number(f.contactDampingRatio) << "," << Number(f.maxPushoutSpeed) << "," << Number(f.speculativeMargin)
+        << "," << Number(f.linearSlop) << "," << Number(f.restitutionThreshold) << "," << Number(f.warmStartFactor);
+    return row.str();
+}
+
+std::string Row(const Run& run, const sweep::Outcome& o) {
+    const double cost = o.simSeconds > 0.0 ? o.cpuSeconds / o.simSeconds : 0.0;
+    std::ostringstream row;
+    row << SettingsColumns(run) << "," << Number(o.error) << "," << Number(cost) << "," << (o.stable ? 1 : 0) << ","
+        << o.steps << "," << Number(o.simSeconds) << "," << CleanNote(o.note) << SoftColumns(run.settings) << "\n";
+    return row.str();
+}
+
+/// --plan: the CSV with the settings of every selected run and empty outcome columns; nothing runs.
+int WritePlan(const std::vector<Run>& runs) {
+    std::cout << kHeader;
+    for (const Run& run : runs) std::cout << SettingsColumns(run) << ",,,,,," << SoftColumns(run.settings) << "\n";
+    return std::cout.flush() ? 0 : WriteFailed("cannot write to standard output");
 }
 
 /// Runs every run and writes the CSV: to stdout, or with --out whole through a temporary beside the file,
@@ -285,5 +320,6 @@ int main(int argc, char** argv) {
         for (const sweep::Problem& p : sweep::AllProblems())
             if (p.inDefault) args.selected.push_back(&p);
     if (const int bad = CheckRuns(args); bad >= 0) return bad;
+    if (args.plan) return WritePlan(ShardRuns(args));
     return RunAndWrite(ShardRuns(args), args.outPath);
 }

@@ -102,6 +102,30 @@ TEST(Cli, ParamsPrintsTheTableWithValuesAfterSet) {
     EXPECT_FALSE(fs::exists(out)) << "--params renders nothing";
 }
 
+// ch15, linear-impulse and momentum take the soft solver and its settings; --params lists them in effect, and a
+// run with them goes through (the book's solver stays each demo's default: the goldens).
+TEST(Cli, RigidDemosTakeTheSoftSolverAndListItsKeys) {
+    const std::string dir = ScratchDir("params_soft");
+    for (const std::string id : {"ch15", "linear-impulse", "momentum"}) {
+        const SandboxResult defaults = RunSandboxExe({"--demo", id, "--params"});
+        ASSERT_EQ(defaults.exitCode, 0) << id << ": " << defaults.err;
+        EXPECT_NE(defaults.out.find("solver = book  [book|accumulated|soft]"), std::string::npos) << defaults.out;
+        const SandboxResult r = RunSandboxExe({"--demo", id, "--set", "solver=soft", "--set", "soft-substeps=8",
+                                               "--set", "soft-contact-hertz=60", "--params"});
+        ASSERT_EQ(r.exitCode, 0) << id << ": " << r.err;
+        for (const char* line : {"solver = soft", "soft-substeps = 8  [integer 1..64]", "soft-contact-hertz = 60",
+                                 "soft-contact-damping-ratio = 10", "soft-max-pushout-speed = 3"}) {
+            EXPECT_NE(r.out.find(line), std::string::npos) << id << " lacks '" << line << "':\n" << r.out;
+        }
+        const SandboxResult run = RunSandboxExe({"--demo", id, "--set", "solver=soft", "--frames", "10", "--no-ui",
+                                                 "--state", dir + "/" + id + ".csv", "--quiet"});
+        EXPECT_EQ(run.exitCode, 0) << id << ": " << run.err;
+        const SandboxResult bad = RunSandboxExe({"--demo", id, "--set", "soft-substeps=0", "--params"});
+        EXPECT_EQ(bad.exitCode, 2) << id;
+        EXPECT_NE(bad.err.find("soft-substeps"), std::string::npos) << bad.err;
+    }
+}
+
 TEST(Cli, BadParameterValueIsRejected) {
     // Find a demo with a numeric or boolean parameter from the listing --set prints, then give it junk.
     for (const std::string& id : ListDemoIds()) {

@@ -166,6 +166,56 @@ TEST(SceneRun, ExportedDemoScenesRunAsTheirDemos) {
     }
 }
 
+// The export writes the demo's own camera (ch15 and momentum zoom 12, the others 9; docs/book-reference.md §1.4),
+// and the run's camera flags over it, as a run starts.
+TEST(SceneRun, ExportWritesTheDemosCamera) {
+    const std::string dir = ScratchDir("scene_export_camera");
+    const struct {
+        const char* id;
+        const char* zoom;
+    } demos[] = {{"ch15", "\"zoom\": 12.0"},
+                 {"momentum", "\"zoom\": 12.0"},
+                 {"linear-impulse", "\"zoom\": 9.0"},
+                 {"ch16", "\"zoom\": 9.0"}};
+    for (const auto& d : demos) {
+        const std::string file = dir + "/" + d.id + ".json";
+        const SandboxResult r = RunSandboxExe({"--demo", d.id, "--export-scene", file});
+        ASSERT_EQ(r.exitCode, 0) << d.id << ": " << r.err;
+        const std::string text = ReadText(file);
+        EXPECT_NE(text.find(d.zoom), std::string::npos) << d.id << ":\n" << text;
+        EXPECT_NE(text.find("-67.9312"), std::string::npos) << d.id << ": the book's yaw";
+    }
+    const std::string file = dir + "/flags.json";
+    const SandboxResult r =
+        RunSandboxExe({"--demo", "ch15", "--camera-zoom", "20", "--camera-yaw", "10", "--export-scene", file});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string text = ReadText(file);
+    EXPECT_NE(text.find("\"zoom\": 20.0"), std::string::npos) << text;
+    EXPECT_EQ(text.find("-67.9312"), std::string::npos) << "the yaw flag replaces the preset's: " << text;
+}
+
+// Soft solver settings given with --set are exported (only where they differ from the defaults).
+TEST(SceneRun, ExportWritesTheSoftSolversSettings) {
+    const std::string dir = ScratchDir("scene_export_soft");
+    const SandboxResult r = RunSandboxExe(
+        {"--demo", "ch15", "--set", "solver=soft", "--set", "soft-substeps=8", "--export-scene", dir + "/ch15.json"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string text = ReadText(dir + "/ch15.json");
+    EXPECT_NE(text.find("\"contactSolver\": \"soft\""), std::string::npos) << text;
+    EXPECT_NE(text.find("\"soft\": {\n      \"substeps\": 8\n    }"), std::string::npos) << text;
+    const SandboxResult plain = RunSandboxExe({"--demo", "ch15", "--export-scene", dir + "/plain.json"});
+    ASSERT_EQ(plain.exitCode, 0) << plain.err;
+    EXPECT_EQ(ReadText(dir + "/plain.json").find("\"soft\""), std::string::npos);
+    // The exported scene runs as the demo with the same --set (the settings reach both worlds alike).
+    const SandboxResult demo = RunSandboxExe({"--demo", "ch15", "--set", "solver=soft", "--set", "soft-substeps=8",
+                                              "--frames", "120", "--no-ui", "--state", dir + "/demo.csv", "--quiet"});
+    const SandboxResult scene = RunSandboxExe(
+        {"--scene", dir + "/ch15.json", "--frames", "120", "--no-ui", "--state", dir + "/scene.csv", "--quiet"});
+    ASSERT_EQ(demo.exitCode, 0) << demo.err;
+    ASSERT_EQ(scene.exitCode, 0) << scene.err;
+    EXPECT_TRUE(ReadText(dir + "/demo.csv") == ReadText(dir + "/scene.csv"));
+}
+
 TEST(SceneRun, ExportSaysWhatItCouldNotExpress) {
     const std::string dir = ScratchDir("scene_export_notes");
     const SandboxResult ch14 = RunSandboxExe({"--demo", "ch14", "--export-scene", dir + "/ch14.json"});

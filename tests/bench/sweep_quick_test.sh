@@ -9,7 +9,7 @@ rm -rf "$dir" && mkdir -p "$dir"
 fail() { echo "sweep.quick: FAIL: $*" >&2; exit 1; }
 
 "$sweep" --quick --out "$dir/all.csv" 2>"$dir/all.err" || fail "psb-sweep --quick exited $?"
-header='run,problem,integrator,dt,substeps,iterations,projection,solver,param,error,cpu_per_sim_s,stable,steps,sim_s,note'
+header='run,problem,integrator,dt,substeps,iterations,projection,solver,param,error,cpu_per_sim_s,stable,steps,sim_s,note,soft_substeps,soft_iterations,soft_relax_iterations,soft_contact_hertz,soft_contact_damping_ratio,soft_max_pushout_speed,soft_speculative_margin,soft_linear_slop,soft_restitution_threshold,soft_warm_start_factor'
 [ "$(head -n 1 "$dir/all.csv")" = "$header" ] || fail "unexpected CSV header: $(head -n 1 "$dir/all.csv")"
 
 # Every problem of the default set has rows, except cloth-stiffness: each of its stiffnesses needs its own
@@ -32,6 +32,18 @@ awk -F, '
     if (r < 8 || r > 12) { print "explicit Euler projectile error ratio for 10x dt is " r ", first order needs ~10"; bad = 1 }
     exit bad
   }' "$dir/all.csv" || fail "physics checks above"
+
+# The contact problems run the soft solver at its own substep count, recorded with its settings so a row can be
+# re-run; other rows leave the soft columns '-' (columns 6 iterations, 8 solver, 16 soft_substeps, 25 the last).
+awk -F, '
+  NR > 1 && NF != 25 { print "row " $1 " has " NF " columns, not 25"; bad = 1 }
+  NR > 1 && $8 == "soft" { soft[$2]++; if ($6 != "-" || $16 !~ /^[0-9]+$/ || $25 == "-") { print "soft row " $1 " lacks its settings"; bad = 1 } }
+  NR > 1 && $8 != "soft" && $16 != "-" { print "row " $1 " (" $8 ") has soft settings"; bad = 1 }
+  END {
+    n = split("bounce-sphere incline stack-5 stack-10 stack-mass-ratio", p, " ")
+    for (i = 1; i <= n; i++) if (!(p[i] in soft)) { print "no soft rows for " p[i]; bad = 1 }
+    exit bad
+  }' "$dir/all.csv" || fail "soft solver rows above"
 
 # Two shards together are exactly the unsharded runs (CPU time column excluded: it is a measurement).
 for i in 1 2; do

@@ -107,7 +107,42 @@ TEST(Ch15Scene, SolverParameterSelectsTheContactSolver) {
     ASSERT_TRUE(set.Set("solver", "accumulated", &error)) << error;
     EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Accumulated);
     EXPECT_FALSE(set.Set("solver", "sequential", &error));
-    EXPECT_NE(error.find("book|accumulated"), std::string::npos) << error;
+    EXPECT_NE(error.find("book|accumulated|soft"), std::string::npos) << error;
     ASSERT_TRUE(set.Set("solver", "book", &error)) << error;
     EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Book);
+}
+
+// --set solver=soft selects the soft step, and its --set keys land in WorldSettings::soft; both survive Reset and
+// the per-step re-application of the panel values.
+TEST(Ch15Scene, SoftSolverAndItsSettingsReachTheSystem) {
+    Ch15Scene scene;
+    ParameterSet set;
+    scene.AddParameters(&set);
+    std::string error;
+    ASSERT_TRUE(set.Set("solver", "soft", &error)) << error;
+    ASSERT_TRUE(set.Set("soft-substeps", "8", &error)) << error;
+    ASSERT_TRUE(set.Set("soft-contact-hertz", "60", &error)) << error;
+    ASSERT_TRUE(set.Set("soft-contact-damping-ratio", "2", &error)) << error;
+    ASSERT_TRUE(set.Set("soft-max-pushout-speed", "0.5", &error)) << error;
+    ASSERT_TRUE(set.Set("soft-iterations", "3", &error)) << error;
+    ASSERT_TRUE(set.Set("soft-relax-iterations", "0", &error)) << error;
+    auto expectSoft = [&scene](const char* when) {
+        const WorldSettings& s = scene.System().settings;
+        EXPECT_EQ(s.contactSolver, ContactSolver::Soft) << when;
+        EXPECT_EQ(s.soft.substeps, 8) << when;
+        EXPECT_EQ(s.soft.contactHertz, 60.0f) << when;
+        EXPECT_EQ(s.soft.contactDampingRatio, 2.0f) << when;
+        EXPECT_EQ(s.soft.maxPushoutSpeed, 0.5f) << when;
+        EXPECT_EQ(s.soft.iterations, 3) << when;
+        EXPECT_EQ(s.soft.relaxIterations, 0) << when;
+        EXPECT_EQ(s.soft.linearSlop, SoftSolverSettings().linearSlop) << when;  // not a key: the default
+    };
+    expectSoft("after --set");
+    scene.Step(0.03f);
+    expectSoft("after a step");
+    scene.Reset();
+    expectSoft("after Reset");
+    EXPECT_FALSE(set.Set("soft-substeps", "0", &error));
+    EXPECT_NE(error.find("integer 1..64"), std::string::npos) << error;
+    EXPECT_EQ(scene.System().settings.soft.substeps, 8);
 }

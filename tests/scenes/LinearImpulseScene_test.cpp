@@ -94,3 +94,24 @@ TEST(LinearImpulseScene, ThrownBodiesCollide) {
         EXPECT_GT(b[1].position.x - b[0].position.x, 1.9f);
     }
 }
+
+// The book's solver is the default; --set solver=soft selects the soft step at once, with its settings, and the
+// Spheres and Drop checkboxes (which rebuild the scene) keep them.
+TEST(LinearImpulseScene, SolverParameterSelectsTheSoftSolver) {
+    LinearImpulseScene scene;
+    ParameterSet set;
+    scene.AddParameters(&set);
+    EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Book);
+    std::string error;
+    ASSERT_TRUE(set.Set("solver", "soft", &error)) << error;
+    ASSERT_TRUE(set.Set("soft-substeps", "6", &error)) << error;
+    ASSERT_TRUE(set.Set("soft-contact-hertz", "15", &error)) << error;
+    EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Soft);
+    EXPECT_EQ(scene.System().settings.soft.substeps, 6);
+    ASSERT_TRUE(set.Set("spheres", "1", &error)) << error;
+    EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Soft);
+    EXPECT_EQ(scene.System().settings.soft.substeps, 6);
+    EXPECT_EQ(scene.System().settings.soft.contactHertz, 15.0f);
+    ASSERT_TRUE(set.Set("solver", "book", &error)) << error;
+    EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Book);
+}

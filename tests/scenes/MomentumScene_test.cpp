@@ -67,3 +67,25 @@ TEST(MomentumScene, BookSettingsLoseOnlyTheDamping) {
         ASSERT_LE(std::fabs(book.TotalMomentum().x), std::fabs(expected) * (1 + 1e-4f)) << "step " << n;
     }
 }
+
+// The book's solver is the default; --set solver=soft selects the soft step at once, with its settings, and a
+// reset keeps them (the scene's own 20 book iterations stay).
+TEST(MomentumScene, SolverParameterSelectsTheSoftSolver) {
+    MomentumScene scene;
+    ParameterSet set;
+    scene.AddParameters(&set);
+    EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Book);
+    std::string error;
+    ASSERT_TRUE(set.Set("solver", "soft", &error)) << error;
+    ASSERT_TRUE(set.Set("soft-substeps", "2", &error)) << error;
+    ASSERT_TRUE(set.Set("soft-contact-hertz", "120", &error)) << error;
+    EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Soft);
+    EXPECT_EQ(scene.System().settings.soft.substeps, 2);
+    EXPECT_EQ(scene.System().settings.soft.contactHertz, 120.0f);
+    ASSERT_TRUE(set.Set("reset", "1", &error)) << error;
+    EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Soft);
+    EXPECT_EQ(scene.System().settings.soft.substeps, 2);
+    EXPECT_EQ(scene.System().settings.solverIterations, 20);
+    ASSERT_TRUE(set.Set("solver", "accumulated", &error)) << error;
+    EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Accumulated);
+}

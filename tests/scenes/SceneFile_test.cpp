@@ -198,7 +198,122 @@ TEST(SceneFile, UnknownKeysAreErrors) {
     EXPECT_TRUE(
         OneProblem(Problems(File(R"({"id": "s", "type": "sphere", "position": [0, 1, 0], "halfExtents": [1, 1, 1]})")),
                    {"bodies[0].halfExtents: is a box field"}));
-    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"sleep": true})")), {"world.sleep: is not supported"}));
+    EXPECT_TRUE(
+        OneProblem(Problems(File(kBox, R"("world": {"soft": {"hertz": 30}})")), {"world.soft.hertz: unknown key"}));
+    EXPECT_TRUE(
+        OneProblem(Problems(File(kBox, R"("world": {"sleep": {"time": 1}})")), {"world.sleep.time: unknown key"}));
+}
+
+// world.soft: every field of SoftSolverSettings, range-checked in the ranges of `--set soft-...`.
+TEST(SceneFile, ReadsTheSoftSolversSettings) {
+    SceneDescription d;
+    ASSERT_TRUE(Problems(File(kBox, R"("world": {"contactSolver": "soft", "soft": {
+                                   "substeps": 8, "iterations": 2, "relaxIterations": 0, "contactHertz": 60,
+                                   "contactDampingRatio": 5, "maxPushoutSpeed": 1.5, "speculativeMargin": 0.04,
+                                   "linearSlop": 0.001, "restitutionThreshold": 0.5, "warmStartFactor": 0.8}})"),
+                         &d)
+                    .empty());
+    EXPECT_EQ(d.world.contactSolver, ContactSolver::Soft);
+    const SoftSolverSettings& s = d.world.soft;
+    EXPECT_EQ(s.substeps, 8);
+    EXPECT_EQ(s.iterations, 2);
+    EXPECT_EQ(s.relaxIterations, 0);
+    EXPECT_EQ(s.contactHertz, 60.0f);
+    EXPECT_EQ(s.contactDampingRatio, 5.0f);
+    EXPECT_EQ(s.maxPushoutSpeed, 1.5f);
+    EXPECT_EQ(s.speculativeMargin, 0.04f);
+    EXPECT_EQ(s.linearSlop, 0.001f);
+    EXPECT_EQ(s.restitutionThreshold, 0.5f);
+    EXPECT_EQ(s.warmStartFactor, 0.8f);
+    // Absent fields keep the engine's defaults.
+    ASSERT_TRUE(Problems(File(kBox, R"("world": {"soft": {"substeps": 2}})"), &d).empty());
+    EXPECT_EQ(d.world.soft.substeps, 2);
+    EXPECT_EQ(d.world.soft.contactHertz, SoftSolverSettings().contactHertz);
+    EXPECT_EQ(d.world.contactSolver, ContactSolver::Book);
+}
+
+TEST(SceneFile, SoftSettingsOutOfRangeNameThePathAndValue) {
+    const struct {
+        const char* soft;
+        const char* message;
+    } cases[] = {
+        {R"({"substeps": 0})", "world.soft.substeps: must be in [1, 64] (got 0)"},
+        {R"({"substeps": 65})", "world.soft.substeps: must be in [1, 64] (got 65)"},
+        {R"({"substeps": 2.5})", "world.soft.substeps: must be an integer (got 2.5)"},
+        {R"({"iterations": 0})", "world.soft.iterations: must be in [1, 100] (got 0)"},
+        {R"({"relaxIterations": -1})", "world.soft.relaxIterations: must be in [0, 100] (got -1)"},
+        {R"({"contactHertz": 0})", "world.soft.contactHertz: must be in [0.1, 1000] (got 0)"},
+        {R"({"contactHertz": 1e6})", "world.soft.contactHertz: must be in [0.1, 1000] (got 1000000.0)"},
+        {R"({"contactHertz": "30"})", "world.soft.contactHertz: must be a number (got \"30\")"},
+        {R"({"contactHertz": 1e39})", "world.soft.contactHertz: must be finite"},
+        {R"({"contactDampingRatio": -1})", "world.soft.contactDampingRatio: must be in [0, 100] (got -1)"},
+        {R"({"maxPushoutSpeed": 101})", "world.soft.maxPushoutSpeed: must be in [0, 100] (got 101)"},
+        {R"({"speculativeMargin": -0.1})", "world.soft.speculativeMargin: must be >= 0 (got -0.1)"},
+        {R"({"linearSlop": -1})", "world.soft.linearSlop: must be >= 0"},
+        {R"({"restitutionThreshold": -1})", "world.soft.restitutionThreshold: must be >= 0"},
+        {R"({"warmStartFactor": 1.5})", "world.soft.warmStartFactor: must be in [0, 1] (got 1.5)"},
+        {R"(4)", "world.soft: must be an object (got 4)"},
+    };
+    for (const auto& c : cases) {
+        SceneDescription d;
+        const auto e = Problems(File(kBox, std::string(R"("world": {"soft": )") + c.soft + "}"), &d);
+        EXPECT_TRUE(OneProblem(e, {"t.json: ", c.message})) << c.soft;
+    }
+    // The bounds themselves are in range (compared as the stored float).
+    EXPECT_TRUE(Problems(File(kBox, R"("world": {"soft": {"contactHertz": 0.1, "substeps": 64}})")).empty());
+    EXPECT_TRUE(Problems(File(kBox, R"("world": {"soft": {"contactHertz": 1000, "maxPushoutSpeed": 0}})")).empty());
+}
+
+// world.sleep: true, false, or an object of SleepSettings (sleep on unless it says enabled: false).
+TEST(SceneFile, ReadsSleepAsABoolOrAnObject) {
+    SceneDescription d;
+    ASSERT_TRUE(Problems(File(kBox), &d).empty());
+    EXPECT_FALSE(d.world.sleep.enabled);
+    ASSERT_TRUE(Problems(File(kBox, R"("world": {"sleep": true})"), &d).empty());
+    EXPECT_TRUE(d.world.sleep.enabled);
+    EXPECT_EQ(d.world.sleep.timeToSleep, SleepSettings().timeToSleep);
+    ASSERT_TRUE(Problems(File(kBox, R"("world": {"sleep": false})"), &d).empty());
+    EXPECT_FALSE(d.world.sleep.enabled);
+    ASSERT_TRUE(Problems(File(kBox, R"("world": {"sleep": {"timeToSleep": 1, "linearSpeed": 0.1,
+                                                             "angularSpeed": 0.2}})"),
+                         &d)
+                    .empty());
+    EXPECT_TRUE(d.world.sleep.enabled);
+    EXPECT_EQ(d.world.sleep.timeToSleep, 1.0f);
+    EXPECT_EQ(d.world.sleep.linearSpeed, 0.1f);
+    EXPECT_EQ(d.world.sleep.angularSpeed, 0.2f);
+    ASSERT_TRUE(Problems(File(kBox, R"("world": {"sleep": {"enabled": false, "timeToSleep": 2}})"), &d).empty());
+    EXPECT_FALSE(d.world.sleep.enabled);
+    EXPECT_EQ(d.world.sleep.timeToSleep, 2.0f);
+
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"sleep": 1})")),
+                           {"world.sleep: must be true, false or an object (got 1)"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"sleep": {"timeToSleep": -1}})")),
+                           {"world.sleep.timeToSleep: must be >= 0 (got -1)"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"sleep": {"enabled": "yes"}})")),
+                           {"world.sleep.enabled: must be true or false"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"sleep": {"linearSpeed": "fast"}})")),
+                           {"world.sleep.linearSpeed: must be a number"}));
+}
+
+// A key given twice in one object would silently take the last value; it is refused at the second one, with its
+// line and column, its object's path and the key.
+TEST(SceneFile, DuplicateKeysAreRefusedWithTheirPlace) {
+    EXPECT_TRUE(OneProblem(Problems("{\"format\": 1, \"name\": \"a\",\n  \"name\": \"b\"}"),
+                           {"t.json:2:3: name: duplicate key \"name\""}));
+    EXPECT_TRUE(
+        OneProblem(Problems(File(kBox, "\"world\": {\"iterations\": 5,\n \"gravity\": [0, 0, 0], \"iterations\": 9}")),
+                   {"t.json:2:24: world.iterations: duplicate key \"iterations\""}));
+    EXPECT_TRUE(OneProblem(
+        Problems(
+            File(std::string(kBox) + R"(, {"id": "b", "type": "box", "mass": 1, "position": [0, 3, 0], "mass": 2})")),
+        {"bodies[1].mass: duplicate key \"mass\""}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"soft": {"substeps": 2, "substeps": 4}})")),
+                           {"world.soft.substeps: duplicate key"}));
+    // The same key in different objects, and in one object of each array element, is fine.
+    EXPECT_TRUE(Problems(File(std::string(kBox) + R"(, {"id": "b", "type": "box", "position": [0, 3, 0]})",
+                              R"("world": {"soft": {"iterations": 2}, "iterations": 3})"))
+                    .empty());
 }
 
 TEST(SceneFile, DanglingAndDuplicateIds) {
@@ -312,6 +427,39 @@ TEST(FileScene, AppliesWorldSettingsAndBodyFields) {
     EXPECT_TRUE(VecNear(p.GetGravity(), vec3(0, -2, 0), 0.0f));
 }
 
+// A file's soft settings and sleep reach the world; the "solver" choice offers soft and keeps it when another
+// setting changes.
+TEST(FileScene, AppliesSoftSettingsAndSleepAndOffersTheSoftSolver) {
+    SceneDescription d;
+    ASSERT_TRUE(Problems(File(kBox, R"("world": {"contactSolver": "soft", "soft": {"substeps": 6, "contactHertz": 45},
+                                                 "sleep": {"timeToSleep": 0.25}})"),
+                         &d)
+                    .empty());
+    FileScene scene(d);
+    const WorldSettings& s = scene.System().settings;
+    EXPECT_EQ(s.contactSolver, ContactSolver::Soft);
+    EXPECT_EQ(s.soft.substeps, 6);
+    EXPECT_EQ(s.soft.contactHertz, 45.0f);
+    EXPECT_TRUE(s.sleep.enabled);
+    EXPECT_EQ(s.sleep.timeToSleep, 0.25f);
+    EXPECT_NE(scene.ModelSummary().find("soft solver, 6 substeps, 45 Hz"), std::string::npos) << scene.ModelSummary();
+
+    ParameterSet set;
+    scene.AddParameters(&set);
+    std::string error;
+    ASSERT_TRUE(set.Set("iterations", "7", &error)) << error;
+    EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Soft);  // not reset to the book's
+    ASSERT_TRUE(set.Set("soft-substeps", "3", &error)) << error;
+    EXPECT_EQ(scene.System().settings.soft.substeps, 3);
+    ASSERT_TRUE(set.Set("solver", "book", &error)) << error;
+    EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Book);
+    ASSERT_TRUE(set.Set("solver", "soft", &error)) << error;
+    EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Soft);
+    scene.Reset();  // the settings are the description's, so a rebuild keeps them
+    EXPECT_EQ(scene.System().settings.soft.substeps, 3);
+    EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Soft);
+}
+
 TEST(FileScene, StepsUnderTheFilesGravity) {
     SceneDescription d;
     ASSERT_TRUE(Problems(File(kP1, R"("world": {"gravity": [0, -4, 0]})"), &d).empty());
@@ -366,4 +514,42 @@ TEST(SceneExport, WrittenTextReadsBackToTheSameWorld) {
     for (std::size_t i = 0; i < a.verts.size(); ++i) {
         EXPECT_TRUE(VecNear(a.verts[i].GetPosition(), b.verts[i].GetPosition(), 0.0f)) << i;
     }
+}
+
+// Soft settings and sleep are exported where they differ from the defaults, and read back to the same world.
+TEST(SceneExport, WritesSoftAndSleepOnlyWhenTheyDifferFromTheDefaults) {
+    SceneDescription d;
+    ASSERT_TRUE(Problems(File(kBox), &d).empty());
+    FileScene plain(d);
+    std::vector<std::string> notes;
+    const std::string plainText = WriteSceneText(DescribeWorld(plain.System(), "plain", &notes));
+    EXPECT_EQ(plainText.find("\"soft\""), std::string::npos) << plainText;
+    EXPECT_EQ(plainText.find("\"sleep\""), std::string::npos) << plainText;
+
+    ASSERT_TRUE(Problems(File(kBox, R"("world": {"contactSolver": "soft", "soft": {"substeps": 8, "linearSlop": 0.002},
+                                                 "sleep": true})"),
+                         &d)
+                    .empty());
+    FileScene soft(d);
+    const std::string text = WriteSceneText(DescribeWorld(soft.System(), "soft", &notes));
+    EXPECT_NE(text.find("\"sleep\": true"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"substeps\": 8"), std::string::npos) << text;
+    EXPECT_EQ(text.find("\"contactHertz\""), std::string::npos) << "a default was written: " << text;
+    SceneDescription read;
+    std::vector<std::string> errors;
+    ASSERT_TRUE(ParseSceneText(text, "export.json", &read, &errors)) << errors.front();
+    EXPECT_EQ(read.world.contactSolver, ContactSolver::Soft);
+    EXPECT_EQ(read.world.soft.substeps, 8);
+    EXPECT_EQ(read.world.soft.linearSlop, 0.002f);
+    EXPECT_EQ(read.world.soft.contactHertz, SoftSolverSettings().contactHertz);
+    EXPECT_TRUE(read.world.sleep.enabled);
+
+    // Sleep thresholds of their own are written as the whole object.
+    ASSERT_TRUE(Problems(File(kBox, R"("world": {"sleep": {"enabled": false, "angularSpeed": 0.5}})"), &d).empty());
+    FileScene thresholds(d);
+    const std::string text2 = WriteSceneText(DescribeWorld(thresholds.System(), "sleep", &notes));
+    ASSERT_TRUE(ParseSceneText(text2, "export.json", &read, &errors)) << errors.front();
+    EXPECT_FALSE(read.world.sleep.enabled);
+    EXPECT_EQ(read.world.sleep.angularSpeed, 0.5f);
+    EXPECT_EQ(read.world.sleep.timeToSleep, SleepSettings().timeToSleep);
 }

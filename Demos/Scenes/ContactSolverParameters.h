@@ -1,0 +1,39 @@
+#pragma once
+// The contact-solver parameters shared by the rigid-volume scenes (ch15, linear-impulse, momentum and scene files):
+// the "solver" choice and the soft solver's settings as `--set` keys. Each soft key is "soft-" and the
+// SoftSolverSettings field in kebab-case (docs/app.md, "Contact solvers").
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "Demos/Scenes/Parameters.h"
+#include "Physics/ContactSolver.h"
+
+/// Solver ids in kAllContactSolvers order ("book", "accumulated", "soft"): the "solver" choice list, so a
+/// choice index is the enum's value.
+std::vector<std::string> ContactSolverChoices();
+/// The solver at an index of ContactSolverChoices(); the book's if out of range.
+ContactSolver ContactSolverAt(int index);
+/// Index of `solver` in ContactSolverChoices().
+int ContactSolverIndex(ContactSolver solver);
+
+/// Ranges of the soft solver's `--set` keys (inclusive; the scene file's world.soft takes the same).
+struct SoftSolverLimits {
+    static constexpr int kMaxSubsteps = 64;          ///< count
+    static constexpr int kMaxIterations = 100;       ///< passes per substep
+    static constexpr float kMinContactHertz = 0.1f;  ///< Hz
+    static constexpr float kMaxContactHertz = 1000.0f;
+    static constexpr float kMaxDampingRatio = 100.0f;
+    static constexpr float kMaxPushoutSpeed = 100.0f;  ///< m/s
+};
+
+/// Registers "solver" (a choice bound to *solverIndex, help `solverHelp`) and the soft solver's settings a user
+/// tunes: soft-substeps, soft-iterations, soft-relax-iterations, soft-contact-hertz, soft-contact-damping-ratio,
+/// soft-max-pushout-speed (bound to *soft). onChange runs after each successful --set.
+void AddContactSolverParameters(ParameterSet* set, int* solverIndex, SoftSolverSettings* soft,
+                                const std::string& solverHelp, const std::function<void()>& onChange);
+
+/// The panel row naming a non-book solver in effect ("Contact solver: accumulated", "Contact solver: soft, 4
+/// substeps, 30 Hz"); "" for the book's (its panels stay the book's).
+std::string ContactSolverRow(ContactSolver solver, const SoftSolverSettings& soft);

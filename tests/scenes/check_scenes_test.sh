@@ -1,0 +1,40 @@
+#!/bin/sh
+# scripts/check-scenes.py on scenes written here, against the shipped schema: a scene with the soft solver's
+# settings and each form of world.sleep passes; a key given twice, a soft setting out of range and a sleep of the
+# wrong type fail, each named. Usage: check_scenes_test.sh REPO_ROOT PYTHON SCRATCH_DIR
+set -eu
+root=$1
+python=$2
+dir=$3
+rm -rf "$dir" && mkdir -p "$dir/scenes"
+fail() { echo "scenes.schema-check: FAIL: $*" >&2; exit 1; }
+cp "$root/scenes/scene.schema.json" "$dir/scenes/"
+body='"bodies": [{"id": "a", "type": "box", "position": [0, 1, 0]}]'
+
+# expect OK|FAIL WORLD [MESSAGE]: one scene with "world": WORLD checked alone.
+expect() {
+  rm -f "$dir/scenes/t.json"
+  printf '{"format": 1, "name": "t", "world": %s, %s}\n' "$2" "$body" >"$dir/scenes/t.json"
+  set +e
+  "$python" "$root/scripts/check-scenes.py" "$dir" >"$dir/out.txt" 2>&1
+  rc=$?
+  set -e
+  if [ "$1" = OK ]; then
+    [ "$rc" -eq 0 ] || fail "refused $2: $(cat "$dir/out.txt")"
+  else
+    [ "$rc" -eq 1 ] || fail "accepted $2 (exit $rc)"
+    grep -qF "$3" "$dir/out.txt" || fail "for $2 the message lacks '$3': $(cat "$dir/out.txt")"
+  fi
+}
+
+expect OK '{"contactSolver": "soft", "soft": {"substeps": 8, "contactHertz": 60, "relaxIterations": 0}}'
+expect OK '{"sleep": true}'
+expect OK '{"sleep": false}'
+expect OK '{"sleep": {"enabled": true, "timeToSleep": 1, "linearSpeed": 0.1, "angularSpeed": 0.2}}'
+expect FAIL '{"soft": {"substeps": 0}}' 'world.soft.substeps: must be >= 1'
+expect FAIL '{"soft": {"contactHertz": 2000}}' 'world.soft.contactHertz: must be <= 1000'
+expect FAIL '{"soft": {"hertz": 30}}' 'world.soft.hertz: unknown key'
+expect FAIL '{"sleep": 1}' 'world.sleep: must match exactly one of 2 forms'
+expect FAIL '{"sleep": {"time": 1}}' 'world.sleep: must match exactly one of 2 forms'
+expect FAIL '{"iterations": 5, "iterations": 9}' "duplicate key 'iterations'"
+echo "scenes.schema-check: ok"
