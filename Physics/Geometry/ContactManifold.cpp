@@ -132,28 +132,33 @@ int ClipSide(const ClipVertex* in, int n, int k, int sideAxis, float sideSign, f
 }
 
 /// Keeps the deepest point, the one farthest from it, the one making the largest triangle and the one adding the
-/// largest area to that triangle (in that order). `n` > kMaxManifoldPoints.
+/// largest area to that triangle (in that order). `n` > kMaxManifoldPoints. A later candidate replaces the best so
+/// far only when it is better by the slops below, so near ties (a flat stack: every point equally deep) go to the
+/// first in clip order, which follows the features, and the kept ids do not flip with noise from step to step.
+constexpr float kReduceDepthSlop = 0.001f;  // m
+constexpr float kReduceRelSlop = 1.02f;     // on squared distances and areas: about 1 % in length
+
 int ReducePoints(const ManifoldPoint* in, int n, ManifoldPoint* out) {
     int i0 = 0;
     for (int i = 1; i < n; ++i)
-        if (in[i].separation < in[i0].separation) i0 = i;
+        if (in[i].separation < in[i0].separation - kReduceDepthSlop) i0 = i;
     const vec3 p0 = in[i0].point;
     int i1 = -1;
-    float best = -1.0f;
+    float best = 0.0f;
     for (int i = 0; i < n; ++i) {
         const float d = MagnitudeSq(in[i].point - p0);
-        if (i != i0 && d > best) {
+        if (i != i0 && (i1 < 0 || d > best * kReduceRelSlop)) {
             best = d;
             i1 = i;
         }
     }
     const vec3 p1 = in[i1].point;
     int i2 = -1;
-    best = -1.0f;
+    best = 0.0f;
     for (int i = 0; i < n; ++i) {
         if (i == i0 || i == i1) continue;
         const float a = MagnitudeSq(Cross(p1 - p0, in[i].point - p0));
-        if (a > best) {
+        if (i2 < 0 || a > best * kReduceRelSlop) {
             best = a;
             i2 = i;
         }
@@ -173,7 +178,7 @@ int ReducePoints(const ManifoldPoint* in, int n, ManifoldPoint* out) {
             const float s = -Dot(Cross(b - a, in[i].point - a), normal);
             if (s > added) added = s;
         }
-        if (added > best) {
+        if (added > best * kReduceRelSlop) {
             best = added;
             i3 = i;
         }
@@ -277,12 +282,13 @@ void ClosestOnEdges(const vec3& p0, const vec3& d1, const vec3& q0, const vec3& 
     const float c = Dot(d1, r);
     const float f = Dot(d2, r);
     const float denom = a * e - b * b;
+    // Parallel edges (denom 0) take the middle of P; zero-length edges (flat boxes) stay at their centres.
     float s = denom > 1e-12f ? (b * f - c * e) / denom : 0.0f;
     s = std::fmax(-1.0f, std::fmin(1.0f, s));
-    float t = (b * s + f) / e;
+    float t = e > 1e-12f ? (b * s + f) / e : 0.0f;
     if (t < -1.0f || t > 1.0f) {
         t = std::fmax(-1.0f, std::fmin(1.0f, t));
-        s = std::fmax(-1.0f, std::fmin(1.0f, (b * t - c) / a));
+        s = a > 1e-12f ? std::fmax(-1.0f, std::fmin(1.0f, (b * t - c) / a)) : 0.0f;
     }
     *onP = p0 + d1 * s;
     *onQ = q0 + d2 * t;

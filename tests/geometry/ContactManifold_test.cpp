@@ -257,6 +257,49 @@ TEST(SolverManifoldBoxBox, OctagonIsReducedToFourIncludingTheDeepest) {
     EXPECT_TRUE(std::adjacent_find(ids.begin(), ids.end()) == ids.end());
 }
 
+TEST(SolverManifoldBoxBox, TurnedStackKeepsItsFourIdsUnderNoise) {
+    // Two equal cubes face on face, the top one turned 2 degrees about y: its corners overhang, so the clip is an
+    // octagon of pairs of nearby points, all equally deep. Noise of a resting stack (0.01 degree tilts, 0.1 mm
+    // sinking) must not change which four are kept.
+    const OBB a = UnitCube(vec3(0, 0, 0));
+    ContactManifold rest;
+    CollideBoxes(a, UnitCube(vec3(0, 0.999f, 0), YRotation3x3(2.0f)), 0.02f, &rest);
+    ASSERT_EQ(rest.pointCount, 4);
+    const std::vector<std::uint32_t> ids = SortedIds(rest);
+    const mat3 noise[] = {XRotation3x3(0.01f),
+                          XRotation3x3(-0.01f),
+                          ZRotation3x3(0.01f),
+                          ZRotation3x3(-0.01f),
+                          XRotation3x3(0.01f) * ZRotation3x3(0.01f),
+                          XRotation3x3(-0.01f) * ZRotation3x3(-0.01f)};
+    for (const mat3& tilt : noise)
+        for (float sink : {0.0f, 0.0001f}) {
+            ContactManifold m;
+            CollideBoxes(a, UnitCube(vec3(0, 0.999f - sink, 0), tilt * YRotation3x3(2.0f)), 0.02f, &m);
+            ASSERT_EQ(m.pointCount, 4);
+            EXPECT_EQ(SortedIds(m), ids);
+        }
+}
+
+TEST(SolverManifoldBoxBox, CoincidentAndFlatBoxesStayFinite) {
+    ContactManifold m;
+    CollideBoxes(UnitCube(vec3(1, 2, 3)), UnitCube(vec3(1, 2, 3)), 0.02f, &m);
+    ASSERT_EQ(m.pointCount, 4);
+    EXPECT_NEAR(Magnitude(m.normal), 1.0f, tol::kTight);
+    for (int i = 0; i < 4; ++i) {
+        EXPECT_TRUE(IsFinite(m.points[i].point));
+        EXPECT_NEAR(m.points[i].separation, -1.0f, tol::kTight);
+    }
+    // A zero-thickness plate crossing a rotated cube's edge.
+    const OBB plate(vec3(0, 0, 0), vec3(1, 0, 1), ZRotation3x3(30.0f));
+    CollideBoxes(plate, UnitCube(vec3(0.2f, 0.6f, 0), Rotation3x3(20, 30, 40)), 0.02f, &m);
+    for (int i = 0; i < m.pointCount; ++i) {
+        EXPECT_TRUE(IsFinite(m.points[i].point));
+        EXPECT_TRUE(std::isfinite(m.points[i].separation));
+    }
+    EXPECT_TRUE(IsFinite(m.normal));
+}
+
 TEST(SolverManifoldBoxBox, RandomPosesAgreeWithTheBook) {
     // Seeded random pairs near touching. Whenever the book's manifold collides, ours has points; its deepest
     // separation is the book's depth, except that the face preference may take a face axis up to 5 % + 5 mm deeper
