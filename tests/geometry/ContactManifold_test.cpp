@@ -53,6 +53,28 @@ bool PointsBetweenSurfaces(const ContactManifold& m, const OBB& a, const OBB& b,
     return true;
 }
 
+/// How far p lies from the surface of `box` (0 on it, > 0 off it, inside or outside).
+float OffSurface(const OBB& box, const vec3& p) {
+    const vec3 d = p - box.position;
+    float outside = 0.0f, inside = 3.4e38f;
+    for (int k = 0; k < 3; ++k) {
+        const float over = std::fabs(Dot(d, GetRow(box.orientation, k))) - box.size[k];
+        outside = std::max(outside, over);
+        inside = std::min(inside, -over);
+    }
+    return outside > 0.0f ? outside : std::max(inside, 0.0f);
+}
+
+/// Each point sits midway: half its separation back along the normal lies on A's surface, half forward on B's.
+bool EndsOnSurfaces(const ContactManifold& m, const OBB& a, const OBB& b, float eps) {
+    for (int i = 0; i < m.pointCount; ++i) {
+        const vec3 half = m.normal * (0.5f * m.points[i].separation);
+        if (OffSurface(a, m.points[i].point - half) > eps || OffSurface(b, m.points[i].point + half) > eps)
+            return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 // ---- Face contacts --------------------------------------------------------------------------------------
@@ -304,9 +326,11 @@ TEST(SolverManifoldBoxBox, RandomPosesAgreeWithTheBook) {
     // Seeded random pairs near touching. Whenever the book's manifold collides, ours has points; its deepest
     // separation is the book's depth, except that the face preference may take a face axis up to 5 % + 5 mm deeper
     // than the book's least-overlap axis (and never shallower by more than 1 mm on these poses);
-    // normals agree in sign, and every point lies between the two surfaces.
+    // normals agree in sign, and every point lies between the two surfaces with its ends (half the separation
+    // either way along the normal) on A's and B's surfaces. Every pose, touching or not: swapping A and B negates
+    // the normal and swaps the two bytes of every id.
     MsvcRand rng(12345);
-    int colliding = 0, close = 0;
+    int colliding = 0, close = 0, swapMismatch = 0;
     for (int trial = 0; trial < 4000; ++trial) {
         const OBB a(vec3(0, 0, 0), vec3(rng.Range(0.2f, 1.2f), rng.Range(0.2f, 1.2f), rng.Range(0.2f, 1.2f)),
                     Rotation3x3(rng.Range(-180, 180), rng.Range(-180, 180), rng.Range(-180, 180)));
@@ -322,11 +346,21 @@ TEST(SolverManifoldBoxBox, RandomPosesAgreeWithTheBook) {
         const float push = rng.Range(-0.01f, 0.05f);
         const OBB b(dir * (lo - push), size, rot);
         const CollisionManifold book = FindCollisionFeatures(a, b);
-        ContactManifold m;
+        ContactManifold m, swapped;
         CollideBoxes(a, b, 0.02f, &m);
+        CollideBoxes(b, a, 0.02f, &swapped);
+        {
+            std::vector<std::uint32_t> back;
+            for (std::uint32_t id : SortedIds(swapped)) back.push_back((id & 0xFFu) << 8 | id >> 8);
+            std::sort(back.begin(), back.end());
+            if (back != SortedIds(m) || (m.pointCount > 0 && !VecNear(swapped.normal, -m.normal, tol::kLoose)))
+                ++swapMismatch;
+        }
         if (!book.colliding) {
             // Separated by more than the margin: nothing; within it only speculative points.
+            // (Apart, an edge pair's closest points can sit at an edge's end, off the axis by a fraction of a mm.)
             for (int i = 0; i < m.pointCount; ++i) EXPECT_GT(m.points[i].separation, -tol::kLoose);
+            EXPECT_TRUE(EndsOnSurfaces(m, a, b, 1e-3f)) << "trial " << trial;
             continue;
         }
         ++colliding;
@@ -339,8 +373,10 @@ TEST(SolverManifoldBoxBox, RandomPosesAgreeWithTheBook) {
         EXPECT_LE(minSep, -book.depth + 1e-3f) << "trial " << trial;
         if (std::fabs(minSep + book.depth) < 1e-3f) ++close;
         EXPECT_TRUE(PointsBetweenSurfaces(m, a, b, 2e-3f)) << "trial " << trial;
+        EXPECT_TRUE(EndsOnSurfaces(m, a, b, 1e-4f)) << "trial " << trial;
     }
     EXPECT_GT(colliding, 2000);
+    EXPECT_EQ(swapMismatch, 0) << "swapping A and B must negate the normal and swap the id bytes";
     EXPECT_GT(close, colliding * 8 / 10) << "most pairs match the book's depth to 1 mm";
 }
 
