@@ -273,6 +273,9 @@ int CollideFaces(const Box& ref, const Box& inc, int r, float sign, bool refIsB,
     return ReducePoints(kept, m, out->points);
 }
 
+/// x clamped to [lo, hi] (plain compares: std::fmax/fmin are library calls without fast-math).
+inline float Clamp(float x, float lo, float hi) { return x < lo ? lo : (x > hi ? hi : x); }
+
 /// Closest points of segments P0 + s*d1 and Q0 + t*d2 (s, t clamped to [-1, 1]; d1, d2 are half edges).
 void ClosestOnEdges(const vec3& p0, const vec3& d1, const vec3& q0, const vec3& d2, vec3* onP, vec3* onQ) {
     const vec3 r = p0 - q0;
@@ -284,11 +287,11 @@ void ClosestOnEdges(const vec3& p0, const vec3& d1, const vec3& q0, const vec3& 
     const float denom = a * e - b * b;
     // Parallel edges (denom 0) take the middle of P; zero-length edges (flat boxes) stay at their centres.
     float s = denom > 1e-12f ? (b * f - c * e) / denom : 0.0f;
-    s = std::fmax(-1.0f, std::fmin(1.0f, s));
+    s = Clamp(s, -1.0f, 1.0f);
     float t = e > 1e-12f ? (b * s + f) / e : 0.0f;
     if (t < -1.0f || t > 1.0f) {
-        t = std::fmax(-1.0f, std::fmin(1.0f, t));
-        s = a > 1e-12f ? std::fmax(-1.0f, std::fmin(1.0f, (b * t - c) / a)) : 0.0f;
+        t = Clamp(t, -1.0f, 1.0f);
+        s = a > 1e-12f ? Clamp((b * t - c) / a, -1.0f, 1.0f) : 0.0f;
     }
     *onP = p0 + d1 * s;
     *onQ = q0 + d2 * t;
@@ -318,7 +321,7 @@ void CollideEdges(const Box& a, const Box& b, int i, int j, const vec3& n, float
 void CollideBoxes(const OBB& obbA, const OBB& obbB, float margin, ContactManifold* out) {
     out->pointCount = 0;
     const vec3 d = obbB.position - obbA.position;
-    const float reach = Magnitude(obbA.size) + Magnitude(obbB.size) + margin;
+    const float reach = std::sqrt(MagnitudeSq(obbA.size)) + std::sqrt(MagnitudeSq(obbB.size)) + margin;
     if (MagnitudeSq(d) > reach * reach) return;
 
     const Box A = MakeBox(obbA);
@@ -397,7 +400,7 @@ void CollideBoxes(const OBB& obbA, const OBB& obbB, float margin, ContactManifol
         if (out->pointCount > 0 || edgeI < 0 || sepE > margin) return;
     }
     vec3 n = Cross(A.axis[edgeI], B.axis[edgeJ]);
-    n = n * (1.0f / Magnitude(n));
+    n = n * (1.0f / std::sqrt(MagnitudeSq(n)));
     if (Dot(n, d) < 0.0f) n = -n;
     out->normal = n;
     CollideEdges(A, B, edgeI, edgeJ, n, sepE, out);
@@ -412,7 +415,7 @@ void CollideBoxSphere(const OBB& box, const Sphere& sphere, float margin, Contac
     vec3 closest = A.c;
     for (int i = 0; i < 3; ++i) {
         local[i] = Dot(rel, A.axis[i]);
-        const float clamped = std::fmax(-A.e[i], std::fmin(A.e[i], local[i]));
+        const float clamped = Clamp(local[i], -A.e[i], A.e[i]);
         if (clamped != local[i]) inside = false;
         closest += A.axis[i] * clamped;
     }
