@@ -359,25 +359,31 @@ void CollideBoxes(const OBB& obbA, const OBB& obbB, float margin, ContactManifol
             axisB = j;
         }
     }
-    // Edge axes A_i x B_j, written in A's frame: (A_i x B_j) = R[i1][j] A_i2 - R[i2][j] A_i1.
-    float sepE = -3.4e38f;
-    int edgeI = -1, edgeJ = -1;
+    // Edge axes A_i x B_j, written in A's frame: (A_i x B_j) = R[i1][j] A_i2 - R[i2][j] A_i1. All nine are
+    // computed before any is tested, so their square roots and divisions overlap instead of waiting in turn.
+    float edgeSep[9];
     for (int i = 0; i < 3; ++i) {
         const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
         for (int j = 0; j < 3; ++j) {
             const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
             const float lenSq = R[i1][j] * R[i1][j] + R[i2][j] * R[i2][j];
-            if (lenSq < kMinEdgeAxisSq) continue;
             const float dist = std::fabs(tA[i2] * R[i1][j] - tA[i1] * R[i2][j]);
             const float ra = A.e[i1] * absR[i2][j] + A.e[i2] * absR[i1][j];
             const float rb = B.e[j1] * absR[i][j2] + B.e[j2] * absR[i][j1];
-            const float s = (dist - ra - rb) / std::sqrt(lenSq);
-            if (s > margin) return;
-            if (s > sepE) {
-                sepE = s;
-                edgeI = i;
-                edgeJ = j;
-            }
+            // Nearly parallel edges get -inf: never separating, never chosen.
+            edgeSep[3 * i + j] = lenSq < kMinEdgeAxisSq
+                                     ? -3.4e38f
+                                     : (dist - ra - rb) / std::sqrt(lenSq > kMinEdgeAxisSq ? lenSq : kMinEdgeAxisSq);
+        }
+    }
+    float sepE = -3.4e38f;
+    int edgeI = -1, edgeJ = -1;
+    for (int k = 0; k < 9; ++k) {
+        if (edgeSep[k] > margin) return;
+        if (edgeSep[k] > sepE) {
+            sepE = edgeSep[k];
+            edgeI = k / 3;
+            edgeJ = k % 3;
         }
     }
 
