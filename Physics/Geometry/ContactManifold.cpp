@@ -134,7 +134,13 @@ int ClipSide(const ClipVertex* in, int n, int k, int sideAxis, float sideSign, f
 /// Keeps the deepest point, the one farthest from it, the one making the largest triangle and the one adding the
 /// largest area to that triangle (in that order). `n` > kMaxManifoldPoints. A later candidate replaces the best so
 /// far only when it is better by the slops below, so near ties (a flat stack: every point equally deep) go to the
-/// first in clip order, which follows the features, and the kept ids do not flip with noise from step to step.
+/// first in id order (CollideFaces sorts them), and the kept ids do not flip with noise from step to step.
+/// The id's two feature bytes, smaller first: unchanged when A and B swap.
+inline std::uint32_t SymmetricKey(std::uint32_t id) {
+    const std::uint32_t a = id >> 8, b = id & 0xFFu;
+    return a < b ? (a << 8 | b) : (b << 8 | a);
+}
+
 constexpr float kReduceDepthSlop = 0.001f;  // m
 constexpr float kReduceRelSlop = 1.02f;     // on squared distances and areas: about 1 % in length
 
@@ -269,6 +275,15 @@ int CollideFaces(const Box& ref, const Box& inc, int r, float sign, bool refIsB,
     if (m <= kMaxManifoldPoints) {
         for (int i = 0; i < m; ++i) out->points[i] = kept[i];
         return m;
+    }
+    // Near ties in the reduction go to the first candidate: order by id (its two feature bytes as a set, the same
+    // whichever box is A), not by clip order, which depends on which box gave the reference face.
+    for (int i = 1; i < m; ++i) {
+        const ManifoldPoint p = kept[i];
+        const std::uint32_t key = SymmetricKey(p.id);
+        int j = i;
+        for (; j > 0 && SymmetricKey(kept[j - 1].id) > key; --j) kept[j] = kept[j - 1];
+        kept[j] = p;
     }
     return ReducePoints(kept, m, out->points);
 }
