@@ -55,7 +55,8 @@ inline std::uint32_t VertexFeature(const float s[3]) {
 constexpr std::uint32_t kSideTag = 0x80u;
 
 struct ClipVertex {
-    vec3 p;                    ///< in the reference frame: x, y along the reference face, z along its normal
+    float p[3];                ///< in the reference frame: x, y along the reference face, z along its normal
+                               ///< (plain floats: the clip buffers are not zeroed on every call)
     std::uint32_t refFeature;  ///< feature of the reference box that made this point
     std::uint32_t incFeature;  ///< feature of the incident box
     std::uint32_t inEdge;      ///< the polygon edge ending here: an incident box edge feature, or kSideTag | side
@@ -85,7 +86,7 @@ int ClipSide(const ClipVertex* in, int n, int k, int sideAxis, float sideSign, f
         if (prevIn != curIn) {
             const float t = dPrev / (dPrev - dCur);
             ClipVertex x;
-            x.p = prev->p + (cur->p - prev->p) * t;
+            for (int c = 0; c < 3; ++c) x.p[c] = prev->p[c] + (cur->p[c] - prev->p[c]) * t;
             x.p[k] = sideSign * extent;  // exactly on the side plane
             if (cur->inEdge & kSideTag) {
                 // Along another side plane into this one: a corner of the reference face, on the incident face.
@@ -238,7 +239,10 @@ int CollideFaces(const Box& ref, const Box& inc, int r, float sign, bool refIsB,
         signs[k] = incSign;
         signs[ku] = kSu[q];
         signs[kv] = kSv[q];
-        bufA[q].p = cl + ul * kSu[q] + vl * kSv[q];
+        const vec3 corner = cl + ul * kSu[q] + vl * kSv[q];
+        bufA[q].p[0] = corner.x;
+        bufA[q].p[1] = corner.y;
+        bufA[q].p[2] = corner.z;
         bufA[q].refFeature = refFace;
         bufA[q].incFeature = VertexFeature(signs);
     }
@@ -261,21 +265,21 @@ int CollideFaces(const Box& ref, const Box& inc, int r, float sign, bool refIsB,
     count = ClipSide(bufB, count, 1, v, -1.0f, ref.e[v], face, bufA);
 
     const vec3 origin = ref.c + n * ref.e[r];
-    ManifoldPoint kept[kMaxPolygon];
     int m = 0;
-    for (int i = 0; i < count; ++i) {
+    for (int i = 0; i < count; ++i)
+        if (bufA[i].p[2] <= margin) bufA[m++] = bufA[i];
+    // Few enough points go straight out; more go through a scratch array to the reduction.
+    ManifoldPoint scratch[kMaxPolygon];
+    ManifoldPoint* kept = m <= kMaxManifoldPoints ? out->points : scratch;
+    for (int i = 0; i < m; ++i) {
         const ClipVertex& c = bufA[i];
-        if (c.p.z > margin) continue;
-        ManifoldPoint& p = kept[m++];
+        ManifoldPoint& p = kept[i];
         // Midway between the reference plane (z = 0) and the incident point.
-        p.point = origin + ref.axis[u] * c.p.x + ref.axis[v] * c.p.y + n * (0.5f * c.p.z);
-        p.separation = c.p.z;
+        p.point = origin + ref.axis[u] * c.p[0] + ref.axis[v] * c.p[1] + n * (0.5f * c.p[2]);
+        p.separation = c.p[2];
         p.id = refIsB ? (c.incFeature << 8 | c.refFeature) : (c.refFeature << 8 | c.incFeature);
     }
-    if (m <= kMaxManifoldPoints) {
-        for (int i = 0; i < m; ++i) out->points[i] = kept[i];
-        return m;
-    }
+    if (m <= kMaxManifoldPoints) return m;
     // Near ties in the reduction go to the first candidate: order by id (its two feature bytes as a set, the same
     // whichever box is A), not by clip order, which depends on which box gave the reference face.
     for (int i = 1; i < m; ++i) {
