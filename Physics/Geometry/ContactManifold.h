@@ -31,8 +31,9 @@ struct ContactManifold {
 //   vertex: bit i set when the corner is on the negative side of local axis i (0-7);
 //   edge:   4 * axis + 2 (next axis negative) + 1 (the axis after negative), axes in cyclic order (0-11);
 //   face:   2 * axis + 1 on the negative side (0-5, the order of GetPlanes).
-// Pairs: (face, vertex) an incident corner on the reference face, (edge, edge) crossing edges (clipped or the
-// edge-edge case), (vertex, face) a reference corner over the incident face. Sphere pairs use id 0.
+// As (reference box's feature, incident box's feature): (face, vertex) an incident corner on the reference face,
+// (edge, edge) crossing edges (a clipped rim crossing, or the edge-edge case), (vertex, face) a reference corner
+// over the incident face. Sphere pairs use id 0.
 constexpr std::uint32_t kFeatureVertex = 1u << 4;
 constexpr std::uint32_t kFeatureEdge = 2u << 4;
 constexpr std::uint32_t kFeatureFace = 3u << 4;
