@@ -25,6 +25,19 @@ struct ContactManifold {
     ManifoldPoint points[kMaxManifoldPoints];
 };
 
+// Feature ids (docs/ch15.md, "Solver manifolds"). A box-box point's id names the feature of A (bits 8-15) and the
+// feature of B (bits 0-7) that made it, whichever box gave the reference face, so the same corner keeps its id
+// when the reference face changes sides. A feature byte is a kind (bits 4-5) and an index (bits 0-3):
+//   vertex: bit i set when the corner is on the negative side of local axis i (0-7);
+//   edge:   4 * axis + 2 (next axis negative) + 1 (the axis after negative), axes in cyclic order (0-11);
+//   face:   2 * axis + 1 on the negative side (0-5, the order of GetPlanes).
+// As (reference box's feature, incident box's feature): (face, vertex) an incident corner on the reference face,
+// (edge, edge) crossing edges (a clipped rim crossing, or the edge-edge case), (vertex, face) a reference corner
+// over the incident face. Sphere pairs use id 0.
+constexpr std::uint32_t kFeatureVertex = 1u << 4;
+constexpr std::uint32_t kFeatureEdge = 2u << 4;
+constexpr std::uint32_t kFeatureFace = 3u << 4;
+
 /// Box A against box B. Points are reported while the boxes are within `margin` (m) of touching.
 void CollideBoxes(const OBB& A, const OBB& B, float margin, ContactManifold* out);
 /// Box A against sphere B (normal from the box to the sphere); one point, id 0.
