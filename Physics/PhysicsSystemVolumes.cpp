@@ -61,7 +61,7 @@ void PhysicsSystem::FindPairs(const StepContext& ctx, const unsigned char* activ
                 if (wanted(i, j)) test(i, j);
         return;
     }
-    broadphase.FindPairs(volumes, &candidatePairs);
+    broadphase.FindPairs(volumes, &candidatePairs, active);
     for (const std::pair<int, int>& p : candidatePairs) {
         const std::size_t i = static_cast<std::size_t>(p.first), j = static_cast<std::size_t>(p.second);
         if (wanted(i, j)) test(i, j);
