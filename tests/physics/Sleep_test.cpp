@@ -1,6 +1,7 @@
 // Islands and sleep of rigid volumes (Physics/Islands.h, WorldSettings::sleep, docs/sleep.md): bodies that stay slow
 // sleep by island, are not moved or tested while asleep, and wake as a whole island on a contact, an impulse or a
-// changed property. The scenes use the Accumulated solver (10 passes), with which stacks come to rest.
+// changed property. The scenes use the Accumulated solver (10 passes), with which stacks come to rest; the book's
+// solver keeps stacks jittering above the sleep speeds, so only a lone box is tested with it.
 #include <gtest/gtest.h>
 
 #include <cstddef>
@@ -44,26 +45,30 @@ std::vector<BodySpec> TowerAt(int height, float x, float z, float lift = 0.0f) {
 
 }  // namespace
 
-// A box dropped 2 m falls, bounces, settles and then sleeps; from then on its state is bit-identical step after step:
-// no gravity reaches its velocity, no integration its position, and its pair with the static ground is not even
-// tested (no collisions are found).
+// A box dropped 2 m falls, bounces, settles and then sleeps, with either solver; from then on its state is
+// bit-identical step after step: no gravity reaches its velocity, no integration its position, and its pair with the
+// static ground is not even tested (no collisions are found).
 TEST(Sleep, DroppedBoxSleepsAndStopsMoving) {
-    RigidWorld w(DroppedBox(2.0f));
-    UseSleep(w.system, true);
-    const int steps = StepUntilAsleep(w, 1, 1, 600);
-    ASSERT_GT(steps, 30) << "slept before it landed";
-    ASSERT_GT(steps, 0) << "never slept";
-    const RigidbodyVolume& box = w.Body(1);
-    EXPECT_NEAR(box.position.y, 1.0f, 0.03f);  // at rest on the ground, not in the air
-    EXPECT_EQ(w.system.SleepIslands().SleepingCount(), 1u);
-    const std::vector<unsigned char> asleep = Snapshot(w.Bodies());
-    for (int i = 0; i < 120; ++i) {
-        w.system.Update(kDt);
-        EXPECT_EQ(w.system.CollisionCount(), 0u);
+    for (ContactSolver solver : {ContactSolver::Accumulated, ContactSolver::Book}) {
+        SCOPED_TRACE(ToString(solver));
+        RigidWorld w(DroppedBox(2.0f));
+        UseSleep(w.system, true);
+        w.system.settings.contactSolver = solver;
+        const int steps = StepUntilAsleep(w, 1, 1, 600);
+        ASSERT_GT(steps, 0) << "never slept";
+        ASSERT_GT(steps, 30) << "slept before it landed";
+        const RigidbodyVolume& box = w.Body(1);
+        EXPECT_NEAR(box.position.y, 1.0f, 0.03f);  // at rest on the ground, not in the air
+        EXPECT_EQ(w.system.SleepIslands().SleepingCount(), 1u);
+        const std::vector<unsigned char> asleep = Snapshot(w.Bodies());
+        for (int i = 0; i < 120; ++i) {
+            w.system.Update(kDt);
+            EXPECT_EQ(w.system.CollisionCount(), 0u);
+        }
+        EXPECT_TRUE(box.IsSleeping());
+        EXPECT_EQ(Snapshot(w.Bodies()), asleep);
+        EXPECT_EQ(box.velocity.y, 0.0f);
     }
-    EXPECT_TRUE(box.IsSleeping());
-    EXPECT_EQ(Snapshot(w.Bodies()), asleep);
-    EXPECT_EQ(box.velocity.y, 0.0f);
 }
 
 // Sleep off (the default): the same box never sleeps, its sleep time stays 0 and its ground contact is tested every
