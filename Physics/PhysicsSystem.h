@@ -109,6 +109,8 @@ private:
     /// Pair search over volumes only; fills results[0..resultCount). With sleep, a contact between an active and a
     /// sleeping body wakes the sleeping island and the search runs again.
     void FindCollisions(const StepContext& ctx, Islands* sleep);
+    /// One pair search: every pair that can interact and, when `active` is given (one byte per volume), has an active
+    /// body; fills results[0..resultCount) in increasing (indexA, indexB) order.
     void FindPairs(const StepContext& ctx, const unsigned char* active);
     /// Gravity on every volume, turned into this substep's velocity change before the impulses (ch15 note N1).
     void ApplyVolumeForces(const StepContext& ctx, const Islands* sleep);
