@@ -169,7 +169,8 @@ void Islands::EndIslands(const std::vector<RigidbodyVolume*>& volumes, const Sle
     for (std::size_t i = 0; i < n; ++i) {
         if (!active[i]) continue;
         const std::size_t root = static_cast<std::size_t>(Find(static_cast<int>(i)));
-        if (!(islandTime[root] >= settings.timeToSleep)) continue;
+        // Every body slow for at least one step (a sleep time of 0 means fast now, even with timeToSleep <= 0).
+        if (!(islandTime[root] > 0.0f && islandTime[root] >= settings.timeToSleep)) continue;
         RigidbodyVolume& body = *volumes[i];
         body.velocity = vec3();
         body.angVel = vec3();

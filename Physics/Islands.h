@@ -12,7 +12,7 @@
 //   islands.BeginStep(volumes, settings.sleep)      wake checks; true while sleep is in use
 //   find pairs, skipping pairs where !IsActive(a) && !IsActive(b) (ActiveMask() for a broadphase)
 //   islands.WakeTouched(pairs, count)              > 0: islands woke, find the pairs again (their inner pairs)
-//   forces, solve, integrate only bodies with IsActive(i) (or static ones, which do not move)
+//   forces, solve, integrate only bodies with IsAwake(i) (static bodies are awake: they run as without sleep)
 //   islands.Update(volumes, pairs, count, dt, settings.sleep)   once per step, with the step's touching pairs
 // Pairs are any type with int members indexA and indexB (indices into `volumes`), e.g. CollisionPair.
 // With sleep off and nothing asleep, BeginStep returns false and touches nothing.
@@ -54,7 +54,8 @@ public:
 
     /// Once per step, after integration: advances every active body's sleep time by dt (or restarts it), builds
     /// islands by union-find over the pairs of two active bodies in pairs[0..count) and puts to sleep every island
-    /// whose bodies have all been slow for settings.timeToSleep.
+    /// whose bodies have all been slow for settings.timeToSleep (and for at least this step, so timeToSleep <= 0
+    /// puts an island to sleep at the first step all its bodies are slow, never a moving one).
     template <class Pair>
     void Update(const std::vector<RigidbodyVolume*>& volumes, const Pair* pairs, std::size_t count, float dt,
                 const SleepSettings& settings) {

@@ -228,3 +228,16 @@ TEST(Sleep, Deterministic) {
     EXPECT_EQ(a, b);
     EXPECT_EQ(sa, sb);
 }
+
+// timeToSleep 0 still needs slow bodies: a falling box does not sleep in the air, and sleeps once it rests.
+TEST(Sleep, ZeroTimeToSleepNeedsSlowBodies) {
+    RigidWorld w(DroppedBox(2.0f));
+    UseSleep(w.system, true);
+    w.system.settings.sleep.timeToSleep = 0.0f;
+    for (int i = 0; i < 20; ++i) {
+        w.system.Update(kDt);
+        ASSERT_FALSE(w.Body(1).IsSleeping()) << "step " << i;
+    }
+    ASSERT_GT(StepUntilAsleep(w, 1, 1, 600), 0);
+    EXPECT_NEAR(w.Body(1).position.y, 1.0f, 0.03f);
+}
