@@ -28,7 +28,8 @@ void VolumeBounds(const RigidbodyVolume& body, vec3* outMin, vec3* outMax) {
     *outMax = body.position;
 }
 
-void Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::vector<std::pair<int, int>>* pairs) {
+void Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::vector<std::pair<int, int>>* pairs,
+                           const unsigned char* active) {
     pairs->clear();
     const int n = static_cast<int>(volumes.size());
 
@@ -40,7 +41,7 @@ void Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::ve
     for (Entry& e : entries) {
         const RigidbodyVolume& body = *volumes[e.index];
         VolumeBounds(body, &e.min, &e.max);
-        e.dynamic = body.mass > 0.0f;
+        e.dynamic = active != nullptr ? active[e.index] != 0 : body.mass > 0.0f;
     }
     // Insertion sort on min.x (ties by index, so the order is a pure function of the bounds): O(n) when the
     // bodies barely moved since the last step.
@@ -54,12 +55,18 @@ void Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::ve
         }
         entries[j + 1] = key;
     }
-    // Sweep: only bodies whose x intervals overlap are compared on y and z.
+    // Sweep: only bodies whose x intervals overlap are compared on y and z. A body that does not move is paired
+    // only with moving ones, so its sweep jumps from one moving body to the next (nextMoving): static and sleeping
+    // bodies cost O(n) in all, not a pass over their x neighbours.
+    nextMoving.resize(static_cast<std::size_t>(n) + 1);
+    nextMoving[static_cast<std::size_t>(n)] = n;
+    for (int k = n - 1; k >= 0; --k)
+        nextMoving[static_cast<std::size_t>(k)] = entries[k].dynamic ? k : nextMoving[static_cast<std::size_t>(k) + 1];
     for (int i = 0; i < n; ++i) {
         const Entry& a = entries[i];
-        for (int k = i + 1; k < n && entries[k].min.x <= a.max.x; ++k) {
+        auto step = [&](int k) { return a.dynamic ? k + 1 : nextMoving[static_cast<std::size_t>(k) + 1]; };
+        for (int k = step(i); k < n && entries[k].min.x <= a.max.x; k = step(k)) {
             const Entry& b = entries[k];
-            if (!a.dynamic && !b.dynamic) continue;
             if (a.max.y < b.min.y || b.max.y < a.min.y || a.max.z < b.min.z || b.max.z < a.min.z) continue;
             pairs->emplace_back(std::min(a.index, b.index), std::max(a.index, b.index));
         }

@@ -16,9 +16,11 @@ void VolumeBounds(const RigidbodyVolume& body, vec3* outMin, vec3* outMax);
 class Broadphase {
 public:
     /// Replaces *pairs with every (i, j), i < j, whose world AABBs overlap (touching counts) and where at least
-    /// one body is dynamic (mass > 0), in increasing (i, j) order so the solver sees the same order as an
-    /// all-pairs loop. Indices are into `volumes`. Allocation-free once the capacities have grown.
-    void FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::vector<std::pair<int, int>>* pairs);
+    /// one body moves: is dynamic (mass > 0), or, when `active` is given (one byte per volume, islands and sleep),
+    /// has active[i] != 0. In increasing (i, j) order so the solver sees the same order as an all-pairs loop.
+    /// Indices are into `volumes`. Allocation-free once the capacities have grown.
+    void FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::vector<std::pair<int, int>>* pairs,
+                   const unsigned char* active = nullptr);
 
 private:
     struct Entry {
@@ -26,5 +28,6 @@ private:
         int index = 0;
         bool dynamic = false;
     };
-    std::vector<Entry> entries;  // sorted by min.x; order carried over between calls
+    std::vector<Entry> entries;   // sorted by min.x; order carried over between calls
+    std::vector<int> nextMoving;  // per sorted position k: the first position >= k whose body moves (n if none)
 };

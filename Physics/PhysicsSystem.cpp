@@ -30,16 +30,19 @@ void PhysicsSystem::Update(float deltaTime) {
         ctx.h = n == 1 ? deltaTime : deltaTime / static_cast<float>(n);
         ctx.invH = 1.0f / ctx.h;
         lastVolumeSubsteps = n;
+        // Islands and sleep (Islands.h): null while settings.sleep is off, and then nothing below changes.
+        Islands* sleep = islands.BeginStep(volumes, settings.sleep) ? &islands : nullptr;
         for (int s = 0; s < n; ++s) {
             ctx.substep = s;
             ctx.substepSerial = volumeSubstepSerial;
-            FindCollisions(ctx);
-            ApplyVolumeForces(ctx);
+            FindCollisions(ctx, sleep);
+            ApplyVolumeForces(ctx, sleep);
             if (resultCount > 0) ApplyImpulses(ctx);
-            IntegrateVolumes(ctx);
+            IntegrateVolumes(ctx, sleep);
             if (settings.linearProjection && resultCount > 0) ApplyLinearProjection(ctx);
             ++volumeSubstepSerial;
         }
+        if (sleep != nullptr) islands.Update(volumes, results.data(), resultCount, deltaTime, settings.sleep);
     } else {
         resultCount = 0;
         lastVolumeSubsteps = 1;

@@ -19,6 +19,7 @@
 #include "Physics/ContactSolver.h"
 #include "Physics/Geometry/Geometry3D.h"
 #include "Physics/Integrator.h"
+#include "Physics/Islands.h"
 #include "Physics/Rigidbody.h"
 #include "Physics/WorldSettings.h"
 
@@ -82,6 +83,8 @@ public:
     std::size_t CollisionCount() const { return resultCount; }
     /// The Accumulated solver's kept contacts and impulses (empty while settings.contactSolver is Book).
     const AccumulatedContactSolver& AccumulatedSolver() const { return accumulatedSolver; }
+    /// Islands and sleep of the volumes (settings.sleep; untouched while it is off).
+    const Islands& SleepIslands() const { return islands; }
     /// Number of Update calls that advanced the world.
     long long StepCount() const { return stepCount; }
     /// Volume substeps the last Update took (1 unless it had to subdivide; see WorldSettings::maxVolumeSubsteps).
@@ -101,12 +104,18 @@ private:
     /// Free particles, then joints, then cloth particles against the constraints (book order).
     void SolveParticleConstraints();
 
-    // ---- ch15: PhysicsSystemVolumes.cpp (each runs once per volume substep of ctx.h seconds)
-    void FindCollisions(const StepContext& ctx);  ///< pair search over volumes only; fills results[0..resultCount)
+    // ---- ch15: PhysicsSystemVolumes.cpp (each runs once per volume substep of ctx.h seconds). `sleep` is null
+    // with settings.sleep off; otherwise sleeping volumes are not moved and only pairs with an active body are tested.
+    /// Pair search over volumes only; fills results[0..resultCount). With sleep, a contact between an active and a
+    /// sleeping body wakes the sleeping island and the search runs again.
+    void FindCollisions(const StepContext& ctx, Islands* sleep);
+    /// One pair search: every pair that can interact and, when `active` is given (one byte per volume), has an active
+    /// body; fills results[0..resultCount) in increasing (indexA, indexB) order.
+    void FindPairs(const StepContext& ctx, const unsigned char* active);
     /// Gravity on every volume, turned into this substep's velocity change before the impulses (ch15 note N1).
-    void ApplyVolumeForces(const StepContext& ctx);
+    void ApplyVolumeForces(const StepContext& ctx, const Islands* sleep);
     void ApplyImpulses(const StepContext& ctx);
-    void IntegrateVolumes(const StepContext& ctx);
+    void IntegrateVolumes(const StepContext& ctx, const Islands* sleep);
     void ApplyLinearProjection(const StepContext& ctx);
     /// Number of equal volume substeps for a step of dt (1..settings.maxVolumeSubsteps); records a warning when
     /// clamped.
@@ -138,6 +147,7 @@ private:
     std::vector<std::pair<int, int>> candidatePairs;  // broadphase output, capacity reused
     long long stepCount = 0;
     AccumulatedContactSolver accumulatedSolver;  // ch15: arbiter state of ContactSolver::Accumulated
+    Islands islands;                             // settings.sleep: islands, sleep times, sleeping bodies
     long long volumeSubstepSerial = 0;           // volume substeps so far (one per Update without volumes): StepContext
     int lastVolumeSubsteps = 1;
     std::string lastError;

@@ -23,7 +23,18 @@ bool CanInteract(const RigidbodyVolume& a, const RigidbodyVolume& b) {
 
 }  // namespace
 
-void PhysicsSystem::FindCollisions(const StepContext& ctx) {
+void PhysicsSystem::FindCollisions(const StepContext& ctx, Islands* sleep) {
+    if (sleep == nullptr) {
+        FindPairs(ctx, nullptr);
+        return;
+    }
+    // A new contact of an active body with a sleeping one wakes that island; its bodies' contacts among themselves
+    // (not tested while they slept) are then found by searching again. Each pass wakes at least one island.
+    FindPairs(ctx, sleep->ActiveMask());
+    while (sleep->WakeTouched(results.data(), resultCount) > 0) FindPairs(ctx, sleep->ActiveMask());
+}
+
+void PhysicsSystem::FindPairs(const StepContext& ctx, const unsigned char* active) {
     resultCount = 0;
     // Test one pair, writing into the next slot of `results`; a slot is kept (with its contact capacity) even
     // when the pair does not collide, so the steady state allocates nothing.
@@ -38,21 +49,26 @@ void PhysicsSystem::FindCollisions(const StepContext& ctx) {
         slot.indexB = static_cast<int>(j);
         ++resultCount;
     };
+    // With sleep, a pair is tested only when one of its bodies is active (dynamic and awake).
+    auto wanted = [this, active](std::size_t i, std::size_t j) {
+        return CanInteract(*volumes[i], *volumes[j]) && (active == nullptr || active[i] != 0 || active[j] != 0);
+    };
 
     const std::size_t n = volumes.size();
     if (n < ctx.settings.broadphaseMinVolumes) {
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t j = i + 1; j < n; ++j)
-                if (CanInteract(*volumes[i], *volumes[j])) test(i, j);
+                if (wanted(i, j)) test(i, j);
         return;
     }
-    broadphase.FindPairs(volumes, &candidatePairs);
-    for (const std::pair<int, int>& p : candidatePairs)
-        if (CanInteract(*volumes[p.first], *volumes[p.second]))
-            test(static_cast<std::size_t>(p.first), static_cast<std::size_t>(p.second));
+    broadphase.FindPairs(volumes, &candidatePairs, active);
+    for (const std::pair<int, int>& p : candidatePairs) {
+        const std::size_t i = static_cast<std::size_t>(p.first), j = static_cast<std::size_t>(p.second);
+        if (wanted(i, j)) test(i, j);
+    }
 }
 
-void PhysicsSystem::ApplyVolumeForces(const StepContext& ctx) {
+void PhysicsSystem::ApplyVolumeForces(const StepContext& ctx, const Islands* sleep) {
     // ch15 note N1 (docs/ERRATA.md, Chapter 15): the book applies the impulses to the velocity of the previous step
     // and only then adds this step's gravity and moves the body, so the tangential part of g dt always
     // reaches the position before friction can see it: a box creeps down any incline at about g sin(theta) dt
@@ -60,9 +76,11 @@ void PhysicsSystem::ApplyVolumeForces(const StepContext& ctx) {
     // order is kept (forces, impulses, integration), but the forces stage already turns this step's forces
     // into velocity (semi-implicit Euler's first half), so the impulses act on the velocity that will move
     // the body.
-    for (RigidbodyVolume* body : volumes) {
-        body->ApplyForces();
-        body->IntegrateVelocity(ctx.h);
+    // Sleeping bodies get no forces (their velocities stay zero); static ones run as without sleep.
+    for (std::size_t i = 0; i < volumes.size(); ++i) {
+        if (sleep != nullptr && !sleep->IsAwake(static_cast<int>(i))) continue;
+        volumes[i]->ApplyForces();
+        volumes[i]->IntegrateVelocity(ctx.h);
     }
 }
 
@@ -113,8 +131,13 @@ int PhysicsSystem::VolumeSubsteps(float dt) {
     return maxSubsteps;
 }
 
-void PhysicsSystem::IntegrateVolumes(const StepContext& ctx) {
-    for (RigidbodyVolume* body : volumes) body->IntegratePosition(ctx.h);
+void PhysicsSystem::IntegrateVolumes(const StepContext& ctx, const Islands* sleep) {
+    if (sleep == nullptr) {
+        for (RigidbodyVolume* body : volumes) body->IntegratePosition(ctx.h);
+        return;
+    }
+    for (std::size_t i = 0; i < volumes.size(); ++i)
+        if (sleep->IsAwake(static_cast<int>(i))) volumes[i]->IntegratePosition(ctx.h);
 }
 
 void PhysicsSystem::ApplyLinearProjection(const StepContext& ctx) {

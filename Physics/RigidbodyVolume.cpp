@@ -129,9 +129,13 @@ mat3 RigidbodyVolume::InvTensor() const {
     return RotateDiagonal(ToMat3(orientation), inv);
 }
 
-void RigidbodyVolume::AddVelocityChange(const vec3& deltaVelocity) { velocity += deltaVelocity; }
+void RigidbodyVolume::AddVelocityChange(const vec3& deltaVelocity) {
+    WakeUp();
+    velocity += deltaVelocity;
+}
 
 void RigidbodyVolume::AddRotationalImpulse(const vec3& point, const vec3& impulse) {
+    WakeUp();
     angVel += MultiplyVector(Cross(point - position, impulse), InvTensor());
 }
 

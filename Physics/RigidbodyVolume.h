@@ -80,7 +80,19 @@ public:
     /// book does (RAD2DEG then Rotation3x3), and syncs the volumes.
     void SetEulerOrientation(const vec3& radians);
 
+    /// True while this body's island sleeps (WorldSettings::sleep; Islands.h): it is neither moved nor tested
+    /// against other sleeping or static bodies. Always false with sleep off.
+    bool IsSleeping() const { return sleeping; }
+    /// Asks the world to wake this body and its whole island at the start of the next step (AddVelocityChange and
+    /// AddRotationalImpulse call it). Nothing for an awake body.
+    void WakeUp() { sleeping = false; }
+    /// s this body has been slow (below SleepSettings' speeds) while awake; 0 with sleep off.
+    float SleepTime() const { return sleepTime; }
+
 private:
+    friend class Islands;  // keeps `sleeping` and `sleepTime`
+    bool sleeping = false;
+    float sleepTime = 0.0f;
     // StepRetention's last (velocityRetention, referenceStep, dt) and result: pow once per body per distinct
     // step, not per step.
     mutable float retentionKey[3] = {-1.0f, -1.0f, -1.0f};

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <utility>
 #include <vector>
@@ -77,6 +78,29 @@ TEST(Broadphase, FindsExactlyTheOverlappingPairsWithADynamicBody) {
                 expected.emplace_back(i, j);
     bp.FindPairs(ptrs, &pairs);
     EXPECT_EQ(pairs, expected);
+}
+
+// With an active mask (islands and sleep), exactly the overlapping pairs with an active body: a body that does not
+// move (static, or inactive in the mask) is paired only with active ones, so its sweep may skip its x neighbours.
+TEST(Broadphase, ActiveMaskKeepsExactlyThePairsWithAnActiveBody) {
+    std::vector<RigidbodyVolume> bodies = RandomBodies(120, 11);
+    std::vector<RigidbodyVolume*> ptrs;
+    for (RigidbodyVolume& b : bodies) ptrs.push_back(&b);
+    std::vector<unsigned char> active(bodies.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i) active[i] = bodies[i].mass > 0 && i % 4 != 1 ? 1 : 0;
+    std::vector<std::pair<int, int>> expected;
+    for (int i = 0; i < static_cast<int>(bodies.size()); ++i)
+        for (int j = i + 1; j < static_cast<int>(bodies.size()); ++j)
+            if ((active[i] || active[j]) && Overlap(bodies[i], bodies[j])) expected.emplace_back(i, j);
+    ASSERT_GT(expected.size(), 30u);
+    Broadphase bp;
+    std::vector<std::pair<int, int>> pairs;
+    bp.FindPairs(ptrs, &pairs, active.data());
+    EXPECT_EQ(pairs, expected);
+    // Nothing active: no pair at all (a fully asleep world tests nothing).
+    std::fill(active.begin(), active.end(), 0);
+    bp.FindPairs(ptrs, &pairs, active.data());
+    EXPECT_TRUE(pairs.empty());
 }
 
 // The broadphase returns pairs in all-pairs order, so a scene gives bit-identical results either way.

@@ -19,6 +19,7 @@
 #include "Demos/Scenes/JointScene.h"
 #include "Demos/Scenes/MomentumScene.h"
 #include "Demos/Scenes/SpringsScene.h"
+#include "Demos/Scenes/WorldBuilder.h"
 
 namespace {
 std::atomic<bool> g_counting{false};
@@ -133,4 +134,22 @@ TEST(SteadyStateAllocation, SpringsAndJoints) {
                   for (int i = 0; i < kMeasured; ++i) joints.Step(joints.Params().dt);
               }),
               0);
+}
+
+// Islands and sleep (docs/sleep.md): once a pile has settled, steps asleep, an island woken by a velocity change and
+// falling asleep again allocate nothing.
+TEST(SteadyStateAllocation, BoxpileWithSleep) {
+    RigidWorld w(BoxpileScene(200));
+    w.system.settings.contactSolver = ContactSolver::Accumulated;
+    w.system.settings.solverIterations = 10;
+    w.system.settings.sleep.enabled = true;
+    for (int i = 0; i < 1500; ++i) w.system.Update(1.0f / 60.0f);
+    ASSERT_EQ(w.system.SleepIslands().SleepingCount(), 200u) << "the pile should have settled";
+    EXPECT_EQ(AllocationsDuring([&] {
+                  for (int i = 0; i < 60; ++i) w.system.Update(1.0f / 60.0f);
+                  w.Body(5).AddVelocityChange(vec3(0.0f, 2.0f, 0.0f));
+                  for (int i = 0; i < 240; ++i) w.system.Update(1.0f / 60.0f);
+              }),
+              0);
+    EXPECT_LT(w.system.SleepIslands().SleepingCount(), 200u) << "the velocity change should have woken an island";
 }
