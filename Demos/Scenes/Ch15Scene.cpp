@@ -40,6 +40,7 @@ void Ch15Scene::ApplySettings() {
     system->DebugRender = params.debugRender;
     system->settings.contactSolver = ContactSolverAt(params.solver);
     system->settings.soft = params.soft;
+    system->settings.sleep.enabled = params.sleep;
 }
 
 void Ch15Scene::Step(float dt) {
@@ -67,7 +68,7 @@ void Ch15Scene::AddParameters(ParameterSet* set) {
         .OnPanel(Widget::Checkbox("Debug Render").SameLine());
     set->AddBool("linear-projection", &params.linearProjection, "DoLinearProjection: positional correction", apply)
         .OnPanel(Widget::Checkbox("Linear Projection").SameLine());
-    AddContactSolverParameters(set, &params.solver, &params.soft,
+    AddContactSolverParameters(set, &params.solver, &params.soft, &params.sleep,
                                "contact solver: the book's per-contact impulses, accumulated impulses (stacks stand) "
                                "or the soft step",
                                apply);

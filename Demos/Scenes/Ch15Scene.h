@@ -25,6 +25,8 @@ struct Ch15Params {
     int solver = 0;
     /// WorldSettings::soft, used when solver is soft (`--set soft-substeps=...`, ContactSolverParameters.h).
     SoftSolverSettings soft;
+    /// Islands and sleep (WorldSettings::sleep.enabled, `--set sleep=1`); off, as in the book.
+    bool sleep = false;
 };
 
 class Ch15Scene {

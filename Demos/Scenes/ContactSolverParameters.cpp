@@ -20,7 +20,7 @@ int ContactSolverIndex(ContactSolver solver) {
     return 0;
 }
 
-void AddContactSolverParameters(ParameterSet* set, int* solverIndex, SoftSolverSettings* soft,
+void AddContactSolverParameters(ParameterSet* set, int* solverIndex, SoftSolverSettings* soft, bool* sleep,
                                 const std::string& solverHelp, const std::function<void()>& onChange) {
     using L = SoftSolverLimits;
     set->AddChoice("solver", solverIndex, ContactSolverChoices(), solverHelp, onChange);
@@ -35,6 +35,8 @@ void AddContactSolverParameters(ParameterSet* set, int* solverIndex, SoftSolverS
                   "soft solver: damping ratio of the contact spring (1 critical)", onChange);
     set->AddFloat("soft-max-pushout-speed", &soft->maxPushoutSpeed, 0.0f, L::kMaxPushoutSpeed,
                   "soft solver: fastest push-out of a penetrating contact (m/s)", onChange);
+    set->AddBool("sleep", sleep, "islands of slow bodies sleep until touched, pushed or changed (docs/sleep.md)",
+                 onChange);
 }
 
 std::string ContactSolverRow(ContactSolver solver, const SoftSolverSettings& soft) {

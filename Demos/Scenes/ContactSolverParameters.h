@@ -30,8 +30,9 @@ struct SoftSolverLimits {
 
 /// Registers "solver" (a choice bound to *solverIndex, help `solverHelp`) and the soft solver's settings a user
 /// tunes: soft-substeps, soft-iterations, soft-relax-iterations, soft-contact-hertz, soft-contact-damping-ratio,
-/// soft-max-pushout-speed (bound to *soft). onChange runs after each successful --set.
-void AddContactSolverParameters(ParameterSet* set, int* solverIndex, SoftSolverSettings* soft,
+/// soft-max-pushout-speed (bound to *soft), and "sleep" (islands and sleep on or off, bound to *sleep,
+/// WorldSettings::sleep.enabled; docs/sleep.md). onChange runs after each successful --set.
+void AddContactSolverParameters(ParameterSet* set, int* solverIndex, SoftSolverSettings* soft, bool* sleep,
                                 const std::string& solverHelp, const std::function<void()>& onChange);
 
 /// The panel row naming a non-book solver in effect ("Contact solver: accumulated", "Contact solver: soft, 4

@@ -48,7 +48,7 @@ void FileScene::AddParameters(ParameterSet* set) {
     std::vector<std::string> integrators;
     for (Integrator i : kAllIntegrators) integrators.emplace_back(ToString(i));
     set->AddChoice("integrator", &integratorChoice, integrators, "how particles are integrated", apply);
-    AddContactSolverParameters(set, &solverChoice, &w.soft,
+    AddContactSolverParameters(set, &solverChoice, &w.soft, &w.sleep.enabled,
                                "contact solver: the book's per-contact impulses, accumulated impulses or the soft step",
                                apply);
     set->AddInt("iterations", &w.iterations, 1, SceneLimits::kMaxIterations, "contact solver passes per step", apply);

@@ -37,6 +37,7 @@ void LinearImpulseScene::Reset() {
 void LinearImpulseScene::ApplySolverSettings() {
     system->settings.contactSolver = ContactSolverAt(params.solver);
     system->settings.soft = params.soft;
+    system->settings.sleep.enabled = params.sleep;
 }
 
 void LinearImpulseScene::RequestSteps() { pendingSteps = params.frames; }
@@ -68,7 +69,7 @@ void LinearImpulseScene::AddParameters(ParameterSet* set) {
     set->AddBool("drop", &params.drop, "drop the bodies onto each other instead of throwing them (resets)",
                  [this] { Reset(); })
         .OnPanel(Widget::Checkbox("Drop").SameLine().AppliesAtOnce());
-    AddContactSolverParameters(set, &params.solver, &params.soft,
+    AddContactSolverParameters(set, &params.solver, &params.soft, &params.sleep,
                                "contact solver: the book's per-contact impulses, accumulated impulses or the soft step",
                                [this] { ApplySolverSettings(); });
 }

@@ -21,6 +21,8 @@ struct LinearImpulseParams {
     int solver = 0;
     /// WorldSettings::soft, used when solver is soft (`--set soft-substeps=...`, ContactSolverParameters.h).
     SoftSolverSettings soft;
+    /// Islands and sleep (WorldSettings::sleep.enabled, `--set sleep=1`); off, as in the book.
+    bool sleep = false;
 };
 
 class LinearImpulseScene {

@@ -38,6 +38,7 @@ void MomentumScene::Reset() {
 void MomentumScene::ApplySolverSettings() {
     system->settings.contactSolver = ContactSolverAt(params.solver);
     system->settings.soft = params.soft;
+    system->settings.sleep.enabled = params.sleep;
 }
 
 void MomentumScene::Step(float dt) { system->Update(dt); }
@@ -46,7 +47,7 @@ void MomentumScene::AddParameters(ParameterSet* set) {
     set->AddAction(
            "reset", [this] { Reset(); }, "rebuild the scene")
         .OnPanel(ParameterSet::Widget::Button("Reset"));
-    AddContactSolverParameters(set, &params.solver, &params.soft,
+    AddContactSolverParameters(set, &params.solver, &params.soft, &params.sleep,
                                "contact solver: the book's per-contact impulses, accumulated impulses or the soft step",
                                [this] { ApplySolverSettings(); });
 }

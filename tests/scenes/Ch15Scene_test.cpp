@@ -126,9 +126,12 @@ TEST(Ch15Scene, SoftSolverAndItsSettingsReachTheSystem) {
     ASSERT_TRUE(set.Set("soft-max-pushout-speed", "0.5", &error)) << error;
     ASSERT_TRUE(set.Set("soft-iterations", "3", &error)) << error;
     ASSERT_TRUE(set.Set("soft-relax-iterations", "0", &error)) << error;
+    EXPECT_FALSE(scene.System().settings.sleep.enabled);  // off, as in the book, until asked for
+    ASSERT_TRUE(set.Set("sleep", "1", &error)) << error;
     auto expectSoft = [&scene](const char* when) {
         const WorldSettings& s = scene.System().settings;
         EXPECT_EQ(s.contactSolver, ContactSolver::Soft) << when;
+        EXPECT_TRUE(s.sleep.enabled) << when;
         EXPECT_EQ(s.soft.substeps, 8) << when;
         EXPECT_EQ(s.soft.contactHertz, 60.0f) << when;
         EXPECT_EQ(s.soft.contactDampingRatio, 2.0f) << when;

@@ -25,9 +25,10 @@ TEST(ContactSolverParameters, ChoicesFollowTheEnumOrder) {
 TEST(ContactSolverParameters, KeysAreBoundToTheSettingsWithTheirRanges) {
     int solver = 0;
     SoftSolverSettings soft;
+    bool sleep = false;
     int changes = 0;
     ParameterSet set;
-    AddContactSolverParameters(&set, &solver, &soft, "help", [&changes] { ++changes; });
+    AddContactSolverParameters(&set, &solver, &soft, &sleep, "help", [&changes] { ++changes; });
     std::string error;
     ASSERT_TRUE(set.Set("solver", "soft", &error)) << error;
     EXPECT_EQ(ContactSolverAt(solver), ContactSolver::Soft);
@@ -41,8 +42,11 @@ TEST(ContactSolverParameters, KeysAreBoundToTheSettingsWithTheirRanges) {
     EXPECT_FALSE(set.Set("soft-contact-damping-ratio", "-1", &error));
     EXPECT_FALSE(set.Set("soft-max-pushout-speed", "nan", &error));
     EXPECT_EQ(changes, 3);
+    ASSERT_TRUE(set.Set("sleep", "1", &error)) << error;
+    EXPECT_TRUE(sleep);
+    EXPECT_EQ(changes, 4);
     for (const char* key : {"solver", "soft-substeps", "soft-iterations", "soft-relax-iterations", "soft-contact-hertz",
-                            "soft-contact-damping-ratio", "soft-max-pushout-speed"}) {
+                            "soft-contact-damping-ratio", "soft-max-pushout-speed", "sleep"}) {
         const ParameterSet::Entry* e = set.Find(key);
         ASSERT_NE(e, nullptr) << key;
         EXPECT_EQ(e->widget.type, ParameterSet::Widget::Type::None) << key << ": not a book widget";
