@@ -17,8 +17,11 @@ class Broadphase {
 public:
     /// Replaces *pairs with every (i, j), i < j, whose world AABBs overlap (touching counts) and where at least
     /// one body is dynamic (mass > 0), in increasing (i, j) order so the solver sees the same order as an
-    /// all-pairs loop. Indices are into `volumes`. Allocation-free once the capacities have grown.
-    void FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::vector<std::pair<int, int>>* pairs);
+    /// all-pairs loop. Indices are into `volumes`. Every AABB is first grown on each side by `margin` (m) plus
+    /// the body's speed times `sweepTime` (s): the soft solver's speculative margin and the step's travel (both 0
+    /// test the bodies' own AABBs). Allocation-free once the capacities have grown.
+    void FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::vector<std::pair<int, int>>* pairs,
+                   float margin = 0.0f, float sweepTime = 0.0f);
 
 private:
     struct Entry {

@@ -20,6 +20,7 @@
 #include "Physics/Geometry/Geometry3D.h"
 #include "Physics/Integrator.h"
 #include "Physics/Rigidbody.h"
+#include "Physics/SoftSolver.h"
 #include "Physics/WorldSettings.h"
 
 class Particle;
@@ -82,6 +83,8 @@ public:
     std::size_t CollisionCount() const { return resultCount; }
     /// The Accumulated solver's kept contacts and impulses (empty while settings.contactSolver is Book).
     const AccumulatedContactSolver& AccumulatedSolver() const { return accumulatedSolver; }
+    /// The Soft solver's contacts and impulses of the last step (empty unless settings.contactSolver is Soft).
+    const SoftContactSolver& SoftSolver() const { return softSolver; }
     /// Number of Update calls that advanced the world.
     long long StepCount() const { return stepCount; }
     /// Volume substeps the last Update took (1 unless it had to subdivide; see WorldSettings::maxVolumeSubsteps).
@@ -111,6 +114,9 @@ private:
     /// Number of equal volume substeps for a step of dt (1..settings.maxVolumeSubsteps); records a warning when
     /// clamped.
     int VolumeSubsteps(float dt);
+    /// ContactSolver::Soft: the whole volume step (pair search with AABBs grown by the speculative margin, then
+    /// SoftContactSolver::Step in settings.soft.substeps substeps). Fills ctx's substep fields.
+    void StepSoftVolumes(StepContext& ctx);
 
     // ---- ch16: PhysicsSystemSoft.cpp
     /// Adds the force of every spring (system and cloth) to its particles' `forces`.
@@ -138,6 +144,7 @@ private:
     std::vector<std::pair<int, int>> candidatePairs;  // broadphase output, capacity reused
     long long stepCount = 0;
     AccumulatedContactSolver accumulatedSolver;  // ch15: arbiter state of ContactSolver::Accumulated
+    SoftContactSolver softSolver;                // ch15: contacts and body state of ContactSolver::Soft
     long long volumeSubstepSerial = 0;           // volume substeps so far (one per Update without volumes): StepContext
     int lastVolumeSubsteps = 1;
     std::string lastError;
