@@ -8,7 +8,8 @@
 //
 // Stages live in the file of the chapter that introduced them:
 //   PhysicsSystemParticles.cpp (ch14)  particle forces, integration, constraint solving
-//   PhysicsSystemVolumes.cpp   (ch15)  broadphase + manifolds, impulses, volume integration, projection
+//   PhysicsSystemVolumes.cpp   (ch15)  broadphase + manifolds, impulses, volume integration, projection; the
+//                                      soft step's pair search (SoftSolver.h does the rest)
 //   PhysicsSystemSoft.cpp      (ch16)  spring and cloth forces, distance joints
 
 #include <cstddef>

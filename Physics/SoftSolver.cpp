@@ -1,5 +1,5 @@
-// ContactSolver::Soft (SoftSolver.h; docs/ch15.md, "The soft-step solver"): soft contact constraints solved in
-// substeps with a relax pass, written from the published soft-step idea (Catto, "Solver2D", 2024: soft step).
+// ContactSolver::Soft (SoftSolver.h): soft contact constraints solved in substeps with a relax pass; the design and
+// the measured figures are in docs/ch15.md, "The soft-step solver".
 #include "Physics/SoftSolver.h"
 
 #include <algorithm>
@@ -78,8 +78,8 @@ void CollideVolumes(const RigidbodyVolume& a, const RigidbodyVolume& b, float ma
 }  // namespace
 
 Softness MakeSoftness(float hertz, float zeta, float h) {
-    // Implicit spring-damper over one step (Catto, "Solver2D: soft step"): omega = 2 pi f, a1 = 2 zeta + h omega,
-    // a2 = h omega a1, a3 = 1 / (1 + a2); bias rate omega / a1, mass scale a2 a3, impulse scale a3.
+    // Implicit spring-damper over one step (docs/ch15.md, "The soft-step solver"): omega = 2 pi f, a1 = 2 zeta + h
+    // omega, a2 = h omega a1, a3 = 1 / (1 + a2); bias rate omega / a1, mass scale a2 a3, impulse scale a3.
     Softness s;
     if (!(hertz > 0.0f) || !(h > 0.0f)) return s;
     const float omega = 2.0f * kPi * hertz;
