@@ -29,7 +29,7 @@ void VolumeBounds(const RigidbodyVolume& body, vec3* outMin, vec3* outMax) {
 }
 
 void Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::vector<std::pair<int, int>>* pairs,
-                           const unsigned char* active) {
+                           const unsigned char* active, float margin, float sweepTime) {
     pairs->clear();
     const int n = static_cast<int>(volumes.size());
 
@@ -41,6 +41,11 @@ void Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::ve
     for (Entry& e : entries) {
         const RigidbodyVolume& body = *volumes[e.index];
         VolumeBounds(body, &e.min, &e.max);
+        if (margin > 0.0f || sweepTime > 0.0f) {
+            const float grow = margin + std::sqrt(MagnitudeSq(body.velocity)) * sweepTime;
+            e.min -= vec3(grow, grow, grow);
+            e.max += vec3(grow, grow, grow);
+        }
         e.dynamic = active != nullptr ? active[e.index] != 0 : body.mass > 0.0f;
     }
     // Insertion sort on min.x (ties by index, so the order is a pure function of the bounds): O(n) when the

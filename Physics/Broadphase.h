@@ -18,9 +18,11 @@ public:
     /// Replaces *pairs with every (i, j), i < j, whose world AABBs overlap (touching counts) and where at least
     /// one body moves: is dynamic (mass > 0), or, when `active` is given (one byte per volume, islands and sleep),
     /// has active[i] != 0. In increasing (i, j) order so the solver sees the same order as an all-pairs loop.
-    /// Indices are into `volumes`. Allocation-free once the capacities have grown.
+    /// Indices are into `volumes`. Every AABB is first grown on each side by `margin` (m) plus the body's speed
+    /// times `sweepTime` (s): the soft solver's speculative margin and the step's travel (both 0 test the bodies'
+    /// own AABBs). Allocation-free once the capacities have grown.
     void FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::vector<std::pair<int, int>>* pairs,
-                   const unsigned char* active = nullptr);
+                   const unsigned char* active = nullptr, float margin = 0.0f, float sweepTime = 0.0f);
 
 private:
     struct Entry {

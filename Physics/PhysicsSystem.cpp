@@ -24,7 +24,9 @@ void PhysicsSystem::Update(float deltaTime) {
     // a dt-free impulse after it), so every integrator sees them at its own intermediate states.
     // Volumes step in n equal substeps when one step would carry a volume through another (VolumeSubsteps);
     // n = 1 is the book's single step, with dt passed through unchanged.
-    if (!volumes.empty()) {
+    if (!volumes.empty() && settings.contactSolver == ContactSolver::Soft) {
+        StepSoftVolumes(ctx);
+    } else if (!volumes.empty()) {
         const int n = VolumeSubsteps(deltaTime);
         ctx.substepCount = n;
         ctx.h = n == 1 ? deltaTime : deltaTime / static_cast<float>(n);
@@ -150,6 +152,7 @@ void PhysicsSystem::ClearRigidbodys() {
     joints.clear();
     others.clear();
     resultCount = 0;
+    softSolver.Clear();
     RebuildParticleList();
 }
 void PhysicsSystem::ClearConstraints() { constraints.clear(); }

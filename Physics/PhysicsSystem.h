@@ -8,7 +8,8 @@
 //
 // Stages live in the file of the chapter that introduced them:
 //   PhysicsSystemParticles.cpp (ch14)  particle forces, integration, constraint solving
-//   PhysicsSystemVolumes.cpp   (ch15)  broadphase + manifolds, impulses, volume integration, projection
+//   PhysicsSystemVolumes.cpp   (ch15)  broadphase + manifolds, impulses, volume integration, projection; the
+//                                      soft step's pair search (SoftSolver.h does the rest)
 //   PhysicsSystemSoft.cpp      (ch16)  spring and cloth forces, distance joints
 
 #include <cstddef>
@@ -21,6 +22,7 @@
 #include "Physics/Integrator.h"
 #include "Physics/Islands.h"
 #include "Physics/Rigidbody.h"
+#include "Physics/SoftSolver.h"
 #include "Physics/WorldSettings.h"
 
 class Particle;
@@ -85,6 +87,8 @@ public:
     const AccumulatedContactSolver& AccumulatedSolver() const { return accumulatedSolver; }
     /// Islands and sleep of the volumes (settings.sleep; untouched while it is off).
     const Islands& SleepIslands() const { return islands; }
+    /// The Soft solver's contacts and impulses of the last step (empty unless settings.contactSolver is Soft).
+    const SoftContactSolver& SoftSolver() const { return softSolver; }
     /// Number of Update calls that advanced the world.
     long long StepCount() const { return stepCount; }
     /// Volume substeps the last Update took (1 unless it had to subdivide; see WorldSettings::maxVolumeSubsteps).
@@ -120,6 +124,9 @@ private:
     /// Number of equal volume substeps for a step of dt (1..settings.maxVolumeSubsteps); records a warning when
     /// clamped.
     int VolumeSubsteps(float dt);
+    /// ContactSolver::Soft: the whole volume step (pair search with AABBs grown by the speculative margin, then
+    /// SoftContactSolver::Step in settings.soft.substeps substeps). Fills ctx's substep fields.
+    void StepSoftVolumes(StepContext& ctx);
 
     // ---- ch16: PhysicsSystemSoft.cpp
     /// Adds the force of every spring (system and cloth) to its particles' `forces`.
@@ -148,6 +155,7 @@ private:
     long long stepCount = 0;
     AccumulatedContactSolver accumulatedSolver;  // ch15: arbiter state of ContactSolver::Accumulated
     Islands islands;                             // settings.sleep: islands, sleep times, sleeping bodies
+    SoftContactSolver softSolver;                // ch15: contacts and body state of ContactSolver::Soft
     long long volumeSubstepSerial = 0;           // volume substeps so far (one per Update without volumes): StepContext
     int lastVolumeSubsteps = 1;
     std::string lastError;

@@ -68,6 +68,33 @@ void PhysicsSystem::FindPairs(const StepContext& ctx, const unsigned char* activ
     }
 }
 
+void PhysicsSystem::StepSoftVolumes(StepContext& ctx) {
+    // The soft step (docs/ch15.md, "The soft-step solver"): pairs are found once per step, with every AABB grown
+    // by the speculative margin and the body's travel over the step, so that contacts about to touch are solved
+    // before they do; no travel split, no linear projection (the solver's substeps and soft bias replace both).
+    const int n = std::max(settings.soft.substeps, 1);
+    ctx.substepCount = n;
+    ctx.h = ctx.dt / static_cast<float>(n);
+    ctx.invH = 1.0f / ctx.h;
+    ctx.substep = 0;
+    ctx.substepSerial = volumeSubstepSerial;
+    lastVolumeSubsteps = n;
+    resultCount = 0;  // Collisions() holds the book's manifolds, which this path does not compute
+
+    candidatePairs.clear();
+    const std::size_t count = volumes.size();
+    if (count < settings.broadphaseMinVolumes) {
+        for (std::size_t i = 0; i < count; ++i)
+            for (std::size_t j = i + 1; j < count; ++j)
+                if (CanInteract(*volumes[i], *volumes[j]))
+                    candidatePairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
+    } else {
+        broadphase.FindPairs(volumes, &candidatePairs, nullptr, std::max(settings.soft.speculativeMargin, 0.0f), ctx.dt);
+    }
+    softSolver.Step(volumes, candidatePairs, ctx);
+    volumeSubstepSerial += n;
+}
+
 void PhysicsSystem::ApplyVolumeForces(const StepContext& ctx, const Islands* sleep) {
     // ch15 note N1 (docs/ERRATA.md, Chapter 15): the book applies the impulses to the velocity of the previous step
     // and only then adds this step's gravity and moves the body, so the tangential part of g dt always

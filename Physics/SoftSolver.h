@@ -1,0 +1,121 @@
+#pragma once
+// ContactSolver::Soft: a soft step for rigid volumes (docs/ch15.md, "The soft-step solver"). Once per step the
+// candidate pairs are collided with a speculative margin (ContactManifold.h), each point is matched by feature id
+// to last step's contact of the same pair (warm start), and every contact is prepared with anchors fixed for the
+// step. Then per substep of h = dt / substeps: integrate velocities, warm start, biased soft solve, integrate
+// positions, relax without bias; restitution once after the substeps; impulses kept for the next step.
+//
+// Data-oriented: the step works on contiguous arrays of per-body solver state and contact constraints, in fixed
+// orders (deterministic); storage is reused from step to step, so the steady state allocates nothing.
+
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "Math/matrices.h"
+#include "Math/quaternion.h"
+#include "Math/vectors.h"
+
+class RigidbodyVolume;
+struct StepContext;
+
+/// Contact softness of one substep (a spring of `hertz` and damping ratio `zeta` over a step of h, implicit):
+/// the bias rate (1/s) that turns a separation into a target speed, and the mass and impulse scales that blend
+/// the rigid solve with the previous impulse. hertz 0 is rigid (bias 0, mass scale 1, impulse scale 0).
+struct Softness {
+    float biasRate = 0.0f;
+    float massScale = 1.0f;
+    float impulseScale = 0.0f;
+};
+/// Softness for a contact spring of `hertz` (Hz) and damping ratio `zeta` over a substep of h seconds.
+Softness MakeSoftness(float hertz, float zeta, float h);
+
+class SoftContactSolver {
+public:
+    /// Advances every volume by one step of ctx.dt in ctx.substepCount substeps of ctx.h (ctx.settings.soft).
+    /// `candidates` are pairs (i, j), i < j, of indices into `volumes` in increasing order (broadphase output,
+    /// AABBs grown by the speculative margin); pairs of two static bodies are skipped. Impulses are carried over
+    /// only from the step just before (ctx.step one more than at the last Step).
+    void Step(const std::vector<RigidbodyVolume*>& volumes, const std::vector<std::pair<int, int>>& candidates,
+              const StepContext& ctx);
+    /// Forgets every kept contact (the next Step starts cold).
+    void Clear();
+
+    /// Touching (or speculative) pairs and contact points of the last Step, and how many points inherited an
+    /// impulse from a contact of the same pair with the same feature id.
+    std::size_t PairCount() const { return pairs.size(); }
+    std::size_t ContactCount() const { return contacts.size(); }
+    std::size_t WarmStartedCount() const { return warmStarted; }
+    /// Normal impulse of the last substep summed over every contact of the last Step, N s.
+    float TotalNormalImpulse() const;
+    /// Deepest penetration (m, >= 0) over the contacts found at the start of the last Step.
+    float DeepestPenetration() const;
+
+    /// One row of a contact (normal or tangent direction d): the angular Jacobians and their images under the
+    /// world inverse inertias, so solving needs no matrix product.
+    struct Row {
+        vec3 rAxD, rBxD;       // rA x d, rB x d
+        vec3 iArAxD, iBrBxD;   // IA^-1 (rA x d), IB^-1 (rB x d)
+        float mass = 0.0f;     // 1 / effective inverse mass along d, kg
+        float impulse = 0.0f;  // accumulated this substep, N s
+    };
+    struct Contact {
+        vec3 rA, rB;  // anchors from the body centres at the start of the step, world, m
+        Row normal, tangent1, tangent2;
+        float baseSeparation = 0.0f;    // separation - n . (rB - rA): the separation with the step's offsets removed
+        float separation = 0.0f;        // from the manifold, m (< 0 penetrating)
+        float relativeVelocity = 0.0f;  // normal speed before solving, m/s (restitution)
+        float maxNormalImpulse = 0.0f;  // largest total normal impulse of the step, N s
+        std::uint32_t id = 0;           // feature id (ContactManifold.h)
+    };
+    struct Pair {
+        int a = -1, b = -1;                      // indices into the volumes
+        const RigidbodyVolume* bodyA = nullptr;  // identity check only (a changed body list inherits nothing)
+        const RigidbodyVolume* bodyB = nullptr;
+        vec3 n, t1, t2;                    // normal from a to b, tangent basis
+        float friction = 0.0f;             // sqrt(muA muB)
+        float restitution = 0.0f;          // min(eA, eB)
+        bool touchesStatic = false;        // one body is static: the stiffer static softness applies
+        std::size_t first = 0, count = 0;  // contacts[first, first + count)
+    };
+    /// Per-body solver state of the step (hot: read and written every pass).
+    struct BodyState {
+        vec3 v, w;  // linear (m/s) and angular (rad/s) velocity, world
+        vec3 dp;    // position change since the step began, m
+        mat3 dR;    // rotation since the step began (row-vector form)
+    };
+    /// Per-body constants of the step and its pose.
+    struct BodySim {
+        vec3 p;             // position, m
+        quat q, q0;         // orientation now and at the start of the step
+        mat3 invI;          // world inverse inertia at the start of the step (zero for static)
+        vec3 gravity;       // m/s^2 (zero for static)
+        vec3 angularAccel;  // I^-1 torque, rad/s^2
+        float invMass = 0.0f;
+        float retention = 1.0f;  // velocity kept per substep (FactorOverStep of the body's retention)
+        float epsilon = 0.0f;    // velocity components below this are zeroed per substep
+        bool dynamic = false;
+    };
+
+private:
+    void LoadBodies(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx);
+    void Collide(const std::vector<RigidbodyVolume*>& volumes, const std::vector<std::pair<int, int>>& candidates,
+                 const StepContext& ctx, bool carryOver);
+    void Prepare(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx);
+    // The two per-body loops of a substep: each lives here only.
+    void IntegrateVelocities(const StepContext& ctx);
+    void IntegratePositions(const StepContext& ctx);
+    void WarmStart();
+    void Solve(float invH, const Softness& softness, const Softness& staticSoftness, float maxPushout, float slop,
+               bool useBias);
+    void ApplyRestitution(float threshold);
+    void StoreBodies(const std::vector<RigidbodyVolume*>& volumes);
+
+    std::vector<BodyState> state;
+    std::vector<BodySim> sim;
+    std::vector<Pair> pairs, previousPairs;
+    std::vector<Contact> contacts, previousContacts;
+    std::size_t warmStarted = 0;
+    long long lastStep = -2;
+};
