@@ -18,6 +18,7 @@
 // With sleep off and nothing asleep, BeginStep returns false and touches nothing.
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "Math/quaternion.h"
@@ -52,6 +53,13 @@ public:
         return woken;
     }
 
+    /// WakeTouched for (indexA, indexB) pairs as a broadphase writes them.
+    int WakeTouched(const std::pair<int, int>* pairs, std::size_t count) {
+        int woken = 0;
+        for (std::size_t k = 0; k < count; ++k) woken += WakeTouchedPair(pairs[k].first, pairs[k].second);
+        return woken;
+    }
+
     /// Once per step, after integration: advances every active body's sleep time by dt (or restarts it), builds
     /// islands by union-find over the pairs of two active bodies in pairs[0..count) and puts to sleep every island
     /// whose bodies have all been slow for settings.timeToSleep (and for at least this step, so timeToSleep <= 0
@@ -61,6 +69,15 @@ public:
                 const SleepSettings& settings) {
         BeginIslands(volumes, dt, settings);
         for (std::size_t k = 0; k < count; ++k) Link(pairs[k].indexA, pairs[k].indexB);
+        EndIslands(volumes, settings);
+    }
+
+    /// Update for a step path that hands its touching pairs one by one: BeginUpdate, Link per pair, EndUpdate.
+    void BeginUpdate(const std::vector<RigidbodyVolume*>& volumes, float dt, const SleepSettings& settings) {
+        BeginIslands(volumes, dt, settings);
+    }
+    void LinkPair(int a, int b) { Link(a, b); }
+    void EndUpdate(const std::vector<RigidbodyVolume*>& volumes, const SleepSettings& settings) {
         EndIslands(volumes, settings);
     }
 

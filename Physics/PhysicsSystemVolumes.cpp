@@ -81,17 +81,46 @@ void PhysicsSystem::StepSoftVolumes(StepContext& ctx) {
     lastVolumeSubsteps = n;
     resultCount = 0;  // Collisions() holds the book's manifolds, which this path does not compute
 
-    candidatePairs.clear();
+    // Islands and sleep (Islands.h): null while settings.sleep is off. Sleeping bodies are held like static ones;
+    // a pair is searched only when one body is active, and a sleeping island whose grown AABB box meets an active
+    // body's is woken before the solve (then the search runs again for its own pairs).
+    Islands* sleep = islands.BeginStep(volumes, settings.sleep) ? &islands : nullptr;
+    const unsigned char* active = sleep != nullptr ? sleep->ActiveMask() : nullptr;
+    const float margin = std::max(settings.soft.speculativeMargin, 0.0f);
     const std::size_t count = volumes.size();
-    if (count < settings.broadphaseMinVolumes) {
-        for (std::size_t i = 0; i < count; ++i)
-            for (std::size_t j = i + 1; j < count; ++j)
-                if (CanInteract(*volumes[i], *volumes[j]))
-                    candidatePairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
-    } else {
-        broadphase.FindPairs(volumes, &candidatePairs, nullptr, std::max(settings.soft.speculativeMargin, 0.0f), ctx.dt);
+    // With sleep on, the all-pairs loop also asks for overlapping grown boxes (as the broadphase does), since its
+    // pairs decide which islands wake; the solver's own test is stricter, so its contacts are the same.
+    auto near = [&](std::size_t i, std::size_t j) {
+        if (sleep == nullptr) return true;
+        vec3 minA, maxA, minB, maxB;
+        VolumeBounds(*volumes[i], &minA, &maxA);
+        VolumeBounds(*volumes[j], &minB, &maxB);
+        const float grow = 2.0f * margin + (Magnitude(volumes[i]->velocity) + Magnitude(volumes[j]->velocity)) * ctx.dt;
+        for (int k = 0; k < 3; ++k)
+            if (minA[k] - grow > maxB[k] || minB[k] - grow > maxA[k]) return false;
+        return true;
+    };
+    auto search = [&] {
+        candidatePairs.clear();
+        if (count < settings.broadphaseMinVolumes) {
+            for (std::size_t i = 0; i < count; ++i)
+                for (std::size_t j = i + 1; j < count; ++j)
+                    if (CanInteract(*volumes[i], *volumes[j]) && (active == nullptr || active[i] || active[j]) &&
+                        near(i, j))
+                        candidatePairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
+        } else {
+            broadphase.FindPairs(volumes, &candidatePairs, active, margin, ctx.dt);
+        }
+    };
+    search();
+    if (sleep != nullptr)
+        while (sleep->WakeTouched(candidatePairs.data(), candidatePairs.size()) > 0) search();
+    softSolver.Step(volumes, candidatePairs, ctx, active);
+    if (sleep != nullptr) {
+        islands.BeginUpdate(volumes, ctx.dt, settings.sleep);
+        softSolver.ForEachTouchingPair([this](int a, int b) { islands.LinkPair(a, b); });
+        islands.EndUpdate(volumes, settings.sleep);
     }
-    softSolver.Step(volumes, candidatePairs, ctx);
     volumeSubstepSerial += n;
 }
 

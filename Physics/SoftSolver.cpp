@@ -114,12 +114,13 @@ float SoftContactSolver::DeepestPenetration() const {
 }
 
 void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
-                             const std::vector<std::pair<int, int>>& candidates, const StepContext& ctx) {
+                             const std::vector<std::pair<int, int>>& candidates, const StepContext& ctx,
+                             const unsigned char* active) {
     const SoftSolverSettings& soft = ctx.settings.soft;
     const bool carryOver = ctx.step == lastStep + 1;
     lastStep = ctx.step;
 
-    LoadBodies(volumes, ctx);
+    LoadBodies(volumes, ctx, active);
     Collide(volumes, candidates, ctx, carryOver);
     Prepare(volumes, ctx);
 
@@ -142,7 +143,8 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
     StoreBodies(volumes);
 }
 
-void SoftContactSolver::LoadBodies(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx) {
+void SoftContactSolver::LoadBodies(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx,
+                                   const unsigned char* active) {
     const std::size_t n = volumes.size();
     if (state.size() != n) {
         state.resize(n);
@@ -152,7 +154,8 @@ void SoftContactSolver::LoadBodies(const std::vector<RigidbodyVolume*>& volumes,
         const RigidbodyVolume& body = *volumes[i];
         BodyState& st = state[i];
         BodySim& bs = sim[i];
-        bs.dynamic = body.HasVolume() && body.mass > 0.0f;
+        // A sleeping body (active[i] == 0) is held like a static one and StoreBodies leaves it untouched.
+        bs.dynamic = body.HasVolume() && body.mass > 0.0f && (active == nullptr || active[i] != 0);
         bs.p = body.position;
         bs.q = body.orientation;
         bs.q0 = body.orientation;

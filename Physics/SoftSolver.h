@@ -36,9 +36,16 @@ public:
     /// Advances every volume by one step of ctx.dt in ctx.substepCount substeps of ctx.h (ctx.settings.soft).
     /// `candidates` are pairs (i, j), i < j, of indices into `volumes` in increasing order (broadphase output,
     /// AABBs grown by the speculative margin); pairs of two static bodies are skipped. Impulses are carried over
-    /// only from the step just before (ctx.step one more than at the last Step).
+    /// only from the step just before (ctx.step one more than at the last Step). `active` (one byte per volume,
+    /// Islands::ActiveMask) marks the bodies that move when sleep is on: the others are held like static ones and
+    /// left untouched; nullptr moves every dynamic body.
     void Step(const std::vector<RigidbodyVolume*>& volumes, const std::vector<std::pair<int, int>>& candidates,
-              const StepContext& ctx);
+              const StepContext& ctx, const unsigned char* active = nullptr);
+    /// Calls f(indexA, indexB) for every pair of the last Step with at least one contact point (islands).
+    template <class F>
+    void ForEachTouchingPair(F&& f) const {
+        for (const Pair& pair : pairs) f(pair.a, pair.b);
+    }
     /// Forgets every kept contact (the next Step starts cold).
     void Clear();
 
@@ -99,7 +106,7 @@ public:
     };
 
 private:
-    void LoadBodies(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx);
+    void LoadBodies(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx, const unsigned char* active);
     void Collide(const std::vector<RigidbodyVolume*>& volumes, const std::vector<std::pair<int, int>>& candidates,
                  const StepContext& ctx, bool carryOver);
     void Prepare(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx);

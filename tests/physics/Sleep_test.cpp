@@ -241,3 +241,41 @@ TEST(Sleep, ZeroTimeToSleepNeedsSlowBodies) {
     ASSERT_GT(StepUntilAsleep(w, 1, 1, 600), 0);
     EXPECT_NEAR(w.Body(1).position.y, 1.0f, 0.03f);
 }
+
+// The soft step sleeps too: a tower of three settles and sleeps as one island; asleep, its state is bit-identical
+// step after step and no pair is searched or solved; a box falling on it wakes the whole island in the step its grown
+// box meets the tower's top, and an impulse on the top box wakes all three.
+TEST(Sleep, SoftStepSleepsAndWakesByIsland) {
+    std::vector<BodySpec> specs = WithGround(GroundSlabSpec(), Tower(3, BoxSpec(vec3())));  // tops at y = 6
+    specs.push_back(BoxSpec(vec3(0.0f, 9.0f, 0.0f)));                                       // bottom at y = 8
+    RigidWorld w(specs);
+    w.Body(4).gravity = vec3();
+    UseSleep(w.system, true);
+    w.system.settings.contactSolver = ContactSolver::Soft;
+    ASSERT_GT(StepUntilAsleep(w, 1, 4, 900), 0) << "the soft step never put the tower to sleep";
+    const std::vector<unsigned char> asleep = Snapshot(w.Bodies());
+    for (int i = 0; i < 60; ++i) {
+        w.system.Update(kDt);
+        EXPECT_EQ(w.system.SoftSolver().PairCount(), 0u);
+    }
+    EXPECT_EQ(Snapshot(w.Bodies()), asleep);
+
+    w.Body(4).gravity = kVolumeGravity;  // a changed property wakes the floating box alone
+    w.system.Update(kDt);
+    EXPECT_FALSE(w.Body(4).IsSleeping());
+    for (std::size_t i = 1; i <= 3; ++i) EXPECT_TRUE(w.Body(i).IsSleeping()) << "tower box " << i;
+    int step = 0;
+    while (w.Body(1).IsSleeping() && step < 120) {
+        w.system.Update(kDt);
+        ++step;
+    }
+    ASSERT_LT(step, 120) << "the falling box never woke the tower";
+    EXPECT_GT(w.Body(4).position.y, 7.0f) << "woken only after the box had sunk into the top";
+    for (std::size_t i = 1; i <= 3; ++i) EXPECT_FALSE(w.Body(i).IsSleeping()) << "tower box " << i;
+
+    ASSERT_GT(StepUntilAsleep(w, 1, 4, 1200), 0) << "the four boxes never slept again";
+    w.Body(4).AddVelocityChange(vec3(0.3f, 0.0f, 0.0f));
+    w.system.Update(kDt);
+    for (std::size_t i = 1; i <= 4; ++i) EXPECT_FALSE(w.Body(i).IsSleeping()) << "box " << i;
+    EXPECT_GT(w.system.SoftSolver().PairCount(), 0u);
+}
