@@ -107,7 +107,9 @@ bool VideoEncoder::Open(const std::string& target, int w, int h, double framesPe
     logPath = CreateTemporaryBeside(path, &logId, error);
     if (logPath.empty()) return Cleanup(), false;
     if (format == Format::Gif) {
-        // The palette needs every frame before the first can be mapped: keep them raw on disk, not in memory.
+        // The palette needs every frame before the first can be mapped: keep them raw on disk, not in memory, and
+        // feed them to palettegen while the run goes on (its statistics are ready when the run ends; only the
+        // mapping pass, paletteuse, runs after it).
         rawPath = CreateTemporaryBeside(path, &rawId, error);
         if (rawPath.empty()) return Cleanup(), false;
         rawFd = open(rawPath.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
@@ -115,6 +117,15 @@ bool VideoEncoder::Open(const std::string& target, int w, int h, double framesPe
             *error = "cannot open " + rawPath + ": " + std::strerror(errno);
             return Cleanup(), false;
         }
+        palettePath = CreateTemporaryBeside(path, &paletteId, error);
+        if (palettePath.empty()) return Cleanup(), false;
+        std::vector<std::string> pass1 = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y"};
+        for (const std::string& a : GifInput("pipe:0")) pass1.push_back(a);
+        for (const std::string& a :
+             {std::string("-vf"), GifResample() + "palettegen=stats_mode=full:reserve_transparent=0",
+              std::string("-c:v"), std::string("png"), std::string("-f"), std::string("image2"), palettePath})
+            pass1.push_back(a);
+        if (!Spawn(pass1, true, error)) return Cleanup(), false;
         return true;
     }
     std::vector<std::string> args = {"ffmpeg",
@@ -203,47 +214,48 @@ bool VideoEncoder::WriteFrame(const Image& frame, std::string* error) {
                  ", the recording " + std::to_string(width) + "x" + std::to_string(height);
         return false;
     }
-    const int fd = format == Format::Gif ? rawFd : pipeFd;
-    if (fd < 0) {
+    if (pipeFd < 0 || (format == Format::Gif && rawFd < 0)) {
         *error = "video recording is not open";
         return false;
     }
-    if (!WriteAll(fd, frame.rgb.data(), frame.rgb.size(), error, format == Format::Gif ? rawPath.c_str() : "ffmpeg")) {
-        if (format != Format::Gif) {
-            // ffmpeg went away: its own message says why.
-            close(pipeFd);
-            pipeFd = -1;
-            std::string why;
-            Wait(&why);
-            *error = why;
-        }
+    if (format == Format::Gif && !WriteAll(rawFd, frame.rgb.data(), frame.rgb.size(), error, rawPath.c_str()))
+        return false;
+    if (!WriteAll(pipeFd, frame.rgb.data(), frame.rgb.size(), error, "ffmpeg")) {
+        // ffmpeg went away: its own message says why.
+        close(pipeFd);
+        pipeFd = -1;
+        std::string why;
+        Wait(&why);
+        *error = why;
         return false;
     }
     ++frames;
     return true;
 }
 
-bool VideoEncoder::EncodeGif(std::string* error) {
-    const std::string size = std::to_string(width) + "x" + std::to_string(height);
-    const std::string rate = Number(fps);
+std::vector<std::string> VideoEncoder::GifInput(const std::string& source) const {
+    return {"-f",         "rawvideo",    "-pix_fmt",
+            "rgb24",      "-video_size", std::to_string(width) + "x" + std::to_string(height),
+            "-framerate", Number(fps),   "-i",
+            source};
+}
+
+std::string VideoEncoder::GifResample() const {
     // GIF delays are whole hundredths of a second: above 50 fps, resample to 50 (2/100 s per frame).
-    const std::string resample = fps > 50.0 ? "fps=50," : "";
-    palettePath = CreateTemporaryBeside(path, &paletteId, error);
-    if (palettePath.empty()) return false;
-    const std::vector<std::string> input = {"-f", "rawvideo",   "-pix_fmt", "rgb24", "-video_size",
-                                            size, "-framerate", rate,       "-i",    rawPath};
-    std::vector<std::string> pass1 = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y"};
-    pass1.insert(pass1.end(), input.begin(), input.end());
-    for (const std::string& a :
-         {std::string("-vf"), resample + "palettegen=stats_mode=full:reserve_transparent=0", std::string("-c:v"),
-          std::string("png"), std::string("-f"), std::string("image2"), palettePath})
-        pass1.push_back(a);
-    if (!Spawn(pass1, false, error) || !Wait(error)) return false;
+    return fps > 50.0 ? "fps=50," : "";
+}
+
+bool VideoEncoder::EncodeGif(std::string* error) {
+    // Pass 1 (palettegen) has read every frame from its pipe: close it and wait for the palette.
+    close(pipeFd);
+    pipeFd = -1;
+    if (!Wait(error)) return false;
     std::vector<std::string> pass2 = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y"};
-    pass2.insert(pass2.end(), input.begin(), input.end());
-    for (const std::string& a : {std::string("-i"), palettePath, std::string("-lavfi"),
-                                 "[0:v]" + resample + "null[v];[v][1:v]paletteuse=dither=none", std::string("-loop"),
-                                 std::string("0"), std::string("-f"), std::string("gif"), tempPath})
+    for (const std::string& a : GifInput(rawPath)) pass2.push_back(a);
+    for (const std::string& a :
+         {std::string("-i"), palettePath, std::string("-lavfi"),
+          "[0:v]" + GifResample() + "null[v];[v][1:v]paletteuse=dither=none", std::string("-loop"), std::string("0"),
+          std::string("-f"), std::string("gif"), tempPath})
         pass2.push_back(a);
     return Spawn(pass2, false, error) && Wait(error);
 }
@@ -259,6 +271,10 @@ bool VideoEncoder::Finish(std::string* error) {
         rawFd = -1;
         if (!ok) *error = "writing " + rawPath + " failed: " + std::strerror(errno);
         ok = ok && (frames > 0 || (*error = "no frames were recorded", false)) && EncodeGif(error);
+        if (!ok && child > 0) {  // palettegen still reading its pipe (the run failed before EncodeGif)
+            Abort();
+            return false;
+        }
     } else {
         close(pipeFd);
         pipeFd = -1;

@@ -46,7 +46,12 @@ public:
 private:
     bool Spawn(const std::vector<std::string>& args, bool pipeIn, std::string* error);
     bool Wait(std::string* error);
+    /// GIF: closes palettegen's pipe, waits for the palette, then maps the raw frames with paletteuse.
     bool EncodeGif(std::string* error);
+    /// ffmpeg arguments reading this recording's raw RGB frames from `source` (a file or pipe:0).
+    std::vector<std::string> GifInput(const std::string& source) const;
+    /// "fps=50," above 50 fps (GIF delays are hundredths of a second), else "".
+    std::string GifResample() const;
     void Cleanup();
 
     Format format = Format::Mp4;
