@@ -51,11 +51,15 @@ TEST_F(VideoRun, WebmAndGifFollowTheFrameRate) {
 }
 
 TEST_F(VideoRun, AFailedRunLeavesNoVideo) {
-    const std::string dir = ScratchDir("video-failed");
-    const SandboxResult r = RunSandboxExe({"--demo", "ch14", "--frames", "10", "--size", "64x48", "--video",
-                                           dir + "/run.mp4", "--debug-nonfinite-at", "5", "--quiet"});
-    EXPECT_EQ(r.exitCode, 3) << r.err;
-    EXPECT_TRUE(FilesIn(dir).empty()) << "left: " << FilesIn(dir).size() << " files";
+    // MP4 pipes to one ffmpeg; GIF writes a raw file and pipes to palettegen at the same time: both are removed
+    // (and palettegen stopped) when the run fails.
+    for (const char* name : {"run.mp4", "run.gif"}) {
+        const std::string dir = ScratchDir(std::string("video-failed-") + name);
+        const SandboxResult r = RunSandboxExe({"--demo", "ch14", "--frames", "10", "--size", "64x48", "--video",
+                                               dir + "/" + name, "--debug-nonfinite-at", "5", "--quiet"});
+        EXPECT_EQ(r.exitCode, 3) << name << ": " << r.err;
+        EXPECT_TRUE(FilesIn(dir).empty()) << name << " left: " << FilesIn(dir).size() << " files";
+    }
 }
 
 TEST(VideoUsage, BadNamesAndAMissingFfmpegAreRefusedWithNothingWritten) {
