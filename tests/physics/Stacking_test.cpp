@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "Demos/Scenes/WorldBuilder.h"
-#include "Physics/Geometry/ContactManifold.h"
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
 
@@ -35,21 +34,6 @@ BodySpec Ground() {
     ground.restitution = 0.0f;
     return ground;
 }
-
-/// True when the solver manifolds report points within the margin (the feature-id clipper); the provisional
-/// adapter over the book's manifolds reports only overlapping pairs, with ids that are indices.
-bool ManifoldsHaveMargin() {
-    const RigidbodyVolume a = MakeBox(vec3(0.0f, 0.5f, 0.0f), vec3(0.5f, 0.5f, 0.5f), 1.0f);
-    const RigidbodyVolume b = MakeBox(vec3(0.0f, 1.51f, 0.0f), vec3(0.5f, 0.5f, 0.5f), 1.0f);
-    ContactManifold m;
-    CollideBoxes(a.box, b.box, 0.02f, &m);
-    return m.pointCount > 0;
-}
-
-#define SKIP_WITHOUT_CLIPPER()                                                            \
-    if (!ManifoldsHaveMargin())                                                           \
-    GTEST_SKIP() << "needs the feature-id clipper (speculative points, ids by feature): " \
-                    "Physics/Geometry/ContactManifold.cpp is still the provisional adapter"
 
 /// Steps `world` with the soft solver; returns the deepest penetration the solver saw over the last 60 steps.
 float RunSoft(RigidWorld* world, int steps = kSteps) {
@@ -89,7 +73,6 @@ TEST(Stacking, DISABLED_TowerOf20Stands) {
 // 2-D pyramids with 0.05 m gaps stand: no cube ends more than 0.05 m from its start. Base 20 (210 cubes) stands
 // (measured 0.029 m).
 TEST(Stacking, PyramidOf20Stands) {
-    SKIP_WITHOUT_CLIPPER();
     RigidWorld world(WithGround(Ground(), Pyramid(20, Cube(), 0.05f)));
     RunSoft(&world);
     std::printf("soft pyramid 20: largest displacement %.4f m\n", world.MaxDisplacement());
@@ -138,7 +121,6 @@ TEST(Stacking, DISABLED_HeavyOnLightStands) { ExpectMassRatioStackStands({1.0f, 
 // This test therefore runs at 16 substeps (h = 1/960 s), where the loss is about 0.35 % per bounce (measured
 // -0.3, -0.6, -1.0 % on the first three apexes of e = 0.9).
 TEST(Stacking, SphereBounceApexes) {
-    SKIP_WITHOUT_CLIPPER();
     for (float e : {0.5f, 0.9f}) {
         const float h0 = 5.0f, radius = 0.5f;
         BodySpec ground = Ground();
