@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "Demos/Scenes/WorldBuilder.h"
-#include "Physics/Geometry/ContactManifold.h"
 #include "Physics/PhysicsSystem.h"
 #include "tests/support/Volumes.h"
 
@@ -31,16 +30,6 @@ BodySpec Ground(float restitution = 0.0f) {
     BodySpec ground = GroundSpec(vec3(50.0f, 0.5f, 50.0f));
     ground.restitution = restitution;
     return ground;
-}
-
-/// True when the solver manifolds report points within the margin (the feature-id clipper); the provisional
-/// adapter over the book's manifolds reports only overlapping pairs.
-bool ManifoldsHaveMargin() {
-    const RigidbodyVolume a = MakeBox(vec3(0.0f, 0.5f, 0.0f), vec3(0.5f, 0.5f, 0.5f), 1.0f);
-    const RigidbodyVolume b = MakeBox(vec3(0.0f, 1.51f, 0.0f), vec3(0.5f, 0.5f, 0.5f), 1.0f);
-    ContactManifold m;
-    CollideBoxes(a.box, b.box, 0.02f, &m);
-    return m.pointCount > 0;
 }
 
 }  // namespace
@@ -83,10 +72,6 @@ TEST(SoftSolver, RestingContactsWarmStartById) {
 // A cube sliding fast along the ground (5 m/s: its contact points move 8 cm per step) keeps every contact's
 // warm start, because matching is by feature id, not by distance.
 TEST(SoftSolver, SlidingContactsStayMatched) {
-    if (!ManifoldsHaveMargin())
-        GTEST_SKIP() << "needs the feature-id clipper's speculative points and stable ids "
-                        "(Physics/Geometry/ContactManifold.cpp is "
-                        "still the provisional adapter, which reports overlapping pairs only)";
     BodySpec cube = Cube(vec3(0.0f, 0.5f, 0.0f));
     cube.friction = 0.0f;
     cube.velocity = vec3(5.0f, 0.0f, 0.0f);
@@ -105,9 +90,6 @@ TEST(SoftSolver, SlidingContactsStayMatched) {
 // Restitution only above the threshold (1 m/s): a sphere with e = 1 hitting at 0.8 m/s stays down, at 3 m/s it
 // comes back up at 3 m/s (within the g h it gains in its last substep before contact).
 TEST(SoftSolver, RestitutionThreshold) {
-    if (!ManifoldsHaveMargin())
-        GTEST_SKIP() << "needs the feature-id clipper's speculative points (Physics/Geometry/ContactManifold.cpp is "
-                        "still the provisional adapter, which reports overlapping pairs only)";
     for (float speed : {0.8f, 3.0f}) {
         BodySpec ball = SphereSpec(vec3(0.0f, 0.5f + 0.5f * speed * kDt, 0.0f), 0.5f, 1.0f);
         ball.restitution = 1.0f;
@@ -132,9 +114,6 @@ TEST(SoftSolver, RestitutionThreshold) {
 // and 2 mm above the surface (measured 0.6 mm above)
 // and is not pushed back up (no pop: vertical speed below 0.05 m/s).
 TEST(SoftSolver, SpeculativeContactStopsFastBodyWithoutPopping) {
-    if (!ManifoldsHaveMargin())
-        GTEST_SKIP() << "needs the feature-id clipper's speculative points (Physics/Geometry/ContactManifold.cpp is "
-                        "still the provisional adapter, which reports overlapping pairs only)";
     BodySpec cube = Cube(vec3(0.0f, 0.515f, 0.0f));
     cube.velocity = vec3(0.0f, -5.0f, 0.0f);
     RigidWorld world(WithGround(Ground(), {cube}));

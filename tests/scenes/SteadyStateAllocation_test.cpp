@@ -20,7 +20,6 @@
 #include "Demos/Scenes/MomentumScene.h"
 #include "Demos/Scenes/SpringsScene.h"
 #include "Demos/Scenes/WorldBuilder.h"
-#include "Physics/Geometry/ContactManifold.h"
 
 namespace {
 std::atomic<bool> g_counting{false};
@@ -99,16 +98,6 @@ TEST(SteadyStateAllocation, Ch15BoxesAccumulatedSolver) {
 // The soft solver (solver=soft) on a pile of 200 boxes found by the broadphase: its contact and body arrays, the
 // broadphase's and the candidate list are reused, not regrown, once the pile has settled.
 TEST(SteadyStateAllocation, BoxpileSoftSolver) {
-    {
-        // The provisional adapter behind ContactManifold.h builds a book manifold (a std::vector) per call; the
-        // feature-id clipper does not allocate.
-        const RigidbodyVolume a = MakeBox(vec3(0.0f, 0.5f, 0.0f), vec3(0.5f, 0.5f, 0.5f), 1.0f);
-        const RigidbodyVolume b = MakeBox(vec3(0.2f, 1.4f, 0.0f), vec3(0.5f, 0.5f, 0.5f), 1.0f);
-        ContactManifold m;
-        if (AllocationsDuring([&] { CollideBoxes(a.box, b.box, 0.02f, &m); }) > 0)
-            GTEST_SKIP() << "CollideBoxes allocates: Physics/Geometry/ContactManifold.cpp is still the provisional "
-                            "adapter over the book's manifolds (the feature-id clipper does not allocate)";
-    }
     BodySpec cube = BoxSpec(vec3(), vec3(0.5f, 0.5f, 0.5f), 1.0f);
     cube.velocityRetention = 1.0f;
     cube.velocityEpsilon = 0.0f;
