@@ -38,8 +38,9 @@ for p in stack-5 incline bounce-sphere; do
     END { exit !found }' "$dir/runs" "$committed" || fail "the sample has no $p run"
 done
 
-# Settings key: columns 2..9 (problem, integrator, dt, substeps, iterations, projection, solver, param).
-key='$2 "," $3 "," $4 "," $5 "," $6 "," $7 "," $8 "," $9'
+# Settings key: columns 2..9 (problem, integrator, dt, substeps, iterations, projection, solver, param) and 16..25
+# (the soft solver's settings, which tell its substep counts apart; "-" on other rows).
+key='$2 "," $3 "," $4 "," $5 "," $6 "," $7 "," $8 "," $9 "," $16 "," $17 "," $18 "," $19 "," $20 "," $21 "," $22 "," $23 "," $24 "," $25'
 awk -F, "NR == FNR { want[\$1] = 1; next } FNR > 1 && (\$1 in want) { print $key \",\" \$10 \",\" \$12 }" \
   "$dir/runs" "$committed" | sort >"$dir/committed.rows"
 "$sweep" --plan >"$dir/plan.csv" 2>"$dir/plan.err" || fail "psb-sweep --plan exited $?: $(tail -n 2 "$dir/plan.err")"
