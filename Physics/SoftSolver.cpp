@@ -130,12 +130,14 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
     const Softness softness = MakeSoftness(hertz, soft.contactDampingRatio, ctx.h);
     // A contact with a static body has only one body to move, so it is made twice as stiff.
     const Softness staticSoftness = MakeSoftness(2.0f * hertz, soft.contactDampingRatio, ctx.h);
+    UpdateSeparations();
     for (int s = 0; s < ctx.substepCount; ++s) {
         IntegrateVelocities(ctx);
         WarmStart();
         for (int k = 0; k < soft.iterations; ++k)
             Solve(ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, true);
         IntegratePositions(ctx);
+        UpdateSeparations();
         for (int k = 0; k < soft.relaxIterations; ++k)
             Solve(ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, false);
     }
@@ -324,6 +326,20 @@ void SoftContactSolver::IntegratePositions(const StepContext& ctx) {
     }
 }
 
+void SoftContactSolver::UpdateSeparations() {
+    for (const Pair& pair : pairs) {
+        const BodyState& A = state[pair.a];
+        const BodyState& B = state[pair.b];
+        const vec3 dp = B.dp - A.dp;
+        for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
+            Contact& c = contacts[k];
+            // The base separation plus the motion of both anchors since the step began.
+            const vec3 d = dp + Mul(c.rB, B.dR) - Mul(c.rA, A.dR);
+            c.current = Dot(d, pair.n) + c.baseSeparation;
+        }
+    }
+}
+
 void SoftContactSolver::WarmStart() {
     for (const Pair& pair : pairs) {
         BodyState& A = state[pair.a];
@@ -345,12 +361,9 @@ void SoftContactSolver::Solve(float invH, const Softness& dynamicSoftness, const
         BodyState& A = state[pair.a];
         BodyState& B = state[pair.b];
         const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
-        const vec3 dp = B.dp - A.dp;
         for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
             Contact& c = contacts[k];
-            // Current separation: the base separation plus the motion of both anchors since the step began.
-            const vec3 d = dp + Mul(c.rB, B.dR) - Mul(c.rA, A.dR);
-            const float s = Dot(d, pair.n) + c.baseSeparation;
+            const float s = c.current;
             float bias = 0.0f, massScale = 1.0f, impulseScale = 0.0f;
             if (s > 0.0f) {
                 bias = s * invH;  // speculative: may close the gap this substep, no more

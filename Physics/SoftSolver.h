@@ -72,6 +72,7 @@ public:
         Row normal, tangent1, tangent2;
         float baseSeparation = 0.0f;    // separation - n . (rB - rA): the separation with the step's offsets removed
         float separation = 0.0f;        // from the manifold, m (< 0 penetrating)
+        float current = 0.0f;           // separation at the bodies' present poses (UpdateSeparations), m
         float relativeVelocity = 0.0f;  // normal speed before solving, m/s (restitution)
         float maxNormalImpulse = 0.0f;  // largest total normal impulse of the step, N s
         std::uint32_t id = 0;           // feature id (ContactManifold.h)
@@ -106,6 +107,10 @@ public:
     };
 
 private:
+    /// Current separation of every contact from the bodies' motion since the step began. Poses change only in
+    /// IntegratePositions, so this runs once before the substeps and once after each integration, and every
+    /// solve pass in between reads it.
+    void UpdateSeparations();
     void LoadBodies(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx, const unsigned char* active);
     void Collide(const std::vector<RigidbodyVolume*>& volumes, const std::vector<std::pair<int, int>>& candidates,
                  const StepContext& ctx, bool carryOver);
