@@ -2,7 +2,7 @@
 // default settings, except where a test says otherwise (tall stacks and 100:1 mass ratios: StackSettings). Every scene:
 // 60 Hz, one step per frame, 600 steps, sleeping off, damping off (velocity retention 1, velocity threshold 0), cubes
 // of half extent 0.5, 1 kg, friction 0.6, restitution 0, on a static ground box of half extents (50, 0.5, 50) whose top
-// is y = 0.
+// is y = 0 (PeerCube, PeerGround: the peer benchmark's definitions, Demos/Scenes/WorldBuilder.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,22 +19,6 @@ namespace {
 constexpr float kDt = 1.0f / 60.0f;
 constexpr int kSteps = 600;
 constexpr float kPi = 3.14159265f;
-
-BodySpec Cube() {
-    BodySpec cube = BoxSpec(vec3(), vec3(0.5f, 0.5f, 0.5f), 1.0f);
-    cube.friction = 0.6f;
-    cube.restitution = 0.0f;
-    cube.velocityRetention = 1.0f;
-    cube.velocityEpsilon = 0.0f;
-    return cube;
-}
-
-BodySpec Ground() {
-    BodySpec ground = GroundSpec(vec3(50.0f, 0.5f, 50.0f));
-    ground.friction = 0.6f;
-    ground.restitution = 0.0f;
-    return ground;
-}
 
 /// Steps `world` with the soft solver; returns the deepest penetration the solver saw over the last 60 steps.
 float RunSoft(RigidWorld* world, int steps = kSteps) {
@@ -75,7 +59,7 @@ float ColumnOverlap(const RigidWorld& world) {
 // the column tips over (measured 15 m; 0.08 m at 4 substeps and 60 Hz): a soft contact's tilt stiffness does not
 // grow with the load above it, so the column is a leaning spring stack. At StackSettings: measured 0.013 m.
 TEST(Stacking, TowerOf20Stands) {
-    RigidWorld world(WithGround(Ground(), Tower(20, Cube())));
+    RigidWorld world(WithGround(PeerGround(), Tower(20, PeerCube())));
     StackSettings(&world);
     RunSoft(&world);
     std::printf("soft tower 20: largest displacement %.4f m\n", world.MaxDisplacement());
@@ -85,7 +69,7 @@ TEST(Stacking, TowerOf20Stands) {
 // 2-D pyramids with 0.05 m gaps stand: no cube ends more than 0.05 m from its start. Base 20 (210 cubes) stands
 // (measured 0.029 m).
 TEST(Stacking, PyramidOf20Stands) {
-    RigidWorld world(WithGround(Ground(), Pyramid(20, Cube(), 0.05f)));
+    RigidWorld world(WithGround(PeerGround(), Pyramid(20, PeerCube(), 0.05f)));
     RunSoft(&world);
     std::printf("soft pyramid 20: largest displacement %.4f m\n", world.MaxDisplacement());
     EXPECT_LT(world.MaxDisplacement(), 0.05f);
@@ -93,7 +77,7 @@ TEST(Stacking, PyramidOf20Stands) {
 
 // Base 30 (465 cubes) at StackSettings: measured 0.021 m (0.127 m at the default settings).
 TEST(Stacking, PyramidOf30Stands) {
-    RigidWorld world(WithGround(Ground(), Pyramid(30, Cube(), 0.05f)));
+    RigidWorld world(WithGround(PeerGround(), Pyramid(30, PeerCube(), 0.05f)));
     StackSettings(&world);
     RunSoft(&world);
     std::printf("soft pyramid 30: largest displacement %.4f m\n", world.MaxDisplacement());
@@ -105,9 +89,9 @@ namespace {
 /// A column of three cubes with masses m (kg, bottom up): stands (within 0.05 m) with no overlap between
 /// neighbours or with the ground deeper than 0.01 m.
 void ExpectMassRatioStackStands(const float (&m)[3], bool stackSettings) {
-    std::vector<BodySpec> column = Tower(3, Cube());
+    std::vector<BodySpec> column = Tower(3, PeerCube());
     for (int i = 0; i < 3; ++i) column[i].mass = m[i];
-    RigidWorld world(WithGround(Ground(), column));
+    RigidWorld world(WithGround(PeerGround(), column));
     if (stackSettings) StackSettings(&world);
     const float deepest = RunSoft(&world);
     std::printf("soft stack %g/%g/%g kg: overlap %.4f m, solver's deepest %.4f m, displacement %.4f m\n", m[0], m[1],
@@ -137,7 +121,7 @@ TEST(Stacking, HeavyOnLightStands) { ExpectMassRatioStackStands({1.0f, 1.0f, 100
 TEST(Stacking, SphereBounceApexes) {
     for (float e : {0.5f, 0.9f}) {
         const float h0 = 5.0f, radius = 0.5f;
-        BodySpec ground = Ground();
+        BodySpec ground = PeerGround();
         ground.restitution = 1.0f;
         BodySpec ball = SphereSpec(vec3(0.0f, radius + h0, 0.0f), radius, 1.0f);
         ball.restitution = e;
@@ -180,7 +164,7 @@ TEST(Stacking, BoxOnIncline) {
         slab.friction = 0.6f;
         slab.restitution = 0.0f;
         slab.eulerRadians = vec3(0.0f, 0.0f, theta);
-        BodySpec cube = Cube();
+        BodySpec cube = PeerCube();
         cube.eulerRadians = slab.eulerRadians;
         RigidbodyVolume probe = MakeBody(slab);
         const vec3 n(probe.box.orientation[1][0], probe.box.orientation[1][1], probe.box.orientation[1][2]);
