@@ -1,10 +1,12 @@
 // psb-sleep-bench: what a settled boxpile costs asleep against the same state awake (docs/sleep.md).
-// Usage: psb-sleep-bench [N] [rounds]   (N cubes, default 4000; rounds of timing, default 5)
-// Scene: BoxpileScene(N) (Demos/Scenes/WorldBuilder.h), Accumulated solver, 10 passes, 60 Hz. World A runs with
-// WorldSettings::sleep on until every cube sleeps (or 1800 steps). World B is built from the same definition, given
-// A's positions and orientations (velocities zero) and runs with sleep off: the same settled state, awake. B is warmed
-// up for 30 steps (warm-start contacts). Then blocks of 20 steps alternate A, B, A, B ... in this one process, so
-// both see the same machine load; printed: the median ms per step of each and their ratio, one key=value line.
+// Usage: psb-sleep-bench [N] [rounds] [solver]   (N cubes, default 4000; rounds of timing, default 5; contact
+// solver id, default accumulated)
+// Scene: BoxpileScene(N) (Demos/Scenes/WorldBuilder.h), the solver (accumulated: 10 passes; soft: its defaults), 60 Hz.
+// World A runs with WorldSettings::sleep on until every cube sleeps (or 1800 steps). World B is built from the same
+// definition, given A's positions and orientations (velocities zero) and runs with sleep off: the same settled state,
+// awake. B is warmed up for 30 steps (warm-start contacts). Then blocks of 20 steps alternate A, B, A, B ... in this
+// one process, so both see the same machine load; printed: the median ms per step of each and their ratio, one
+// key=value line.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -19,8 +21,10 @@ namespace {
 
 constexpr float kDt = 1.0f / 60.0f;
 
+ContactSolver g_solver = ContactSolver::Accumulated;
+
 void Setup(PhysicsSystem& system, bool sleep) {
-    system.settings.contactSolver = ContactSolver::Accumulated;
+    system.settings.contactSolver = g_solver;
     system.settings.solverIterations = 10;
     system.settings.sleep.enabled = sleep;
 }
@@ -43,8 +47,8 @@ double Median(std::vector<double> v) {
 int main(int argc, char** argv) {
     const int n = argc > 1 ? std::atoi(argv[1]) : 4000;
     const int rounds = argc > 2 ? std::atoi(argv[2]) : 5;
-    if (n <= 0 || rounds <= 0) {
-        std::fprintf(stderr, "usage: psb-sleep-bench [N > 0] [rounds > 0]\n");
+    if (n <= 0 || rounds <= 0 || (argc > 3 && !ParseContactSolver(argv[3], &g_solver))) {
+        std::fprintf(stderr, "usage: psb-sleep-bench [N > 0] [rounds > 0] [solver: %s]\n", ContactSolverIds().c_str());
         return 2;
     }
     const std::vector<BodySpec> specs = BoxpileScene(n);
@@ -76,10 +80,15 @@ int main(int argc, char** argv) {
         msAwake.push_back(Time(awake, 20));
     }
     const double a = Median(msAsleep), b = Median(msAwake);
+    // The soft step keeps its pairs in its own solver (Collisions() holds the book's manifolds only).
+    auto pairs = [](const PhysicsSystem& system) {
+        return system.settings.contactSolver == ContactSolver::Soft ? system.SoftSolver().PairCount()
+                                                                    : system.CollisionCount();
+    };
     std::printf(
-        "scene=boxpile n=%d solver=accumulated iterations=10 settle_steps=%d settle_s=%.1f sleeping=%zu "
+        "scene=boxpile n=%d solver=%s settle_steps=%d settle_s=%.1f sleeping=%zu "
         "asleep_ms=%.3f awake_ms=%.3f ratio=%.4f pairs_asleep=%zu pairs_awake=%zu\n",
-        n, settle, settleSeconds, asleep.system.SleepIslands().SleepingCount(), a, b, a / b,
-        asleep.system.CollisionCount(), awake.system.CollisionCount());
+        n, ToString(g_solver), settle, settleSeconds, asleep.system.SleepIslands().SleepingCount(), a, b, a / b,
+        pairs(asleep.system), pairs(awake.system));
     return 0;
 }
