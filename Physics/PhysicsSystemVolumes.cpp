@@ -82,7 +82,7 @@ void PhysicsSystem::StepSoftVolumes(StepContext& ctx) {
     resultCount = 0;  // Collisions() holds the book's manifolds, which this path does not compute
 
     // Islands and sleep (Islands.h): null while settings.sleep is off. Sleeping bodies are held like static ones;
-    // a pair is searched only when one body is active, and a sleeping island whose grown AABB box meets an active
+    // a pair is searched only when one body is active, and a sleeping island whose grown AABB meets an active
     // body's is woken before the solve (then the search runs again for its own pairs).
     Islands* sleep = islands.BeginStep(volumes, settings.sleep) ? &islands : nullptr;
     const unsigned char* active = sleep != nullptr ? sleep->ActiveMask() : nullptr;
@@ -117,8 +117,11 @@ void PhysicsSystem::StepSoftVolumes(StepContext& ctx) {
         while (sleep->WakeTouched(candidatePairs.data(), candidatePairs.size()) > 0) search();
     softSolver.Step(volumes, candidatePairs, ctx, active);
     if (sleep != nullptr) {
+        // Islands are linked over the same candidate pairs that wake them (grown boxes that meet), not only over
+        // pairs with contact points: two islands near enough to wake each other are one island, so they fall
+        // asleep together instead of waking each other in turn.
         islands.BeginUpdate(volumes, ctx.dt, settings.sleep);
-        softSolver.ForEachTouchingPair([this](int a, int b) { islands.LinkPair(a, b); });
+        for (const std::pair<int, int>& p : candidatePairs) islands.LinkPair(p.first, p.second);
         islands.EndUpdate(volumes, settings.sleep);
     }
     volumeSubstepSerial += n;

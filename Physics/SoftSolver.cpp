@@ -98,6 +98,7 @@ void SoftContactSolver::Clear() {
     previousPairs.clear();
     previousContacts.clear();
     warmStarted = 0;
+    inheritedNormal = 0.0f;
     lastStep = -2;
 }
 
@@ -200,6 +201,7 @@ void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
         previousContacts.clear();
     }
     warmStarted = 0;
+    inheritedNormal = 0.0f;
     const SoftSolverSettings& soft = ctx.settings.soft;
     std::size_t cursor = 0;  // previousPairs is in the same increasing (a, b) order as the candidates
     ContactManifold manifold;
@@ -259,6 +261,7 @@ void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
                     c.normal.impulse = std::fmax(Dot(P, pair.n), 0.0f);
                     c.tangent1.impulse = Dot(P, pair.t1);
                     c.tangent2.impulse = Dot(P, pair.t2);
+                    inheritedNormal += c.normal.impulse;
                     ++warmStarted;
                 }
             }

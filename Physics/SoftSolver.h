@@ -41,11 +41,6 @@ public:
     /// left untouched; nullptr moves every dynamic body.
     void Step(const std::vector<RigidbodyVolume*>& volumes, const std::vector<std::pair<int, int>>& candidates,
               const StepContext& ctx, const unsigned char* active = nullptr);
-    /// Calls f(indexA, indexB) for every pair of the last Step with at least one contact point (islands).
-    template <class F>
-    void ForEachTouchingPair(F&& f) const {
-        for (const Pair& pair : pairs) f(pair.a, pair.b);
-    }
     /// Forgets every kept contact (the next Step starts cold).
     void Clear();
 
@@ -54,6 +49,9 @@ public:
     std::size_t PairCount() const { return pairs.size(); }
     std::size_t ContactCount() const { return contacts.size(); }
     std::size_t WarmStartedCount() const { return warmStarted; }
+    /// Normal impulse inherited from last step's matched contacts (after warmStartFactor) summed over the last
+    /// Step's contacts, N s: what the warm start applies before the first solve.
+    float InheritedNormalImpulse() const { return inheritedNormal; }
     /// Normal impulse of the last substep summed over every contact of the last Step, N s.
     float TotalNormalImpulse() const;
     /// Deepest penetration (m, >= 0) over the contacts found at the start of the last Step.
@@ -129,5 +127,6 @@ private:
     std::vector<Pair> pairs, previousPairs;
     std::vector<Contact> contacts, previousContacts;
     std::size_t warmStarted = 0;
+    float inheritedNormal = 0.0f;
     long long lastStep = -2;
 };

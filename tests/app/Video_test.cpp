@@ -51,8 +51,8 @@ TEST_F(VideoRun, WebmAndGifFollowTheFrameRate) {
 }
 
 TEST_F(VideoRun, AFailedRunLeavesNoVideo) {
-    // MP4 pipes to one ffmpeg; GIF writes a raw file and pipes to palettegen at the same time: both are removed
-    // (and palettegen stopped) when the run fails.
+    // MP4 pipes to one ffmpeg; GIF writes a raw file and pipes to palettegen at the same time: every temporary is
+    // removed when the run fails.
     for (const char* name : {"run.mp4", "run.gif"}) {
         const std::string dir = ScratchDir(std::string("video-failed-") + name);
         const SandboxResult r = RunSandboxExe({"--demo", "ch14", "--frames", "10", "--size", "64x48", "--video",

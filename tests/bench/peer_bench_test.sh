@@ -92,4 +92,17 @@ check_keys $common bullet_disp psb_disp
 holds "bullet_ms > 0"
 holds "psb_ms > 0"
 holds "bullet_disp < 1"
+holds "psb_disp < 1"
+
+# --- tower 5 and boxpile 100 with the soft step (the solver of the README's table): it stands, settles shallow
+"$bench" tower 5 --solver soft --steps 120 --warmup 10 --repeat 1 >"$out" 2>"$err" || fail "soft tower 5 exited $?"
+[ "$(value solver)" = soft ] || fail "solver not echoed: $(cat "$out")"
+holds "psb_disp < 0.05"
+holds "psb_drift < 0.05"
+holds "psb_pen < 0.01"
+"$bench" boxpile 100 --solver soft --steps 120 --warmup 10 --repeat 1 >"$out" 2>"$err" ||
+  fail "soft boxpile 100 exited $?"
+holds "psb_below == 0"
+holds "psb_pen < 0.05"
+holds "psb_ke < 10"
 echo "peers.smoke: ok"

@@ -49,8 +49,9 @@ TEST(SoftSolver, SoftnessFormula) {
 }
 
 // A cube resting on the ground: from the second step on every contact inherits last step's impulse (same pair,
-// same feature id); the impulses carry its weight (m g dt per step, spread over the substeps: m g h per substep
-// summed over the points). With warmStartFactor 0 nothing is inherited... and ClearRigidbodys forgets them all.
+// same feature id), and what it inherits is the weight's last-substep impulse (m g h summed over the points). With
+// warmStartFactor 0 the contacts are still matched but inherit nothing; after ClearRigidbodys (and the cube added
+// back) the first step starts cold and the next one warm again.
 TEST(SoftSolver, RestingContactsWarmStartById) {
     RigidWorld world(WithGround(Ground(), {Cube(vec3(0.0f, 0.5f, 0.0f))}));
     world.system.settings.contactSolver = ContactSolver::Soft;
@@ -60,13 +61,25 @@ TEST(SoftSolver, RestingContactsWarmStartById) {
     ASSERT_GT(solver.ContactCount(), 0u);
     EXPECT_EQ(solver.WarmStartedCount(), solver.ContactCount());
     const float h = kDt / static_cast<float>(world.system.settings.soft.substeps);
+    EXPECT_NEAR(solver.InheritedNormalImpulse(), 9.82f * h, 0.01f * 9.82f * h);
     EXPECT_NEAR(solver.TotalNormalImpulse(), 9.82f * h, 0.01f * 9.82f * h);
     EXPECT_LT(solver.DeepestPenetration(), 0.001f);  // g / (2 pi 60 Hz)^2 per unit load, static contact
 
     world.system.settings.soft.warmStartFactor = 0.0f;
     world.system.Update(kDt);
     EXPECT_EQ(solver.WarmStartedCount(), solver.ContactCount()) << "matched, with a zero impulse";
+    EXPECT_EQ(solver.InheritedNormalImpulse(), 0.0f);
     EXPECT_NEAR(solver.TotalNormalImpulse(), 9.82f * h, 0.05f * 9.82f * h);
+
+    world.system.settings.soft.warmStartFactor = 1.0f;
+    world.system.ClearRigidbodys();
+    for (std::size_t i = 0; i < world.Bodies().size(); ++i) ASSERT_TRUE(world.system.AddRigidbody(&world.Body(i)));
+    world.system.Update(kDt);
+    EXPECT_EQ(solver.WarmStartedCount(), 0u) << "ClearRigidbodys forgets the kept contacts";
+    EXPECT_EQ(solver.InheritedNormalImpulse(), 0.0f);
+    world.system.Update(kDt);
+    EXPECT_EQ(solver.WarmStartedCount(), solver.ContactCount());
+    EXPECT_GT(solver.InheritedNormalImpulse(), 0.0f);
 }
 
 // A cube sliding fast along the ground (5 m/s: its contact points move 8 cm per step) keeps every contact's
