@@ -254,8 +254,8 @@ bool VideoEncoder::EncodeGif(std::string* error) {
     for (const std::string& a : GifInput(rawPath)) pass2.push_back(a);
     for (const std::string& a :
          {std::string("-i"), palettePath, std::string("-lavfi"),
-          "[0:v]" + GifResample() + "null[v];[v][1:v]paletteuse=dither=none:diff_mode=rectangle", std::string("-loop"), std::string("0"),
-          std::string("-f"), std::string("gif"), tempPath})
+          "[0:v]" + GifResample() + "null[v];[v][1:v]paletteuse=dither=none:diff_mode=rectangle", std::string("-loop"),
+          std::string("0"), std::string("-f"), std::string("gif"), tempPath})
         pass2.push_back(a);
     return Spawn(pass2, false, error) && Wait(error);
 }
