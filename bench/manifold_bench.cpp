@@ -17,6 +17,7 @@
 #include "Math/Random.h"
 #include "Physics/Geometry/ContactManifold.h"
 #include "Physics/Geometry/Geometry3D.h"
+#include "tests/support/BoxPoses.h"
 
 namespace {
 
@@ -39,17 +40,8 @@ std::vector<Pair> Resting(MsvcRand& rng, int n, bool stacked) {
 std::vector<Pair> Random(MsvcRand& rng, int n, float pushMin, float pushMax) {
     std::vector<Pair> pairs;
     for (int i = 0; i < n; ++i) {
-        const OBB a(vec3(0, 0, 0), vec3(rng.Range(0.2f, 1.2f), rng.Range(0.2f, 1.2f), rng.Range(0.2f, 1.2f)),
-                    Rotation3x3(rng.Range(-180, 180), rng.Range(-180, 180), rng.Range(-180, 180)));
-        const vec3 size(rng.Range(0.2f, 1.2f), rng.Range(0.2f, 1.2f), rng.Range(0.2f, 1.2f));
-        const mat3 rot = Rotation3x3(rng.Range(-180, 180), rng.Range(-180, 180), rng.Range(-180, 180));
-        const vec3 dir = Normalized(vec3(rng.Range(-1, 1), rng.Range(-1, 1), rng.Range(-1, 1)) + vec3(0, 1e-3f, 0));
-        float lo = 0.0f, hi = Magnitude(a.size) + Magnitude(size) + 0.1f;
-        for (int it = 0; it < 40; ++it) {
-            const float mid = 0.5f * (lo + hi);
-            (OBBOBB(a, OBB(dir * mid, size, rot)) ? lo : hi) = mid;
-        }
-        pairs.push_back({a, OBB(dir * (lo - rng.Range(pushMin, pushMax)), size, rot)});
+        const TouchingBoxes pose = RandomTouchingBoxes(rng);
+        pairs.push_back({pose.a, pose.B(rng.Range(pushMin, pushMax))});
     }
     return pairs;
 }

@@ -12,6 +12,7 @@
 #include "Math/Random.h"
 #include "Physics/Geometry/Geometry3D.h"
 #include "tests/support/Approx.h"
+#include "tests/support/BoxPoses.h"
 
 namespace {
 
@@ -332,19 +333,10 @@ TEST(SolverManifoldBoxBox, RandomPosesAgreeWithTheBook) {
     MsvcRand rng(12345);
     int colliding = 0, close = 0, swapMismatch = 0;
     for (int trial = 0; trial < 4000; ++trial) {
-        const OBB a(vec3(0, 0, 0), vec3(rng.Range(0.2f, 1.2f), rng.Range(0.2f, 1.2f), rng.Range(0.2f, 1.2f)),
-                    Rotation3x3(rng.Range(-180, 180), rng.Range(-180, 180), rng.Range(-180, 180)));
-        const vec3 size(rng.Range(0.2f, 1.2f), rng.Range(0.2f, 1.2f), rng.Range(0.2f, 1.2f));
-        const mat3 rot = Rotation3x3(rng.Range(-180, 180), rng.Range(-180, 180), rng.Range(-180, 180));
-        const vec3 dir = Normalized(vec3(rng.Range(-1, 1), rng.Range(-1, 1), rng.Range(-1, 1)) + vec3(0, 1e-3f, 0));
-        // Find the touching distance along dir by bisection on the book's SAT, then push in by up to 5 cm.
-        float lo = 0.0f, hi = Magnitude(a.size) + Magnitude(size) + 0.1f;
-        for (int it = 0; it < 40; ++it) {
-            const float mid = 0.5f * (lo + hi);
-            (OBBOBB(a, OBB(dir * mid, size, rot)) ? lo : hi) = mid;
-        }
-        const float push = rng.Range(-0.01f, 0.05f);
-        const OBB b(dir * (lo - push), size, rot);
+        // Touching by the book's SAT, then pushed in by up to 5 cm (or 1 cm apart).
+        const TouchingBoxes pose = RandomTouchingBoxes(rng);
+        const OBB& a = pose.a;
+        const OBB b = pose.B(rng.Range(-0.01f, 0.05f));
         const CollisionManifold book = FindCollisionFeatures(a, b);
         ContactManifold m, swapped;
         CollideBoxes(a, b, 0.02f, &m);
