@@ -1,0 +1,72 @@
+#pragma once
+// `model: auto` for any host with a parameter table and a world (docs/model-choice.md): the demos and scene files.
+// The candidates are what the host's `--set` keys can change (integrator, dt, iterations, solver, soft-substeps)
+// and what its world holds; probes are FileScenes built from the world as it is (DescribeWorld), so the estimate
+// runs on the scene itself; the chosen model is applied through the same keys a user would set. GL-free.
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "Demos/Scenes/Parameters.h"
+#include "Physics/ModelChoice.h"
+
+class PhysicsSystem;
+
+/// The request, bound to the `--set` keys `model`, `tolerance` and `budget` (AddAutoModelParameters) or read from
+/// a scene file's "model" and "budget".
+struct AutoModelRequest {
+    int model = 0;               ///< 0 "fixed" (the scene's own settings, as before), 1 "auto"
+    float tolerance = 0.01f;     ///< the budget's bound, in the quantity's unit
+    int quantity = 0;            ///< BudgetQuantity as int: 0 position (m), 1 energy (relative), 2 constraint (m)
+    bool Auto() const { return model == 1; }
+    ErrorBudget Budget() const;
+};
+
+/// Registers `model` (fixed|auto), `tolerance` (> 0) and `budget` (position|energy|constraint) on *set; no widgets.
+void AddAutoModelParameters(ParameterSet* set, AutoModelRequest* request);
+
+/// The auto model of one run: choice at the start, the live watch during it, and the reports.
+class AutoModel {
+public:
+    /// The candidate space of a host: the keys `params` has (and their ranges) and what `world` holds. hostStep
+    /// (s) is the step the host runs when it has no `dt` key or its dt is 0.
+    static CandidateSpace SpaceOf(const ParameterSet& params, const PhysicsSystem& world, double hostStep);
+    /// The `--set` assignments that put `model` into effect on a host with these parameters (only keys it has).
+    static std::vector<std::pair<std::string, std::string>> Assignments(const ParameterSet& params,
+                                                                        const ModelCandidate& model);
+
+    /// Estimates the candidates on `world` and, when one meets the budget, applies the cheapest through `params`.
+    /// False when the budget is invalid or no candidate meets it: *error then says so with the best estimate.
+    bool Choose(ParameterSet* params, const PhysicsSystem& world, double hostStep, double runSeconds,
+                const AutoModelRequest& request, std::string* error);
+    /// After each frame: the live watch (time = simulated s since the start); a switch is applied through `params`
+    /// and logged (Log()).
+    void AfterFrame(ParameterSet* params, const PhysicsSystem& world, double time);
+
+    bool Active() const { return active; }
+    const ModelChoiceResult& Choice() const { return choice; }
+    const ModelCandidate& Current() const;
+    /// The running estimate at the end of the run (budget unit); the calibration's until the first check.
+    double RunningEstimate() const;
+    /// s of CPU spent calibrating and watching (the overhead of auto).
+    double OverheadCpuSeconds() const;
+    /// Every candidate with its estimated error and cost, the chosen one marked (for --explain-model).
+    std::string Explain() const;
+    /// One line for the run's summary and the panel: the model, its estimate against the budget, its cost and the
+    /// calibration's overhead.
+    std::string Summary() const;
+    /// The switches made during the run, one line each ("t = 2.40 s: ... ").
+    const std::vector<std::string>& Log() const { return log; }
+
+private:
+    bool active = false;
+    AutoModelRequest request;
+    CandidateSpace space;
+    ChoiceSettings settings;
+    ModelChoiceResult choice;
+    std::unique_ptr<ModelWatch> watch;
+    double hostStep = 0.03;
+    std::vector<std::string> log;
+};

@@ -1,0 +1,163 @@
+#pragma once
+// The error budget (docs/model-choice.md): a scene states the accuracy it needs, and the cheapest model whose
+// estimated error meets it is chosen from the scene itself, then kept under watch while the run goes on.
+//
+// A model is one candidate: integrator x step x contact-solver passes (iterations or soft substeps) x contact
+// solver. Its error is estimated by step doubling on the actual scene: the candidate and its refinement (half the
+// step, twice the passes) run side by side from the same state over a calibration window, and the difference, with
+// a Richardson factor for the candidate's order and an extrapolation in time fitted from the two halves of the
+// window, is the estimate at the end of the run. During the run the refinement runs again over short windows from
+// the live state; when the projected end-of-run error leaves the budget, the model is refined and the switch logged.
+//
+// Nothing here knows a scene: the host hands in a ProbeFactory that builds fresh copies of its world. GL-free.
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "Physics/ContactSolver.h"
+#include "Physics/Integrator.h"
+
+class PhysicsSystem;
+
+/// What an error budget bounds.
+enum class BudgetQuantity {
+    Position,    ///< m: the largest distance of any body (particle, volume, cloth particle) from where it should be
+    Energy,      ///< relative: |E - E_reference| / |E0| of the world's mechanical energy at the end of the run
+    Constraint,  ///< m: the largest violation of a distance joint or spring-free constraint seen during the run
+};
+/// "position", "energy", "constraint".
+const char* ToString(BudgetQuantity quantity);
+/// Parses an id from ToString; false (output untouched) for anything else.
+bool ParseBudgetQuantity(const std::string& text, BudgetQuantity* out);
+
+/// A scene's accuracy request.
+struct ErrorBudget {
+    BudgetQuantity quantity = BudgetQuantity::Position;
+    double bound = 0.0;  ///< in the quantity's unit; finite and > 0
+};
+/// False, with *error naming the bad value, unless the bound is finite and positive.
+bool ValidateBudget(const ErrorBudget& budget, std::string* error);
+
+/// One model the sandbox could run a scene with.
+struct ModelCandidate {
+    Integrator integrator = Integrator::SemiImplicitEuler;  ///< particles, cloth and joints
+    ContactSolver solver = ContactSolver::Book;             ///< rigid volumes
+    double step = 0.03;                                     ///< s, one physics step
+    int iterations = 5;                                     ///< book and accumulated solvers: passes per step
+    int softSubsteps = 4;                                   ///< soft solver: substeps per step
+    /// One line: "rk4, dt 0.02 s" / "soft solver, 8 substeps, dt 0.03 s" (only the parts that vary).
+    std::string Describe() const;
+};
+
+/// What the candidates may vary: each list holds the values the host can set and the scene needs (a world
+/// without volumes varies no solver; a host without a step key keeps its one step). An empty list keeps `base`'s.
+struct CandidateSpace {
+    ModelCandidate base;
+    std::vector<Integrator> integrators;
+    std::vector<double> steps;  ///< s
+    std::vector<ContactSolver> solvers;
+    std::vector<int> iterations;    ///< book and accumulated solvers only
+    std::vector<int> softSubsteps;  ///< soft solver only
+    bool hasParticles = false;      ///< the world has particles (free, cloth or jointed): the integrator matters
+    bool hasVolumes = false;        ///< the world has rigid volumes: the contact solver matters
+};
+/// Every combination the space allows, in a fixed order (the estimator's order is by cost, not this).
+std::vector<ModelCandidate> EnumerateCandidates(const CandidateSpace& space);
+/// The candidate's refinement used to estimate its error: half the step when the space varies the step (else
+/// twice the passes).
+ModelCandidate Refine(const ModelCandidate& candidate, const CandidateSpace& space);
+
+/// A fresh copy of the scene, at the state of the moment its factory was called, that the estimator can run.
+class ModelProbe {
+public:
+    virtual ~ModelProbe() = default;
+    /// Sets the model (before the first Advance).
+    virtual void Apply(const ModelCandidate& model) = 0;
+    /// Runs whole steps of the model's step until `seconds` of simulated time have passed since the probe was
+    /// made (never past it); false once the world blew up (the stability monitor) or a state is non-finite.
+    virtual bool AdvanceTo(double seconds) = 0;
+    /// The probe's world (for WorldPositions, WorldEnergy, WorldConstraintError).
+    virtual const PhysicsSystem& World() const = 0;
+};
+/// Builds a probe from the host's world as it is now.
+using ProbeFactory = std::function<std::unique_ptr<ModelProbe>()>;
+
+/// Every body's position as x, y, z triples: particles and volumes in insertion order, then cloth particles.
+void WorldPositions(const PhysicsSystem& world, std::vector<double>* out);
+/// J: kinetic energy of particles (cloth included) and volumes (linear and angular), gravitational potential
+/// energy (-m g . x), and spring energy (k (l - rest)^2 / 2 with the book's sign convention). Static bodies
+/// (mass 0) count nothing.
+double WorldEnergy(const PhysicsSystem& world);
+/// m: the largest |length - rest length| of any distance joint; 0 without joints.
+double WorldConstraintError(const PhysicsSystem& world);
+
+/// How the estimator works; every number has its unit and the default is the documented one.
+struct ChoiceSettings {
+    double runSeconds = 10.0;  ///< s: the run's simulated length (the estimate is for its end)
+    /// Fraction of the run used to calibrate, and its floor and ceiling (s); the window is whole steps of the
+    /// coarsest candidate and never longer than the run.
+    double windowFraction = 0.1;
+    double minWindow = 0.3;
+    double maxWindow = 2.0;
+    /// A candidate meets the budget when safety * estimate <= bound.
+    double safety = 2.0;
+    /// The live check: a window of this fraction of the calibration window, run every `checkEvery` seconds of
+    /// simulated time (0 = a fifth of the run).
+    double checkWindowFraction = 0.5;
+    double checkEvery = 0.0;
+};
+
+/// One candidate as the estimator saw it.
+struct CandidateEstimate {
+    ModelCandidate model;
+    double estimate = 0.0;        ///< the budget's quantity at the end of the run, estimated (inf: unstable)
+    double cpuPerSimSecond = 0.0; ///< s of CPU per simulated s, measured on the calibration window
+    bool evaluated = false;       ///< false: skipped (its predicted cost was above the chosen one's)
+    bool stable = true;
+    bool meets = false;           ///< safety * estimate <= bound
+    std::string note;             ///< why skipped, or why the estimate is not trusted
+};
+
+/// What ChooseModel found.
+struct ModelChoiceResult {
+    bool feasible = false;  ///< a candidate meets the budget
+    int chosen = -1;        ///< index into candidates of the cheapest that meets it (-1 when none)
+    int best = -1;          ///< index of the candidate with the smallest estimate (for the refusal message)
+    std::vector<CandidateEstimate> candidates;  ///< every candidate, in EnumerateCandidates order
+    double calibrationCpuSeconds = 0.0;         ///< s of CPU spent on probes
+    double windowSeconds = 0.0;                 ///< s of simulated time per calibration run
+};
+
+/// Estimates every candidate on probes from `factory` (cheapest first, skipping those predicted to cost more
+/// than the cheapest that already meets the budget) and picks the cheapest that meets it.
+ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace& space, const ErrorBudget& budget,
+                              const ChoiceSettings& settings);
+
+/// The live watch: after the choice, call Check at each frame with the simulated time since the start and a
+/// factory that builds probes from the world as it is now. It runs the current model and its refinement over a
+/// short window every settings.checkEvery seconds, keeps the running estimate (the error accumulated so far
+/// plus the projected rest) and, when safety * projection leaves the budget, refines the model.
+class ModelWatch {
+public:
+    ModelWatch(const CandidateSpace& space, const ErrorBudget& budget, const ChoiceSettings& settings,
+               const ModelCandidate& chosen, double calibrationEstimate);
+    /// True when the model changed at this call: then Current() is the new model and *log says when and why.
+    bool Check(double time, const ProbeFactory& factory, std::string* log);
+    const ModelCandidate& Current() const { return current; }
+    /// The running estimate of the error at the end of the run, in the budget's unit.
+    double RunningEstimate() const { return running; }
+    /// s of CPU spent on the watch's probes so far.
+    double CpuSeconds() const { return cpuSeconds; }
+
+private:
+    CandidateSpace space;
+    ErrorBudget budget;
+    ChoiceSettings settings;
+    ModelCandidate current;
+    double running = 0.0;
+    double accumulated = 0.0;  // estimated error made before the last check
+    double lastCheck = 0.0;    // s
+    double cpuSeconds = 0.0;
+};
