@@ -400,7 +400,7 @@ ModelWatch::ModelWatch(const CandidateSpace& s, const ErrorBudget& b, const Choi
       growth(calibrationGrowth) {}
 
 bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* log) {
-    const double every = settings.checkEvery > 0.0 ? settings.checkEvery : settings.runSeconds / 4.0;
+    const double every = settings.checkEvery > 0.0 ? settings.checkEvery : settings.runSeconds / 8.0;
     if (!(every > 0.0) || time < lastCheck + every - 1e-9 || time >= settings.runSeconds - 1e-9) return false;
     lastCheck = time;
     const double window = std::min(settings.runSeconds - time, settings.checkWindowFraction * WindowFor(settings));

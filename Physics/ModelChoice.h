@@ -108,18 +108,19 @@ double WorldConstraintError(const PhysicsSystem& world);
 /// How the estimator works; every number has its unit and the default is the documented one.
 struct ChoiceSettings {
     double runSeconds = 10.0;  ///< s: the run's simulated length (the estimate is for its end)
-    /// Fraction of the run used to calibrate, and its floor and ceiling (s); the window is whole steps of the
-    /// coarsest candidate and never longer than the run.
-    double windowFraction = 0.1;
-    double minWindow = 0.3;
+    /// Fraction of the run used to calibrate, and its floor and ceiling (s); the window is whole steps of each
+    /// candidate (at least two) and never longer than the run. Every candidate tried costs about three windows of
+    /// its own run (itself and its refinement at half the step), so the window is short.
+    double windowFraction = 0.05;
+    double minWindow = 0.2;
     double maxWindow = 2.0;
     /// A candidate meets the budget when safety * estimate <= bound.
     double safety = 2.0;
     /// Candidates estimated at most (the rest are reported as not run).
     int maxEvaluations = 40;
     /// The live check: a window of this fraction of the calibration window, run every `checkEvery` seconds of
-    /// simulated time (0 = a fifth of the run).
-    double checkWindowFraction = 0.5;
+    /// simulated time (0 = an eighth of the run).
+    double checkWindowFraction = 0.3;
     double checkEvery = 0.0;
 };
 

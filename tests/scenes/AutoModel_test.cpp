@@ -48,7 +48,6 @@ AutoRun RunAuto(const SceneDescription& d, const AutoModelRequest& request, int 
     AutoModel autoModel;
     AutoRun run;
     run.chosen = autoModel.Choose(&params, scene.System(), kHostStep, frames * kHostStep, request, &run.error);
-    if (getenv("PSB_EXPLAIN")) std::printf("%s", autoModel.Explain().c_str());
     if (!run.chosen) return run;
     double host = 0.0, physics = 0.0;
     long long steps = 0;
@@ -130,10 +129,170 @@ TEST(AutoModel, OscillatorMeetsEachBudget) {
         const AutoRun run = RunAuto(Oscillator(), Budget(bound), 334,
                                     [&](const FileScene& s, double t) { actual = OscillatorError(s, t); });
         ASSERT_TRUE(run.chosen) << run.error;
-        EXPECT_LE(actual, 3 * bound) << "budget " << bound << ": " << run.model.Describe();
-        std::printf("oscillator budget %g: %s, estimate %g, actual %g\n", bound, run.model.Describe().c_str(),
-                    run.estimate, actual);
+        EXPECT_LE(actual, bound) << "budget " << bound << ": " << run.model.Describe(true, false);
+        EXPECT_EQ(run.model.integrator == Integrator::ExplicitEuler, false) << "gains energy: never the cheapest";
     }
+}
+
+}  // namespace
+
+namespace {
+
+SceneDescription Stack(int n) {
+    SceneDescription d;
+    SceneBody ground;
+    ground.id = "ground";
+    ground.kind = SceneBodyKind::Box;
+    ground.position = vec3(0, -0.5f, 0);
+    ground.halfExtents = vec3(10, 0.5f, 10);
+    ground.mass = 0.0f;
+    d.bodies.push_back(ground);
+    for (int i = 0; i < n; ++i) {
+        SceneBody b;
+        b.id = "b" + std::to_string(i);
+        b.kind = SceneBodyKind::Box;
+        b.position = vec3(0, 0.5f + i, 0);
+        b.halfExtents = vec3(0.5f, 0.5f, 0.5f);
+        d.bodies.push_back(b);
+    }
+    return d;
+}
+
+TEST(AutoModel, StackDrift) {
+    for (double bound : {1e-1, 1e-2}) {
+        double actual = 0.0;
+        const SceneDescription d = Stack(5);
+        const AutoRun run = RunAuto(d, Budget(bound), 334, [&](const FileScene& s, double) {
+            for (std::size_t i = 1; i < s.Volumes().size(); ++i) {
+                const vec3 e = s.Volumes()[i].position - d.bodies[i].position;
+                actual = std::max(actual, double(std::sqrt(e.x * e.x + e.y * e.y + e.z * e.z)));
+            }
+        });
+        ASSERT_TRUE(run.chosen) << run.error;
+        EXPECT_LE(actual, bound) << "budget " << bound << ": " << run.model.Describe(false, true);
+    }
+}
+
+}  // namespace
+
+namespace {
+
+// A particle falls freely for 2 s (the calibration window sees an exact parabola, so the coarsest step is chosen),
+// then bounces: the watch must see the regime change and refine the step, saying when and why.
+TEST(AutoModel, WatchRefinesWhenContactBegins) {
+    SceneDescription d;
+    d.bodies.push_back(Particle(vec3(0, 20, 0), vec3(0, 0, 0)));
+    d.bodies.back().restitution = 0.5f;
+    SceneConstraint floor;
+    floor.position = vec3(0, -0.5f, 0);
+    floor.halfExtents = vec3(10, 0.5f, 10);
+    d.constraints.push_back(floor);
+    ModelCandidate chosen;
+    {
+        FileScene scene(d);
+        ParameterSet params;
+        scene.AddParameters(&params);
+        AutoModel autoModel;
+        std::string error;
+        ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, 334 * kHostStep, Budget(1e-2), &error));
+        chosen = autoModel.Current();
+        EXPECT_TRUE(autoModel.Log().empty());
+    }
+    const AutoRun run = RunAuto(d, Budget(1e-2), 334, [](const FileScene&, double) {});
+    ASSERT_TRUE(run.chosen) << run.error;
+    ASSERT_FALSE(run.log.empty());
+    double when = 0.0;
+    ASSERT_EQ(std::sscanf(run.log[0].c_str(), "t = %lf s:", &when), 1) << run.log[0];
+    EXPECT_GT(when, 2.0) << "no contact before t = 2.02 s: " << run.log[0];
+    EXPECT_NE(run.log[0].find("switching from"), std::string::npos) << run.log[0];
+    EXPECT_LT(run.model.step, chosen.step);
+    EXPECT_EQ(run.model.integrator, chosen.integrator);  // a switch refines; it never changes the integrator
+}
+
+TEST(AutoModel, RefusesABudgetNoCandidateMeets) {
+    FileScene scene(Stack(3));
+    ParameterSet params;
+    scene.AddParameters(&params);
+    const std::string before = params.Get("solver") + params.Get("iterations") + params.Get("dt");
+    AutoModel autoModel;
+    std::string error;
+    EXPECT_FALSE(autoModel.Choose(&params, scene.System(), kHostStep, 1.0, Budget(1e-9), &error));
+    EXPECT_NE(error.find("1e-09 m"), std::string::npos) << error;
+    EXPECT_NE(error.find("best estimate"), std::string::npos) << error;
+    EXPECT_FALSE(autoModel.Active());
+    EXPECT_EQ(params.Get("solver") + params.Get("iterations") + params.Get("dt"), before) << "nothing applied";
+}
+
+TEST(AutoModel, RefusesBudgetsThatAreNotFiniteAndPositive) {
+    FileScene scene(Projectile());
+    ParameterSet params;
+    scene.AddParameters(&params);
+    for (double bad : {0.0, -1e-3, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+        AutoModel autoModel;
+        std::string error;
+        EXPECT_FALSE(autoModel.Choose(&params, scene.System(), kHostStep, 1.0, Budget(bad), &error)) << bad;
+        EXPECT_NE(error.find("must be finite and > 0"), std::string::npos) << error;
+    }
+    std::string error;
+    EXPECT_TRUE(ValidateBudget({BudgetQuantity::Energy, 1e-6}, &error));
+}
+
+TEST(AutoModel, SameSceneSameChoice) {
+    std::vector<std::string> picks;
+    for (int i = 0; i < 2; ++i) {
+        FileScene scene(Stack(3));
+        ParameterSet params;
+        scene.AddParameters(&params);
+        AutoModel autoModel;
+        std::string error;
+        ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, 3.0, Budget(1e-2), &error)) << error;
+        std::string pick = autoModel.Current().Describe();
+        for (const CandidateEstimate& c : autoModel.Choice().candidates) pick += " " + std::to_string(c.estimate);
+        picks.push_back(pick);
+    }
+    EXPECT_EQ(picks[0], picks[1]);
+}
+
+TEST(AutoModel, ChosenModelReachesTheHost) {
+    FileScene scene(Oscillator());
+    ParameterSet params;
+    scene.AddParameters(&params);
+    AutoModel autoModel;
+    std::string error;
+    ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, 10.0, Budget(1e-3), &error)) << error;
+    const ModelCandidate& m = autoModel.Current();
+    EXPECT_EQ(params.Get("integrator"), ToString(m.integrator));
+    EXPECT_FLOAT_EQ(scene.PhysicsStep(), static_cast<float>(m.step));
+    EXPECT_EQ(scene.System().settings.integrator, m.integrator);
+    const std::string explain = autoModel.Explain();
+    EXPECT_NE(explain.find("  *      " + m.Describe(true, false)), std::string::npos) << explain;
+    EXPECT_NE(autoModel.Summary().find(m.Describe(true, false)), std::string::npos) << autoModel.Summary();
+}
+
+TEST(AutoModel, CandidatesVaryOnlyWhatTheSceneHasAndTheHostCanSet) {
+    FileScene particles(Oscillator());
+    ParameterSet p;
+    particles.AddParameters(&p);
+    CandidateSpace s = AutoModel::SpaceOf(p, particles.System(), kHostStep);
+    EXPECT_TRUE(s.hasParticles);
+    EXPECT_FALSE(s.hasVolumes);
+    EXPECT_EQ(s.integrators.size(), 5u);
+    EXPECT_TRUE(s.solvers.empty()) << "no volumes: the contact solver is not a choice";
+    EXPECT_EQ(EnumerateCandidates(s).size(), 5u * s.steps.size());
+
+    FileScene boxes(Stack(2));
+    ParameterSet b;
+    boxes.AddParameters(&b);
+    s = AutoModel::SpaceOf(b, boxes.System(), kHostStep);
+    EXPECT_TRUE(s.integrators.empty()) << "no particles: the integrator is not a choice";
+    EXPECT_EQ(s.solvers.size(), 3u);
+
+    ParameterSet noStep;  // a host without a dt key keeps its own step
+    AutoModelRequest request;
+    AddAutoModelParameters(&noStep, &request);
+    s = AutoModel::SpaceOf(noStep, particles.System(), 0.025);
+    EXPECT_TRUE(s.steps.empty());
+    for (const ModelCandidate& c : EnumerateCandidates(s)) EXPECT_EQ(c.step, 0.025);
 }
 
 }  // namespace
