@@ -433,9 +433,13 @@ ModelWatch::ModelWatch(const CandidateSpace& s, const ErrorBudget& b, const Choi
       currentEstimate(calibrationEstimate),
       growth(calibrationGrowth) {}
 
-bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* log) {
+bool ModelWatch::Due(double time) const {
     const double every = settings.checkEvery > 0.0 ? settings.checkEvery : settings.runSeconds / 6.0;
-    if (!(every > 0.0) || time < lastCheck + every - 1e-9 || time >= settings.runSeconds - 1e-9) return false;
+    return every > 0.0 && time >= lastCheck + every - 1e-9 && time < settings.runSeconds - 1e-9;
+}
+
+bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* log) {
+    if (!Due(time)) return false;
     lastCheck = time;
     const double window = std::min(settings.runSeconds - time, settings.checkWindowFraction * WindowFor(settings));
     if (!(window > 0.0)) return false;

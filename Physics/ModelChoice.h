@@ -170,6 +170,8 @@ public:
     /// True when the model changed at this call: then Current() is the new model and *log says when and why.
     /// *log is also set (and false returned) when the estimate left the budget but no finer model exists.
     bool Check(double time, const ProbeFactory& factory, std::string* log);
+    /// True when Check at `time` would run a window (so a host builds its factory only then).
+    bool Due(double time) const;
     const ModelCandidate& Current() const { return current; }
     /// The running estimate of the error at the end of the run, in the budget's unit.
     double RunningEstimate() const { return running; }

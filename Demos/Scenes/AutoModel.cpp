@@ -226,7 +226,7 @@ bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double 
 }
 
 void AutoModel::AfterFrame(ParameterSet* params, const PhysicsSystem& world, double time) {
-    if (!active) return;
+    if (!active || !watch->Due(time)) return;
     std::string line;
     const bool changed = watch->Check(time, FactoryOf(world), &line);
     if (changed) {
