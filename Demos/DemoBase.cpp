@@ -49,13 +49,19 @@ void DemoBase::ImGUI() {
 }
 
 void DemoBase::DrawPanel(const char* title, float height, PanelScrollbar scrollbar) const {
-    BeginDemoPanel(title, height, scrollbar);
+    BeginDemoPanel(title, height + AutoModelRowHeight(), scrollbar);
     DrawParameterPanel(params);
     ImGui::End();
 }
 
 void DemoBase::AddShowHelpButton() {
     params.AddPanelButton(ParameterSet::Widget::Button("Show Help").SameLine(), [this] { show_help = true; });
+}
+
+void DemoBase::AddAutoModelKeys() {
+    AddAutoModelParameters(&params, &autoModelRequest);
+    params.AddPanelText([this] { return autoModel.Active() ? autoModel.Summary() : std::string(); });
+    hasAutoModelKeys = true;
 }
 
 void DemoBase::UseBookCamera(float zoom) {
