@@ -3,6 +3,7 @@
 #include <glad/gl.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -60,8 +61,24 @@ void DemoBase::AddShowHelpButton() {
 
 void DemoBase::AddAutoModelKeys() {
     AddAutoModelParameters(&params, &autoModelRequest);
-    params.AddPanelText([this] { return autoModel.Active() ? autoModel.Summary() : std::string(); });
+    params.AddPanelText([this] { return AutoModelPanelText(); });
     hasAutoModelKeys = true;
+}
+
+std::string DemoBase::AutoModelPanelText() const {
+    if (!autoModel.Active()) return std::string();
+    // The summary's parts, one a line: the panel is narrow.
+    std::string text = autoModel.Summary();
+    for (std::size_t at = text.find("; "); at != std::string::npos; at = text.find("; ", at)) text.replace(at, 2, "\n");
+    return text;
+}
+
+float DemoBase::AutoModelRowHeight() const {
+    const std::string text = AutoModelPanelText();
+    if (text.empty()) return 0.0f;
+    // One row, then one text line per further line (ImGui draws a multi-line text as one item).
+    const auto lines = std::count(text.begin(), text.end(), '\n');
+    return BookPanel::kRowHeight + ImGui::GetTextLineHeight() * static_cast<float>(lines);
 }
 
 void DemoBase::UseBookCamera(float zoom) {

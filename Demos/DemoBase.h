@@ -85,8 +85,10 @@ protected:
     /// autoModelRequest) and a panel row with the auto model's summary, drawn only while the auto model is active
     /// (so a fixed model's panel is unchanged). Called last in the constructor, so `--params` only gains lines.
     void AddAutoModelKeys();
-    /// px: one text row while the auto model is active (its panel row), else 0 (the book's panels stay as they are).
-    float AutoModelRowHeight() const { return autoModel.Active() ? BookPanel::kRowHeight : 0.0f; }
+    /// The panel rows of an active auto model: its summary, one part a line; "" otherwise.
+    std::string AutoModelPanelText() const;
+    /// px: the height of those rows, 0 without an active auto model (the book's panels stay as they are).
+    float AutoModelRowHeight() const;
     /// The book's chapter 14-16 camera preset (docs/book-reference.md §1.4): target (3.75622, 2.98255, 0), rotation
     /// (-67.9312, 19.8) degrees, and `zoom` (9 in most demos; 12 in CH15 and Conservation Of Momentum). Called in
     /// the demo's constructor (the book does it in Initialize), so `camera` is the demo's view before any GL context
