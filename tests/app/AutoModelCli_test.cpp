@@ -95,6 +95,29 @@ TEST(AutoModelCli, DemosRunWithTheEstimateInTheStateCsv) {
     }
 }
 
+TEST(AutoModelCli, EverySimulatedDemoTakesTheKeysAndTheScriptedOnesDoNot) {
+    const std::vector<std::string> hosts = {"ch14", "ch15", "springs", "ch16", "joints", "linear-impulse", "momentum"};
+    const std::string dir = ScratchDir("auto_model_hosts");
+    for (const std::string& demo : hosts) {
+        const SandboxResult params = RunSandboxExe({"--demo", demo, "--params"});
+        ASSERT_EQ(params.exitCode, 0) << demo << ": " << params.err;
+        EXPECT_EQ(ParamValue(params.out, "model"), "fixed") << demo;
+        EXPECT_EQ(ParamValue(params.out, "budget"), "position") << demo;
+        EXPECT_FALSE(ParamValue(params.out, "tolerance").empty()) << demo;
+        // A loose budget (1 m over 0.5 s) is met on each, and the run carries the estimate.
+        const std::string csv = dir + "/" + demo + ".csv";
+        const SandboxResult r = RunSandboxExe({"--demo", demo, "--set", "model=auto", "--set", "tolerance=1",
+                                               "--frames", "30", "--no-ui", "--quiet", "--state", csv});
+        ASSERT_EQ(r.exitCode, 0) << demo << ": " << r.err;
+        EXPECT_EQ(Lines(ReadText(csv)).front(), "frame,time,body,kind,x,y,z,vx,vy,vz,error_estimate") << demo;
+    }
+    for (const std::string demo : {"raycast", "collision-features"}) {
+        const SandboxResult r = RunSandboxExe({"--demo", demo, "--set", "model=auto"});
+        EXPECT_EQ(r.exitCode, 2) << demo;
+        EXPECT_NE(r.err.find("model"), std::string::npos) << r.err;
+    }
+}
+
 TEST(AutoModelCli, TheChosenModelIsTheOneThatRuns) {
     // A budget the book's step does not meet: the choice differs from the defaults. --params shows the values in
     // effect after the choice; a fixed run with exactly those values gives the auto run's states.
