@@ -20,6 +20,7 @@
 #include <numeric>
 #include <vector>
 
+#include "Application/AutoModelHost.h"
 #include "Application/RunOutputs.h"
 #include "Application/StateCsv.h"
 #if PSB_HAVE_WINDOW
@@ -200,38 +201,6 @@ int ApplyParameters(const Options& o, DemoBase& demo) {
 /// The simulated seconds a run covers (the auto model estimates the error at its end).
 double RunSeconds(const Options& o) { return double(o.frames) * o.frameTime.ToDouble(); }
 
-/// `model: auto` (docs/model-choice.md): with an auto request, after --set and before any output is opened, the
-/// candidates are estimated on the demo's world and the cheapest within the budget is applied through its
-/// parameters. Exit 2, nothing written, for a budget no candidate meets (the message names the budget and the
-/// best estimate) and for --explain-model without auto. --explain-model prints the candidates and sets *done.
-int ChooseAutoModel(const Options& o, DemoBase& demo, bool* done) {
-    const AutoModelRequest* request = demo.AutoModelRequestOf();
-    if (request == nullptr || !request->Auto() || demo.World() == nullptr) {
-        if (!o.explainModel) return kExitOk;
-        std::fprintf(stderr,
-                     "physics-sandbox: --explain-model: %s runs its fixed model; it needs --set model=auto (or a "
-                     "scene file with \"model\": \"auto\")\n",
-                     o.demo.c_str());
-        return kExitUsage;
-    }
-    AutoModel& autoModel = demo.AutoModelOf();
-    std::string error;
-    const bool chosen =
-        autoModel.Choose(&demo.Parameters(), *demo.World(), o.step.ToDouble(), RunSeconds(o), *request, &error);
-    if (o.explainModel && !autoModel.Choice().candidates.empty()) std::fputs(autoModel.Explain().c_str(), stdout);
-    if (!chosen) {
-        FinishStdout();
-        std::fprintf(stderr, "physics-sandbox: %s: model auto: %s\n", o.demo.c_str(), error.c_str());
-        return kExitUsage;
-    }
-    if (o.explainModel) {
-        *done = true;
-        return FinishStdout();
-    }
-    if (!o.quiet) std::fprintf(stderr, "physics-sandbox: %s: %s\n", o.demo.c_str(), autoModel.Summary().c_str());
-    return kExitOk;
-}
-
 // Camera overrides, then one camera update so the view is valid on frame 0 (docs/book-reference.md §1.2). Returns the
 // yaw the
 // --orbit turntable starts from.
@@ -321,10 +290,8 @@ void SimulateFrame(RunLoop& r, int frame) {
 // After the frame's fixed steps: the auto model's live watch; a switch is printed as it happens, and a new step
 // (dt refined) takes effect from the next frame on, the clock keeping its accumulated time.
 void WatchModel(RunLoop& r, double time) {
-    r.autoModel->AfterFrame(&r.demo.Parameters(), *r.demo.World(), time);
-    const std::vector<std::string>& log = r.autoModel->Log();
-    for (; r.autoModelLogged < log.size(); ++r.autoModelLogged)
-        r.progress.Note(r.o.demo + ": model auto: " + log[r.autoModelLogged]);
+    for (const std::string& line : WatchAutoModel(r.demo, time, &r.autoModelLogged))
+        r.progress.Note(r.o.demo + ": model auto: " + line);
     const Rational step = HostStep(r.o, r.demo);
     if (step.num != r.step.num || step.den != r.step.den) {
         r.clock.SetStep(step);
@@ -520,8 +487,14 @@ int RunUnguarded(const Options& given, RunStats* stats) {
     if ((code = StartSession(o, fromFile ? &scene : nullptr, &session, stats)) != kExitOk) return code;
     DemoBase& demo = *session.window->CurrentDemo();
     if ((code = ApplySets(o, demo)) != kExitOk) return code;
+    AutoModelHost host;
+    host.name = o.demo;
+    host.hostStep = o.step.ToDouble();
+    host.runSeconds = RunSeconds(o);
+    host.explain = o.explainModel;
+    host.quiet = o.quiet;
     bool explained = false;
-    if ((code = ChooseAutoModel(o, demo, &explained)) != kExitOk || explained) return code;
+    if ((code = ChooseAutoModel(demo, host, &explained)) != kExitOk || explained) return code;
     if (o.showParams) return ShowParameters(o, demo);
     const float baseYaw = ApplyCamera(o, demo);
 

@@ -13,6 +13,7 @@
 #include <memory>
 #include <thread>
 
+#include "Application/AutoModelHost.h"
 #include "Application/Runner.h"
 #include "Demos/DemoBase.h"
 #include "Platform/DesktopWindow.h"
@@ -81,16 +82,13 @@ bool StartFirstDemo(const WindowedOptions& o, DemoWindow& window) {
         }
     // `model: auto` (docs/model-choice.md): chosen before the first frame, for the --frames the window will show
     // (a window closed by hand: ChoiceSettings' default run length).
-    const AutoModelRequest* request = demo.AutoModelRequestOf();
-    if (request == nullptr || !request->Auto() || demo.World() == nullptr) return true;
-    const double runSeconds = o.frames > 0 ? o.frames / 60.0 : ChoiceSettings().runSeconds;
-    if (!demo.AutoModelOf().Choose(&demo.Parameters(), *demo.World(), o.step, runSeconds, *request, &error)) {
-        std::fprintf(stderr, "physics-sandbox: %s: model auto: %s\n", o.demo.c_str(), error.c_str());
-        return false;
-    }
-    if (!o.quiet)
-        std::fprintf(stderr, "physics-sandbox: %s: %s\n", o.demo.c_str(), demo.AutoModelOf().Summary().c_str());
-    return true;
+    AutoModelHost host;
+    host.name = o.demo;
+    host.hostStep = o.step;
+    host.runSeconds = o.frames > 0 ? o.frames / 60.0 : ChoiceSettings().runSeconds;
+    host.quiet = o.quiet;
+    bool explained = false;  // --explain-model is headless only
+    return ChooseAutoModel(demo, host, &explained) == kExitOk;
 }
 
 /// The live watch of the first demo's auto model (while it runs): after each frame's fixed steps, with the
@@ -103,12 +101,8 @@ struct AutoModelWatch {
     void AfterFrame(const WindowedOptions& o, DemoWindow& window, double seconds) {
         if (demo == nullptr || window.CurrentDemo() != demo) return;
         simulated += seconds;
-        AutoModel& model = demo->AutoModelOf();
-        model.AfterFrame(&demo->Parameters(), *demo->World(), simulated);
-        for (; logged < model.Log().size(); ++logged)
-            if (!o.quiet)
-                std::fprintf(stderr, "physics-sandbox: %s: model auto: %s\n", o.demo.c_str(),
-                             model.Log()[logged].c_str());
+        for (const std::string& line : WatchAutoModel(*demo, simulated, &logged))
+            if (!o.quiet) std::fprintf(stderr, "physics-sandbox: %s: model auto: %s\n", o.demo.c_str(), line.c_str());
     }
 };
 
@@ -130,7 +124,7 @@ void ReportSummary(const WindowedOptions& o, DemoWindow& window, int frames, lon
     }
     std::printf("\n");
     if (DemoBase* demo = window.CurrentDemo(); demo != nullptr && demo->AutoModelOf().Active())
-        std::printf("window: %s\n", demo->AutoModelOf().Summary().c_str());
+        std::printf("%s\n", demo->AutoModelOf().Summary().c_str());
     std::fflush(stdout);
 }
 
