@@ -288,6 +288,7 @@ struct WindowResult {
     double cpuSeconds = 0.0;       // candidate's probe only
     double probeCpuSeconds = 0.0;  // both probes
     double simulated = 0.0;        // s the candidate's probe ran
+    double work = 0.0;             // PredictedWork units both probes did (a deterministic measure of their cost)
 };
 
 WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
@@ -359,6 +360,8 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     r.cpuSeconds = cpu;
     r.probeCpuSeconds = ThreadCpuSeconds() - start;
     r.simulated = candidate.step * static_cast<double>(warm + measured);
+    r.work = r.simulated *
+             (PredictedWork(candidate, space) + (observed ? 0.0 : PredictedWork(Refine(candidate, space), space)));
     if (!ok) return r;
     const double length = candidate.step * static_cast<double>(measured);
     // Growth in time, fitted from the measured part's halves, 0 (bounded: a symplectic integrator's energy error, a
@@ -470,6 +473,7 @@ std::vector<PlannedWindow> PlanWindows(const ProbeFactory& factory, const Candid
         result->eventTimes.push_back(begin);
     }
     result->pilotCpuSeconds = ThreadCpuSeconds() - start;
+    result->calibrationWork += PredictedWork(space.base, space) * static_cast<double>(n) * h;
     result->calibrationCpuSeconds += result->pilotCpuSeconds;
     return plan;
 }
@@ -494,13 +498,14 @@ double Contribution(const PlannedWindow& p, const WindowResult& w, const ErrorBu
 /// A candidate's estimate: the sum of its windows' contributions (constraint error: the largest). Stops as soon as
 /// it misses `bound` (the rest can only add), marking the estimate partial (a lower bound).
 void Evaluate(const std::vector<PlannedWindow>& plan, double window, const CandidateSpace& space,
-              const ErrorBudget& budget, double bound, CandidateEstimate* e, double* cpuSeconds) {
+              const ErrorBudget& budget, double bound, CandidateEstimate* e, double* cpuSeconds, double* work) {
     e->estimate = 0.0;
     e->segments.clear();
     double cpu = 0.0, simulated = 0.0;
     for (std::size_t k = 0; k < plan.size(); ++k) {
         const WindowResult w = RunWindow(plan[k].factory, e->model, space, budget, window, 0.0, plan[k].warmSteps);
         *cpuSeconds += w.probeCpuSeconds;
+        *work += w.work;
         cpu += w.cpuSeconds;
         simulated += w.simulated;
         if (!w.stable || !std::isfinite(w.observed)) {
@@ -602,7 +607,7 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
         }
         ++result.evaluatedCount;
         e.evaluated = true;
-        Evaluate(plan, window, space, budget, bound, &e, &result.calibrationCpuSeconds);
+        Evaluate(plan, window, space, budget, bound, &e, &result.calibrationCpuSeconds, &result.calibrationWork);
         e.meets = e.stable && !e.partial && e.estimate <= bound;
         if (e.meets) result.chosen = static_cast<int>(order[k]);
         if (e.stable && std::isfinite(e.estimate)) {
@@ -710,6 +715,7 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
     const WindowResult w = RunWindow(from, current, space, budget, window, 0.0, warm,
                                      budget.quantity == BudgetQuantity::Position ? -1.0 : growth);
     cpuSeconds += w.probeCpuSeconds;
+    work += w.work;
     ++checks;
     const bool ok = w.stable && std::isfinite(w.observed);
     if (budget.quantity == BudgetQuantity::Position) {
@@ -773,6 +779,7 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
                   next.Describe(space.hasParticles, space.hasVolumes).c_str());
     *log = text;
     current = next;
+    ++switches;
     scale *= ratio;
     carried += lastEstimate * (time - modelStart) / T;
     modelStart = time;

@@ -159,9 +159,11 @@ struct ModelChoiceResult {
     std::vector<CandidateEstimate> candidates;  ///< every candidate, in EnumerateCandidates order
     double calibrationCpuSeconds = 0.0;         ///< s of CPU spent on probes, the pilot included
     double pilotCpuSeconds = 0.0;               ///< s of CPU of the pilot run (worlds without volumes)
-    std::vector<double> eventTimes;             ///< s: where the calibration's event windows start
-    int evaluatedCount = 0;                     ///< candidates estimated
-    double windowSeconds = 0.0;                 ///< s of simulated time per calibration run
+    /// PredictedWork units the probes and the pilot did: the calibration's cost, deterministic (CPU time is not).
+    double calibrationWork = 0.0;
+    std::vector<double> eventTimes;  ///< s: where the calibration's event windows start
+    int evaluatedCount = 0;          ///< candidates estimated
+    double windowSeconds = 0.0;      ///< s of simulated time per calibration run
 };
 
 /// Estimates every candidate on probes from `factory` (cheapest first, skipping those predicted to cost more
@@ -196,6 +198,12 @@ public:
     double CpuSeconds() const { return cpuSeconds; }
     /// Checks run so far.
     int Checks() const { return checks; }
+    /// PredictedWork units the watch's probes did so far (deterministic).
+    double Work() const { return work; }
+    /// The current model's predicted work per simulated second.
+    double CurrentWork() const { return PredictedWork(current, space); }
+    /// Model changes so far.
+    int Switches() const { return switches; }
 
 private:
     CandidateSpace space;
@@ -215,6 +223,8 @@ private:
     double growth = 1.0;        // the calibration's fitted growth exponent, used for every check
     double lastCheck = 0.0;     // s
     double cpuSeconds = 0.0;
+    double work = 0.0;
+    int switches = 0;
     // Events: the host's last three frames' positions and the last acceleration, the irregularity the calibration
     // window saw, the pending event, and the two newest snapshots.
     std::vector<double> x0, x1, x2, acceleration;
