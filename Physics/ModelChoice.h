@@ -101,8 +101,6 @@ public:
 };
 /// Every body's position as x, y, z triples: particles and volumes in insertion order, then cloth particles.
 void WorldPositions(const PhysicsSystem& world, std::vector<double>* out);
-/// Every body's velocity (m/s) as x, y, z triples, in WorldPositions' order.
-void WorldVelocities(const PhysicsSystem& world, std::vector<double>* out);
 /// J: kinetic energy of particles (cloth included) and volumes (linear and angular), gravitational potential
 /// energy (-m g . x), and spring energy (k (l - rest)^2 / 2 with the book's sign convention). Static bodies
 /// (mass 0) count nothing.
