@@ -392,7 +392,9 @@ std::vector<PlannedWindow> PlanWindows(const ProbeFactory& factory, const Candid
     std::vector<double> x0, x1, x2, a1;  // positions two steps back, one back, now; the last acceleration
     long long n = 0;
     bool haveA = false;
-    while ((n + 1) * h <= T * (1.0 + 1e-12)) {
+    // The pilot covers at most 50 windows (all of a run up to 10 s at the 0.2 s floor; the first 100 s of a long one).
+    const double pilotEnd = std::min(T, 50.0 * window);
+    while ((n + 1) * h <= pilotEnd * (1.0 + 1e-12)) {
         if (!pilot->AdvanceTo((n + 1) * h)) break;  // the scene's own model blew up: plan from what came before
         ++n;
         const double t = n * h;
