@@ -47,8 +47,9 @@ struct ModelCandidate {
     double step = 0.03;                                     ///< s, one physics step
     int iterations = 5;                                     ///< book and accumulated solvers: passes per step
     int softSubsteps = 4;                                   ///< soft solver: substeps per step
-    /// One line: "rk4, dt 0.02 s" / "soft solver, 8 substeps, dt 0.03 s" (only the parts that vary).
-    std::string Describe() const;
+    /// One line: "rk4, dt 0.02 s" / "soft solver 8 substeps, dt 0.03 s": the integrator when `particles`, the
+    /// solver and its passes when `volumes`, and the step.
+    std::string Describe(bool particles = true, bool volumes = true) const;
 };
 
 /// What the candidates may vary: each list holds the values the host can set and the scene needs (a world
@@ -62,12 +63,23 @@ struct CandidateSpace {
     std::vector<int> softSubsteps;  ///< soft solver only
     bool hasParticles = false;      ///< the world has particles (free, cloth or jointed): the integrator matters
     bool hasVolumes = false;        ///< the world has rigid volumes: the contact solver matters
+    bool hasContacts = false;       ///< particles can hit constraints (non-smooth: first order at best)
+    // Counts for the work model (PredictedWork).
+    double particleCount = 0.0;  ///< free and cloth particles
+    double springCount = 0.0;    ///< springs, cloth springs included, and joints
+    double volumeCount = 0.0;    ///< dynamic volumes
 };
 /// Every combination the space allows, in a fixed order (the estimator's order is by cost, not this).
 std::vector<ModelCandidate> EnumerateCandidates(const CandidateSpace& space);
 /// The candidate's refinement used to estimate its error: half the step when the space varies the step (else
 /// twice the passes).
 ModelCandidate Refine(const ModelCandidate& candidate, const CandidateSpace& space);
+/// Deterministic work per simulated second of a candidate on a space (force evaluations, integrations and contact
+/// passes per step, over the step): the order in which candidates are tried, and "cheapest". Never timing, so the
+/// same scene always gets the same model.
+double PredictedWork(const ModelCandidate& candidate, const CandidateSpace& space);
+/// "m" or "(relative)".
+const char* BudgetUnit(BudgetQuantity quantity);
 
 /// A fresh copy of the scene, at the state of the moment its factory was called, that the estimator can run.
 class ModelProbe {
@@ -96,28 +108,33 @@ double WorldConstraintError(const PhysicsSystem& world);
 /// How the estimator works; every number has its unit and the default is the documented one.
 struct ChoiceSettings {
     double runSeconds = 10.0;  ///< s: the run's simulated length (the estimate is for its end)
-    /// Fraction of the run used to calibrate, and its floor and ceiling (s); the window is whole steps of the
-    /// coarsest candidate and never longer than the run.
-    double windowFraction = 0.1;
-    double minWindow = 0.3;
+    /// Fraction of the run used to calibrate, and its floor and ceiling (s); the window is whole steps of each
+    /// candidate (at least two) and never longer than the run. Every candidate tried costs about three windows of
+    /// its own run (itself and its refinement at half the step), so the window is short.
+    double windowFraction = 0.05;
+    double minWindow = 0.2;
     double maxWindow = 2.0;
     /// A candidate meets the budget when safety * estimate <= bound.
     double safety = 2.0;
+    /// Candidates estimated at most (the rest are reported as not run).
+    int maxEvaluations = 40;
     /// The live check: a window of this fraction of the calibration window, run every `checkEvery` seconds of
-    /// simulated time (0 = a fifth of the run).
-    double checkWindowFraction = 0.5;
+    /// simulated time (0 = an eighth of the run).
+    double checkWindowFraction = 0.3;
     double checkEvery = 0.0;
 };
 
 /// One candidate as the estimator saw it.
 struct CandidateEstimate {
     ModelCandidate model;
-    double estimate = 0.0;        ///< the budget's quantity at the end of the run, estimated (inf: unstable)
-    double cpuPerSimSecond = 0.0; ///< s of CPU per simulated s, measured on the calibration window
-    bool evaluated = false;       ///< false: skipped (its predicted cost was above the chosen one's)
+    double estimate = 0.0;         ///< the budget's quantity at the end of the run, estimated (inf: unstable)
+    double predictedWork = 0.0;    ///< PredictedWork: what "cheapest" means
+    double cpuPerSimSecond = 0.0;  ///< s of CPU per simulated s, measured on the calibration window (reported only)
+    double growth = 0.0;           ///< the error's fitted growth exponent in time
+    bool evaluated = false;        ///< false: skipped (its predicted cost was above the chosen one's)
     bool stable = true;
-    bool meets = false;           ///< safety * estimate <= bound
-    std::string note;             ///< why skipped, or why the estimate is not trusted
+    bool meets = false;  ///< safety * estimate <= bound
+    std::string note;    ///< why skipped, or why the estimate is not trusted
 };
 
 /// What ChooseModel found.
@@ -127,6 +144,7 @@ struct ModelChoiceResult {
     int best = -1;          ///< index of the candidate with the smallest estimate (for the refusal message)
     std::vector<CandidateEstimate> candidates;  ///< every candidate, in EnumerateCandidates order
     double calibrationCpuSeconds = 0.0;         ///< s of CPU spent on probes
+    int evaluatedCount = 0;                     ///< candidates estimated
     double windowSeconds = 0.0;                 ///< s of simulated time per calibration run
 };
 
@@ -137,19 +155,23 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
 
 /// The live watch: after the choice, call Check at each frame with the simulated time since the start and a
 /// factory that builds probes from the world as it is now. It runs the current model and its refinement over a
-/// short window every settings.checkEvery seconds, keeps the running estimate (the error accumulated so far
-/// plus the projected rest) and, when safety * projection leaves the budget, refines the model.
+/// short window every settings.checkEvery seconds, keeps the running estimate (the error of earlier models for their
+/// share of the run plus the current model's window extrapolated with the calibration's growth) and, when it
+/// exceeds the budget itself, refines the model (the next smaller step, else more passes).
 class ModelWatch {
 public:
     ModelWatch(const CandidateSpace& space, const ErrorBudget& budget, const ChoiceSettings& settings,
-               const ModelCandidate& chosen, double calibrationEstimate);
+               const ModelCandidate& chosen, double calibrationEstimate, double calibrationGrowth);
     /// True when the model changed at this call: then Current() is the new model and *log says when and why.
+    /// *log is also set (and false returned) when the estimate left the budget but no finer model exists.
     bool Check(double time, const ProbeFactory& factory, std::string* log);
     const ModelCandidate& Current() const { return current; }
     /// The running estimate of the error at the end of the run, in the budget's unit.
     double RunningEstimate() const { return running; }
     /// s of CPU spent on the watch's probes so far.
     double CpuSeconds() const { return cpuSeconds; }
+    /// Checks run so far.
+    int Checks() const { return checks; }
 
 private:
     CandidateSpace space;
@@ -157,7 +179,11 @@ private:
     ChoiceSettings settings;
     ModelCandidate current;
     double running = 0.0;
-    double accumulated = 0.0;  // estimated error made before the last check
-    double lastCheck = 0.0;    // s
+    double currentEstimate = 0.0;  // the last window's estimate for the current model over the whole run
+    double carried = 0.0;          // error of earlier models, each for its share of the run
+    double modelStart = 0.0;       // s: when the current model took over
+    double growth = 1.0;           // the calibration's fitted growth exponent, used for every check
+    double lastCheck = 0.0;        // s
     double cpuSeconds = 0.0;
+    int checks = 0;
 };

@@ -17,9 +17,9 @@ class PhysicsSystem;
 /// The request, bound to the `--set` keys `model`, `tolerance` and `budget` (AddAutoModelParameters) or read from
 /// a scene file's "model" and "budget".
 struct AutoModelRequest {
-    int model = 0;               ///< 0 "fixed" (the scene's own settings, as before), 1 "auto"
-    float tolerance = 0.01f;     ///< the budget's bound, in the quantity's unit
-    int quantity = 0;            ///< BudgetQuantity as int: 0 position (m), 1 energy (relative), 2 constraint (m)
+    int model = 0;            ///< 0 "fixed" (the scene's own settings, as before), 1 "auto"
+    float tolerance = 0.01f;  ///< the budget's bound, in the quantity's unit
+    int quantity = 0;         ///< BudgetQuantity as int: 0 position (m), 1 energy (relative), 2 constraint (m)
     bool Auto() const { return model == 1; }
     ErrorBudget Budget() const;
 };

@@ -1,0 +1,294 @@
+#include "Demos/Scenes/AutoModel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iterator>
+#include <limits>
+#include <sstream>
+
+#include "Demos/Scenes/FileScene.h"
+#include "Demos/Scenes/SceneExport.h"
+#include "Physics/Cloth.h"
+#include "Physics/PhysicsSystem.h"
+#include "Physics/RigidbodyVolume.h"
+
+namespace {
+
+/// A FileScene built from a description of the host's world, run with one candidate.
+class FileSceneProbe : public ModelProbe {
+public:
+    explicit FileSceneProbe(const SceneDescription& d) : description(d) {}
+
+    void Apply(const ModelCandidate& model) override {
+        SceneWorld& w = description.world;
+        w.integrator = model.integrator;
+        w.contactSolver = model.solver;
+        w.iterations = model.iterations;
+        w.soft.substeps = model.softSubsteps;
+        w.step = static_cast<float>(model.step);
+        step = model.step;
+        scene = std::make_unique<FileScene>(description);
+        steps = 0;
+    }
+
+    bool AdvanceTo(double seconds) override {
+        const float dt = static_cast<float>(step);
+        while (static_cast<double>(steps + 1) * step <= seconds * (1.0 + 1e-12) + 1e-12) {
+            if (!scene->Step(dt)) return false;
+            ++steps;
+        }
+        return true;
+    }
+
+    const PhysicsSystem& World() const override { return scene->System(); }
+
+private:
+    SceneDescription description;
+    std::unique_ptr<FileScene> scene;
+    double step = 0.03;
+    long long steps = 0;
+};
+
+/// A factory over the host's world as it is at the first call (described once, shared by every probe).
+ProbeFactory FactoryOf(const PhysicsSystem& world) {
+    auto description = std::make_shared<SceneDescription>();
+    auto described = std::make_shared<bool>(false);
+    const PhysicsSystem* at = &world;
+    return [description, described, at]() -> std::unique_ptr<ModelProbe> {
+        if (!*described) {
+            std::vector<std::string> notes;  // what the format cannot express: the estimate runs without it
+            *description = DescribeWorld(*at, "auto-model probe", &notes);
+            *described = true;
+        }
+        return std::make_unique<FileSceneProbe>(*description);
+    };
+}
+
+constexpr double kStepLadder[] = {0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 0.0005, 0.0002, 0.0001};
+constexpr int kIterationLadder[] = {1, 2, 5, 10, 20, 50};
+constexpr int kSubstepLadder[] = {1, 2, 4, 8, 16, 32};
+
+bool InRange(const ParameterSet::Entry& e, double v) { return v >= e.min && v <= e.max; }
+
+std::string Number(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", v);
+    return text;
+}
+
+}  // namespace
+
+ErrorBudget AutoModelRequest::Budget() const {
+    ErrorBudget b;
+    b.quantity = static_cast<BudgetQuantity>(std::clamp(quantity, 0, 2));
+    b.bound = tolerance;
+    return b;
+}
+
+void AddAutoModelParameters(ParameterSet* set, AutoModelRequest* request) {
+    set->AddChoice("model", &request->model, {"fixed", "auto"},
+                   "fixed: the scene's own settings; auto: the cheapest model whose estimated error meets the "
+                   "budget (docs/model-choice.md)");
+    set->AddFloat("tolerance", &request->tolerance, 1e-9f, 1e6f,
+                  "auto model: the error budget's bound, in the budget quantity's unit (m or relative)");
+    set->AddChoice("budget", &request->quantity, {"position", "energy", "constraint"},
+                   "auto model: what the budget bounds: position error of any body at the end (m), relative "
+                   "energy drift, or joint constraint error (m)");
+}
+
+CandidateSpace AutoModel::SpaceOf(const ParameterSet& params, const PhysicsSystem& world, double hostStep) {
+    CandidateSpace space;
+    for (const Cloth* cloth : world.Cloths()) {
+        space.particleCount += static_cast<double>(cloth->verts.size());
+        space.springCount += static_cast<double>(cloth->structural.size() + cloth->shear.size() + cloth->bend.size());
+    }
+    space.particleCount += static_cast<double>(world.Particles().size());
+    space.springCount += static_cast<double>(world.Springs().size() + world.Joints().size());
+    for (const RigidbodyVolume* v : world.Volumes()) space.volumeCount += v->mass > 0.0f ? 1.0 : 0.0;
+    space.hasParticles = space.particleCount > 0.0;
+    space.hasVolumes = space.volumeCount > 0.0;
+    space.hasContacts = space.hasParticles && !world.Constraints().empty();
+
+    ModelCandidate& base = space.base;
+    base.integrator = world.settings.integrator;
+    base.solver = world.settings.contactSolver;
+    base.iterations = world.settings.solverIterations;
+    base.softSubsteps = world.settings.soft.substeps;
+    base.step = hostStep;
+    if (const ParameterSet::Entry* dt = params.Find("dt")) {
+        const double current = std::atof(params.Get("dt").c_str());
+        if (current > 0.0) base.step = current;
+        for (double s : kStepLadder) {
+            if (s > 0.0 && InRange(*dt, s)) space.steps.push_back(s);
+        }
+    }
+    if (const ParameterSet::Entry* e = params.Find("integrator"); e && space.hasParticles) {
+        for (Integrator i : kAllIntegrators) {
+            if (std::find(e->choices.begin(), e->choices.end(), ToString(i)) != e->choices.end()) {
+                space.integrators.push_back(i);
+            }
+        }
+    }
+    if (const ParameterSet::Entry* e = params.Find("solver"); e && space.hasVolumes) {
+        for (ContactSolver s : {ContactSolver::Book, ContactSolver::Accumulated, ContactSolver::Soft}) {
+            if (std::find(e->choices.begin(), e->choices.end(), ToString(s)) != e->choices.end()) {
+                space.solvers.push_back(s);
+            }
+        }
+    }
+    if (const ParameterSet::Entry* e = params.Find("iterations"); e && space.hasVolumes) {
+        for (int n : kIterationLadder) {
+            if (InRange(*e, n)) space.iterations.push_back(n);
+        }
+    }
+    if (const ParameterSet::Entry* e = params.Find("soft-substeps"); e && space.hasVolumes) {
+        for (int n : kSubstepLadder) {
+            if (InRange(*e, n)) space.softSubsteps.push_back(n);
+        }
+    }
+    return space;
+}
+
+std::vector<std::pair<std::string, std::string>> AutoModel::Assignments(const ParameterSet& params,
+                                                                        const ModelCandidate& model) {
+    std::vector<std::pair<std::string, std::string>> out;
+    auto want = [&](const char* key, const std::string& value, bool numeric) {
+        if (params.Find(key) == nullptr) return;
+        const std::string now = params.Get(key);
+        const bool same = numeric ? std::fabs(std::atof(now.c_str()) - std::atof(value.c_str())) <=
+                                        1e-6 * std::fabs(std::atof(value.c_str()))
+                                  : now == value;
+        if (!same) out.emplace_back(key, value);
+    };
+    want("integrator", ToString(model.integrator), false);
+    want("solver", ToString(model.solver), false);
+    want("iterations", Number(model.iterations), true);
+    want("soft-substeps", Number(model.softSubsteps), true);
+    want("dt", Number(model.step), true);
+    return out;
+}
+
+namespace {
+
+bool ApplyModel(ParameterSet* params, const ModelCandidate& model, std::string* error) {
+    for (const auto& [key, value] : AutoModel::Assignments(*params, model)) {
+        if (!params->Set(key, value, error)) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double step, double runSeconds,
+                       const AutoModelRequest& r, std::string* error) {
+    request = r;
+    const ErrorBudget budget = r.Budget();
+    if (!ValidateBudget(budget, error)) return false;
+    hostStep = step;
+    space = SpaceOf(*params, world, hostStep);
+    settings = ChoiceSettings();
+    settings.runSeconds = runSeconds;
+    choice = ChooseModel(FactoryOf(world), space, budget, settings);
+    if (!choice.feasible) {
+        char text[512];
+        if (choice.best >= 0) {
+            const CandidateEstimate& b = choice.candidates[choice.best];
+            std::snprintf(text, sizeof text,
+                          "no model meets the %s error budget %g %s (with safety factor %g): the best estimate "
+                          "the sandbox could reach is %.3g %s (%s; %d candidates estimated; --explain-model lists "
+                          "them)",
+                          ToString(budget.quantity), budget.bound, BudgetUnit(budget.quantity), settings.safety,
+                          b.estimate, BudgetUnit(budget.quantity),
+                          b.model.Describe(space.hasParticles, space.hasVolumes).c_str(), choice.evaluatedCount);
+        } else {
+            std::snprintf(text, sizeof text,
+                          "no model meets the %s error budget %g %s: every candidate estimated was unstable (%d "
+                          "candidates estimated)",
+                          ToString(budget.quantity), budget.bound, BudgetUnit(budget.quantity), choice.evaluatedCount);
+        }
+        *error = text;
+        return false;
+    }
+    const CandidateEstimate& chosen = choice.candidates[choice.chosen];
+    if (!ApplyModel(params, chosen.model, error)) return false;
+    watch = std::make_unique<ModelWatch>(space, budget, settings, chosen.model, chosen.estimate, chosen.growth);
+    active = true;
+    return true;
+}
+
+void AutoModel::AfterFrame(ParameterSet* params, const PhysicsSystem& world, double time) {
+    if (!active) return;
+    std::string line;
+    const bool changed = watch->Check(time, FactoryOf(world), &line);
+    if (changed) {
+        std::string error;
+        if (!ApplyModel(params, watch->Current(), &error)) line += " (not applied: " + error + ")";
+    }
+    if (!line.empty()) log.push_back(line);
+}
+
+const ModelCandidate& AutoModel::Current() const {
+    if (watch) return watch->Current();
+    return space.base;
+}
+
+double AutoModel::RunningEstimate() const { return watch ? watch->RunningEstimate() : 0.0; }
+
+double AutoModel::OverheadCpuSeconds() const {
+    return choice.calibrationCpuSeconds + (watch ? watch->CpuSeconds() : 0.0);
+}
+
+std::string AutoModel::Explain() const {
+    const ErrorBudget budget = request.Budget();
+    std::ostringstream out;
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "auto model: %s error budget %g %s, safety factor %g; calibration window %g s of a %g s run; %d "
+                  "of %zu candidates estimated in %.3g s CPU\n",
+                  ToString(budget.quantity), budget.bound, BudgetUnit(budget.quantity), settings.safety,
+                  choice.windowSeconds, settings.runSeconds, choice.evaluatedCount, choice.candidates.size(),
+                  choice.calibrationCpuSeconds);
+    out << line;
+    std::snprintf(line, sizeof line, "  %-6s %-44s %-12s %-12s %-12s %s\n", "chosen", "candidate", "estimate",
+                  "work/sim-s", "cpu-s/sim-s", "note");
+    out << line;
+    std::vector<std::size_t> order(choice.candidates.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return choice.candidates[a].predictedWork < choice.candidates[b].predictedWork;
+    });
+    for (std::size_t i : order) {
+        const CandidateEstimate& c = choice.candidates[i];
+        char estimate[32] = "-", cpu[32] = "-";
+        if (c.evaluated) {
+            std::snprintf(estimate, sizeof estimate, "%.3g", c.estimate);
+            std::snprintf(cpu, sizeof cpu, "%.3g", c.cpuPerSimSecond);
+        }
+        std::string note = c.note;
+        if (c.evaluated && c.meets) note = "meets the budget";
+        if (c.evaluated && !c.meets && c.stable) note = "misses the budget";
+        std::snprintf(line, sizeof line, "  %-6s %-44s %-12s %-12.4g %-12s %s\n",
+                      static_cast<int>(i) == choice.chosen ? "*" : "",
+                      c.model.Describe(space.hasParticles, space.hasVolumes).c_str(), estimate, c.predictedWork, cpu,
+                      note.c_str());
+        out << line;
+    }
+    return out.str();
+}
+
+std::string AutoModel::Summary() const {
+    if (!active) return "";
+    const ErrorBudget budget = request.Budget();
+    const CandidateEstimate& chosen = choice.candidates[choice.chosen];
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "Model: auto, %s; estimated %s error %.3g %s (budget %g, safety %g); %.3g s CPU per simulated s; "
+                  "auto overhead %.3g s CPU (calibration %.3g s, %d candidates; %d checks, %zu switches)",
+                  Current().Describe(space.hasParticles, space.hasVolumes).c_str(), ToString(budget.quantity),
+                  RunningEstimate(), BudgetUnit(budget.quantity), budget.bound, settings.safety, chosen.cpuPerSimSecond,
+                  OverheadCpuSeconds(), choice.calibrationCpuSeconds, choice.evaluatedCount,
+                  watch ? watch->Checks() : 0, log.size());
+    return text;
+}

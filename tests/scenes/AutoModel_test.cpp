@@ -1,0 +1,298 @@
+// The auto model (docs/model-choice.md) on FileScenes run as the app runs them: the choice meets the budget on
+// problems with an exact answer, an impossible or invalid budget is refused, the choice is deterministic, and the
+// live watch refines the model when the scene changes regime.
+#include "Demos/Scenes/AutoModel.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "Demos/Scenes/FileScene.h"
+#include "Physics/PhysicsSystem.h"
+
+namespace {
+
+constexpr double kHostStep = 0.03;  // s, the host's fixed step (book)
+
+SceneBody Particle(const vec3& position, const vec3& velocity, float mass = 1.0f) {
+    SceneBody b;
+    b.id = "p";
+    b.kind = SceneBodyKind::Particle;
+    b.position = position;
+    b.velocity = velocity;
+    b.mass = mass;
+    b.velocityRetention = 1.0f;  // no damping: the exact answer is known
+    return b;
+}
+
+/// What one auto run did.
+struct AutoRun {
+    bool chosen = false;
+    std::string error;
+    std::vector<std::string> log;
+    ModelCandidate model;
+    double estimate = 0.0;
+    double seconds = 0.0;  // simulated
+};
+
+/// Runs `d` for `frames` host frames as the app does: Choose after the parameters, the host's accumulator running
+/// whole steps of the scene's dt, AfterFrame after each frame. `check` sees the scene at the end.
+template <typename Check>
+AutoRun RunAuto(const SceneDescription& d, const AutoModelRequest& request, int frames, Check check) {
+    FileScene scene(d);
+    ParameterSet params;
+    scene.AddParameters(&params);
+    AutoModel autoModel;
+    AutoRun run;
+    run.chosen = autoModel.Choose(&params, scene.System(), kHostStep, frames * kHostStep, request, &run.error);
+    if (!run.chosen) return run;
+    double host = 0.0, physics = 0.0;
+    long long steps = 0;
+    for (int f = 1; f <= frames; ++f) {
+        host = f * kHostStep;
+        const double dt = scene.PhysicsStep() > 0.0f ? scene.PhysicsStep() : kHostStep;
+        while (physics + dt <= host + 1e-9) {
+            scene.Step(static_cast<float>(dt));
+            physics += dt;
+            ++steps;
+        }
+        autoModel.AfterFrame(&params, scene.System(), physics);
+    }
+    run.log = autoModel.Log();
+    if (getenv("PSB_EXPLAIN"))
+        for (auto& l : run.log) std::printf("%s\n", l.c_str());
+    run.model = autoModel.Current();
+    run.estimate = autoModel.RunningEstimate();
+    run.seconds = physics;
+    check(scene, physics);
+    return run;
+}
+
+SceneDescription Projectile() {
+    SceneDescription d;
+    d.bodies.push_back(Particle(vec3(0, 0, 0), vec3(20, 15, 5)));
+    return d;
+}
+
+double ProjectileError(const FileScene& scene, double t) {
+    const vec3 x = scene.Particles()[0].GetPosition();
+    const double ex = 20 * t, ey = 15 * t - 0.5 * 9.82 * t * t, ez = 5 * t;
+    return std::sqrt((x.x - ex) * (x.x - ex) + (x.y - ey) * (x.y - ey) + (x.z - ez) * (x.z - ez));
+}
+
+/// A 1 kg particle on a 39.5 N/m spring to a fixed (mass 0) particle, no gravity: period about 1 s.
+SceneDescription Oscillator() {
+    SceneDescription d;
+    d.world.gravity = vec3(0, 0, 0);
+    d.bodies.push_back(Particle(vec3(0, 0, 0), vec3(0, 0, 0), 0.0f));
+    d.bodies.push_back(Particle(vec3(1.5f, 0, 0), vec3(0, 0, 0), 1.0f));  // amplitude 0.5 m
+    SceneSpring s;
+    s.a = 0;
+    s.b = 1;
+    s.stiffness = 39.5f;
+    s.restLength = 1.0f;
+    d.springs.push_back(s);
+    return d;
+}
+
+double OscillatorError(const FileScene& scene, double t) {
+    const double omega = std::sqrt(39.5);
+    const vec3 x = scene.Particles()[1].GetPosition();
+    const double exact = 1.0 + 0.5 * std::cos(omega * t);
+    return std::sqrt((x.x - exact) * (x.x - exact) + double(x.y) * x.y + double(x.z) * x.z);
+}
+
+AutoModelRequest Budget(double bound, int quantity = 0) {
+    AutoModelRequest r;
+    r.model = 1;
+    r.tolerance = static_cast<float>(bound);
+    r.quantity = quantity;
+    return r;
+}
+
+TEST(AutoModel, ProjectileMeetsEachBudget) {
+    for (double bound : {1e-1, 1e-2, 1e-3}) {
+        double actual = 0.0;
+        const AutoRun run = RunAuto(Projectile(), Budget(bound), 67,
+                                    [&](const FileScene& s, double t) { actual = ProjectileError(s, t); });
+        ASSERT_TRUE(run.chosen) << run.error;
+        EXPECT_LE(actual, bound) << "budget " << bound << ": " << run.model.Describe();
+    }
+}
+
+TEST(AutoModel, OscillatorMeetsEachBudget) {
+    for (double bound : {1e-1, 1e-2, 1e-3}) {
+        double actual = 0.0;
+        const AutoRun run = RunAuto(Oscillator(), Budget(bound), 334,
+                                    [&](const FileScene& s, double t) { actual = OscillatorError(s, t); });
+        ASSERT_TRUE(run.chosen) << run.error;
+        EXPECT_LE(actual, bound) << "budget " << bound << ": " << run.model.Describe(true, false);
+        EXPECT_EQ(run.model.integrator == Integrator::ExplicitEuler, false) << "gains energy: never the cheapest";
+    }
+}
+
+}  // namespace
+
+namespace {
+
+SceneDescription Stack(int n) {
+    SceneDescription d;
+    SceneBody ground;
+    ground.id = "ground";
+    ground.kind = SceneBodyKind::Box;
+    ground.position = vec3(0, -0.5f, 0);
+    ground.halfExtents = vec3(10, 0.5f, 10);
+    ground.mass = 0.0f;
+    d.bodies.push_back(ground);
+    for (int i = 0; i < n; ++i) {
+        SceneBody b;
+        b.id = "b" + std::to_string(i);
+        b.kind = SceneBodyKind::Box;
+        b.position = vec3(0, 0.5f + i, 0);
+        b.halfExtents = vec3(0.5f, 0.5f, 0.5f);
+        d.bodies.push_back(b);
+    }
+    return d;
+}
+
+TEST(AutoModel, StackDrift) {
+    for (double bound : {1e-1, 1e-2}) {
+        double actual = 0.0;
+        const SceneDescription d = Stack(5);
+        const AutoRun run = RunAuto(d, Budget(bound), 334, [&](const FileScene& s, double) {
+            for (std::size_t i = 1; i < s.Volumes().size(); ++i) {
+                const vec3 e = s.Volumes()[i].position - d.bodies[i].position;
+                actual = std::max(actual, double(std::sqrt(e.x * e.x + e.y * e.y + e.z * e.z)));
+            }
+        });
+        ASSERT_TRUE(run.chosen) << run.error;
+        EXPECT_LE(actual, bound) << "budget " << bound << ": " << run.model.Describe(false, true);
+    }
+}
+
+}  // namespace
+
+namespace {
+
+// A particle falls freely for 2 s (the calibration window sees an exact parabola, so the coarsest step is chosen),
+// then bounces: the watch must see the regime change and refine the step, saying when and why.
+TEST(AutoModel, WatchRefinesWhenContactBegins) {
+    SceneDescription d;
+    d.bodies.push_back(Particle(vec3(0, 20, 0), vec3(0, 0, 0)));
+    d.bodies.back().restitution = 0.5f;
+    SceneConstraint floor;
+    floor.position = vec3(0, -0.5f, 0);
+    floor.halfExtents = vec3(10, 0.5f, 10);
+    d.constraints.push_back(floor);
+    ModelCandidate chosen;
+    {
+        FileScene scene(d);
+        ParameterSet params;
+        scene.AddParameters(&params);
+        AutoModel autoModel;
+        std::string error;
+        ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, 334 * kHostStep, Budget(1e-2), &error));
+        chosen = autoModel.Current();
+        EXPECT_TRUE(autoModel.Log().empty());
+    }
+    const AutoRun run = RunAuto(d, Budget(1e-2), 334, [](const FileScene&, double) {});
+    ASSERT_TRUE(run.chosen) << run.error;
+    ASSERT_FALSE(run.log.empty());
+    double when = 0.0;
+    ASSERT_EQ(std::sscanf(run.log[0].c_str(), "t = %lf s:", &when), 1) << run.log[0];
+    EXPECT_GT(when, 2.0) << "no contact before t = 2.02 s: " << run.log[0];
+    EXPECT_NE(run.log[0].find("switching from"), std::string::npos) << run.log[0];
+    EXPECT_LT(run.model.step, chosen.step);
+    EXPECT_EQ(run.model.integrator, chosen.integrator);  // a switch refines; it never changes the integrator
+}
+
+TEST(AutoModel, RefusesABudgetNoCandidateMeets) {
+    FileScene scene(Stack(3));
+    ParameterSet params;
+    scene.AddParameters(&params);
+    const std::string before = params.Get("solver") + params.Get("iterations") + params.Get("dt");
+    AutoModel autoModel;
+    std::string error;
+    EXPECT_FALSE(autoModel.Choose(&params, scene.System(), kHostStep, 1.0, Budget(1e-9), &error));
+    EXPECT_NE(error.find("1e-09 m"), std::string::npos) << error;
+    EXPECT_NE(error.find("best estimate"), std::string::npos) << error;
+    EXPECT_FALSE(autoModel.Active());
+    EXPECT_EQ(params.Get("solver") + params.Get("iterations") + params.Get("dt"), before) << "nothing applied";
+}
+
+TEST(AutoModel, RefusesBudgetsThatAreNotFiniteAndPositive) {
+    FileScene scene(Projectile());
+    ParameterSet params;
+    scene.AddParameters(&params);
+    for (double bad : {0.0, -1e-3, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+        AutoModel autoModel;
+        std::string error;
+        EXPECT_FALSE(autoModel.Choose(&params, scene.System(), kHostStep, 1.0, Budget(bad), &error)) << bad;
+        EXPECT_NE(error.find("must be finite and > 0"), std::string::npos) << error;
+    }
+    std::string error;
+    EXPECT_TRUE(ValidateBudget({BudgetQuantity::Energy, 1e-6}, &error));
+}
+
+TEST(AutoModel, SameSceneSameChoice) {
+    std::vector<std::string> picks;
+    for (int i = 0; i < 2; ++i) {
+        FileScene scene(Stack(3));
+        ParameterSet params;
+        scene.AddParameters(&params);
+        AutoModel autoModel;
+        std::string error;
+        ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, 3.0, Budget(1e-2), &error)) << error;
+        std::string pick = autoModel.Current().Describe();
+        for (const CandidateEstimate& c : autoModel.Choice().candidates) pick += " " + std::to_string(c.estimate);
+        picks.push_back(pick);
+    }
+    EXPECT_EQ(picks[0], picks[1]);
+}
+
+TEST(AutoModel, ChosenModelReachesTheHost) {
+    FileScene scene(Oscillator());
+    ParameterSet params;
+    scene.AddParameters(&params);
+    AutoModel autoModel;
+    std::string error;
+    ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, 10.0, Budget(1e-3), &error)) << error;
+    const ModelCandidate& m = autoModel.Current();
+    EXPECT_EQ(params.Get("integrator"), ToString(m.integrator));
+    EXPECT_FLOAT_EQ(scene.PhysicsStep(), static_cast<float>(m.step));
+    EXPECT_EQ(scene.System().settings.integrator, m.integrator);
+    const std::string explain = autoModel.Explain();
+    EXPECT_NE(explain.find("  *      " + m.Describe(true, false)), std::string::npos) << explain;
+    EXPECT_NE(autoModel.Summary().find(m.Describe(true, false)), std::string::npos) << autoModel.Summary();
+}
+
+TEST(AutoModel, CandidatesVaryOnlyWhatTheSceneHasAndTheHostCanSet) {
+    FileScene particles(Oscillator());
+    ParameterSet p;
+    particles.AddParameters(&p);
+    CandidateSpace s = AutoModel::SpaceOf(p, particles.System(), kHostStep);
+    EXPECT_TRUE(s.hasParticles);
+    EXPECT_FALSE(s.hasVolumes);
+    EXPECT_EQ(s.integrators.size(), 5u);
+    EXPECT_TRUE(s.solvers.empty()) << "no volumes: the contact solver is not a choice";
+    EXPECT_EQ(EnumerateCandidates(s).size(), 5u * s.steps.size());
+
+    FileScene boxes(Stack(2));
+    ParameterSet b;
+    boxes.AddParameters(&b);
+    s = AutoModel::SpaceOf(b, boxes.System(), kHostStep);
+    EXPECT_TRUE(s.integrators.empty()) << "no particles: the integrator is not a choice";
+    EXPECT_EQ(s.solvers.size(), 3u);
+
+    ParameterSet noStep;  // a host without a dt key keeps its own step
+    AutoModelRequest request;
+    AddAutoModelParameters(&noStep, &request);
+    s = AutoModel::SpaceOf(noStep, particles.System(), 0.025);
+    EXPECT_TRUE(s.steps.empty());
+    for (const ModelCandidate& c : EnumerateCandidates(s)) EXPECT_EQ(c.step, 0.025);
+}
+
+}  // namespace
