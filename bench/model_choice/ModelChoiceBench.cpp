@@ -162,6 +162,7 @@ struct Case {
     RunResult autoRun;
     const SweepRow* cheapest = nullptr;
     RunResult cheapestRun;
+    double own = NAN;  ///< OwnQuantity of auto's run
     bool Ran() const { return autoRun.ok && !autoRun.refused; }
     bool Within() const { return Ran() ? autoRun.error <= budget : cheapest == nullptr; }
     bool Under3x() const { return !Ran() || autoRun.error <= 3.0 * budget; }
@@ -171,6 +172,26 @@ struct Case {
                    : NAN;
     }
 };
+
+/// Auto's own quantity at the end of the run (its budget's: the largest body distance, m, or |E - E_ref| / |E0|)
+/// against the most accurate sweep setting's run, which stands for the exact run; NAN when either did not run or
+/// they ended at different times.
+double OwnQuantity(const RunResult& run, const RunResult& reference, BudgetQuantity quantity) {
+    if (run.refused || !run.ok || reference.endPositions.empty() || !std::isfinite(run.error) ||
+        std::fabs(run.simSeconds - reference.simSeconds) > 1e-9 ||
+        run.endPositions.size() != reference.endPositions.size())
+        return NAN;
+    if (quantity == BudgetQuantity::Energy)
+        return std::fabs(run.endEnergy - reference.endEnergy) / std::fabs(reference.startEnergy);
+    double worst = 0.0;
+    for (std::size_t i = 0; i + 2 < run.endPositions.size(); i += 3) {
+        const double dx = run.endPositions[i] - reference.endPositions[i],
+                     dy = run.endPositions[i + 1] - reference.endPositions[i + 1],
+                     dz = run.endPositions[i + 2] - reference.endPositions[i + 2];
+        worst = std::fmax(worst, std::sqrt(dx * dx + dy * dy + dz * dz));
+    }
+    return worst;
+}
 
 struct ProblemRuns {
     const ReferenceProblem* problem;
@@ -196,20 +217,23 @@ std::string Report(const std::vector<Case>& cases, const std::vector<ProblemRuns
     const std::time_t now = std::time(nullptr);
     std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
     md << "Made by `" << command << "` on " << date << ".\n\n";
-    md << "| problem | budget | auto budget | auto's choice | error | error / budget | CPU s per s | "
-          "cheapest in the sweep | its error | its CPU s per s | cost auto / cheapest | calibration CPU s | "
-          "switches | verdict |\n";
+    md << "| problem | budget | auto budget | auto's model | error | error / budget | verdict | CPU s per s | "
+          "auto's overhead, CPU s | cheapest in the sweep | its error here | its CPU s per s | cost auto / cheapest | "
+          "auto's quantity at the end: estimated, measured |\n";
     md << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const Case& c : cases) {
         const ReferenceProblem& p = *c.problem;
+        std::string model = c.Ran() ? c.autoRun.chosen : std::string("refused");
+        if (c.Ran() && c.autoRun.switches > 0)
+            model += " -> " + c.autoRun.model + " (" + std::to_string(c.autoRun.switches) + " log lines)";
         md << "| " << p.name << " | " << Num(c.budget) << " | " << Num(c.autoBound) << " " << ToString(p.quantity)
-           << " | " << (c.Ran() ? c.autoRun.chosen : std::string("refused")) << " | "
-           << (c.Ran() ? Num(c.autoRun.error) : "-") << " | " << (c.Ran() ? Num(c.autoRun.error / c.budget) : "-")
-           << " | " << Num(c.autoRun.cpuPerSimSecond) << " | " << (c.cheapest ? c.cheapest->Describe() : "none")
-           << " | " << (c.cheapest ? Num(c.cheapestRun.error) : "-") << " | "
-           << (c.cheapest ? Num(c.cheapestRun.cpuPerSimSecond) : "-") << " | "
-           << (std::isnan(c.CostRatio()) ? "-" : Num(c.CostRatio(), 2)) << " | " << Num(c.autoRun.overheadCpuSeconds)
-           << " | " << c.autoRun.switches << " | " << Verdict(c) << " |\n";
+           << " | " << model << " | " << (c.Ran() ? Num(c.autoRun.error) : "-") << " | "
+           << (c.Ran() ? Num(c.autoRun.error / c.budget) : "-") << " | " << Verdict(c) << " | "
+           << (c.Ran() ? Num(c.autoRun.cpuPerSimSecond) : "-") << " | " << Num(c.autoRun.overheadCpuSeconds) << " | "
+           << (c.cheapest ? c.cheapest->Describe() : "none") << " | " << (c.cheapest ? Num(c.cheapestRun.error) : "-")
+           << " | " << (c.cheapest ? Num(c.cheapestRun.cpuPerSimSecond) : "-") << " | "
+           << (std::isnan(c.CostRatio()) ? "-" : Num(c.CostRatio(), 2)) << " | "
+           << (c.Ran() ? Num(c.autoRun.estimate) : "-") << ", " << (std::isnan(c.own) ? "-" : Num(c.own)) << " |\n";
     }
     int ran = 0, within = 0, under3 = 0, costed = 0, cheapEnough = 0, refusedRight = 0, refusedWrong = 0;
     for (const Case& c : cases) {
@@ -248,7 +272,7 @@ std::string Report(const std::vector<Case>& cases, const std::vector<ProblemRuns
 std::string Csv(const std::vector<Case>& cases) {
     std::ostringstream csv;
     csv << "problem,sweep_problem,param,budget,quantity,auto_bound,refused,chosen,error,cpu_per_sim_s,"
-           "overhead_cpu_s,switches,cheapest,cheapest_error,cheapest_cpu_per_sim_s,cost_ratio\n";
+           "overhead_cpu_s,switches,cheapest,cheapest_error,cheapest_cpu_per_sim_s,cost_ratio,own_quantity\n";
     for (const Case& c : cases) {
         const ReferenceProblem& p = *c.problem;
         csv << p.name << "," << p.sweepProblem << "," << p.sweepParam << "," << Num(c.budget, 6) << ","
@@ -258,7 +282,8 @@ std::string Csv(const std::vector<Case>& cases) {
             << c.autoRun.switches << "," << (c.cheapest ? c.cheapest->Describe() : "-") << ","
             << (c.cheapest ? Num(c.cheapestRun.error, 6) : "-") << ","
             << (c.cheapest ? Num(c.cheapestRun.cpuPerSimSecond, 6) : "-") << ","
-            << (std::isnan(c.CostRatio()) ? "-" : Num(c.CostRatio(), 4)) << "\n";
+            << (std::isnan(c.CostRatio()) ? "-" : Num(c.CostRatio(), 4)) << ","
+            << (std::isnan(c.own) ? "-" : Num(c.own, 6)) << "\n";
     }
     return csv.str();
 }
@@ -367,9 +392,12 @@ int main(int argc, char** argv) {
                 return 3;
             }
             if (c.cheapest) c.cheapestRun = RunScene(d, *p, c.cheapest->ToAssignments(), nullptr, minCpu, repeats);
-            std::fprintf(stderr, "%s budget %g: auto %s error %s (%s)%s\n", p->name.c_str(), budget,
-                         c.autoRun.refused ? "refused" : c.autoRun.chosen.c_str(), Num(c.autoRun.error).c_str(),
-                         Verdict(c).c_str(), c.autoRun.refused ? (": " + c.autoRun.message).c_str() : "");
+            std::fprintf(stderr, "%s budget %g: auto %s, %lld steps to %g s, error %s (%s)%s\n", p->name.c_str(),
+                         budget, c.autoRun.refused ? "refused" : c.autoRun.chosen.c_str(), c.autoRun.steps,
+                         c.autoRun.simSeconds, Num(c.autoRun.error).c_str(), Verdict(c).c_str(),
+                         c.autoRun.refused ? (": " + c.autoRun.message).c_str() : "");
+            if (!perProblem.empty() && perProblem.back().problem == p)
+                c.own = OwnQuantity(c.autoRun, perProblem.back().accurate, p->quantity);
             cases.push_back(std::move(c));
         }
     }

@@ -24,9 +24,11 @@ struct RunResult {
     double simSeconds = 0.0;  ///< s simulated
     double cpuSeconds = 0.0;  ///< thread CPU s of the run (the smallest over the repeats)
     double cpuPerSimSecond = 0.0;
-    long long steps = 0;  ///< physics steps
-    std::string model;    ///< the model in effect at the end (FileScene::ModelSummary, or auto's current)
-    std::string message;  ///< refusal or failure
+    long long steps = 0;               ///< physics steps
+    std::string model;                 ///< the model in effect at the end (FileScene::ModelSummary, or auto's current)
+    std::string message;               ///< refusal or failure
+    std::vector<double> endPositions;  ///< WorldPositions at the end (m)
+    double startEnergy = 0.0, endEnergy = 0.0;  ///< WorldEnergy before the first step and at the end (J)
     // auto only
     std::string chosen;               ///< the calibration's choice
     double estimate = 0.0;            ///< its estimated error at the end of the run (auto's budget unit)
