@@ -136,13 +136,12 @@ std::vector<ModelCandidate> EnumerateCandidates(const CandidateSpace& space) {
 
 ModelCandidate Refine(const ModelCandidate& candidate, const CandidateSpace& space) {
     ModelCandidate r = candidate;
-    r.step = candidate.step * 0.5;
-    if (space.hasVolumes) {
-        if (r.solver == ContactSolver::Soft) {
-            r.softSubsteps *= 2;
-        } else {
-            r.iterations *= 2;
-        }
+    // The soft step already splits each step into substeps: twice the substeps refines its time resolution at
+    // twice the cost. Everything else (particles, the book and accumulated solvers): half the step.
+    if (space.hasVolumes && !space.hasParticles && r.solver == ContactSolver::Soft) {
+        r.softSubsteps *= 2;
+    } else {
+        r.step = candidate.step * 0.5;
     }
     return r;
 }
@@ -287,14 +286,12 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     r.probeCpuSeconds = ThreadCpuSeconds() - start;
     if (!r.stable) return r;
     const double length = candidate.step * static_cast<double>(steps);
-    // Growth in time fitted from the window's halves: 0 (bounded, e.g. a symplectic energy error) .. 2 (a constant
-    // acceleration error). An error that appears only in the second half grows as fast as allowed.
-    double growth = 2.0;
-    if (full <= 0.0) {
-        growth = 1.0;
-    } else if (half > 0.0) {
-        growth = std::clamp(std::log2(full / half), 0.0, 2.0);
-    }
+    // Growth in time fitted from the window's halves, 0 (bounded, e.g. a symplectic integrator's energy error) to
+    // 1 (a drift: a phase error, a velocity bias). Discretisation errors do not grow faster than linearly while
+    // the run is stable; what does (an instability starting) is left to the live checks, not extrapolated from a
+    // transient (a stack settling in its first steps would otherwise be extrapolated quadratically).
+    double growth = 1.0;
+    if (full > 0.0 && half > 0.0) growth = std::clamp(std::log2(full / half), 0.0, 1.0);
     if (observed) growth = std::min(growth, 1.0);
     if (fixedGrowth >= 0.0) growth = fixedGrowth;
     r.growth = growth;
@@ -342,22 +339,43 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
             continue;
         }
         // Skip what an evaluated candidate of the same family already rules out: one that is no finer in step
-        // and no richer in passes than a candidate that missed the budget (or blew up) misses it too, and a
-        // coarser step is predicted from a finer one's miss by the candidate's order.
+        // and no richer in passes than a candidate that missed the budget (or blew up) misses it too; and a finer
+        // step is predicted, by the candidate's order, from the nearest coarser step of the family with the same
+        // passes that was estimated, when that is the next rung (coarser steps are often outside the asymptotic
+        // range, where an error does not shrink with the step as its order says).
         std::string why;
+        const CandidateEstimate* nearest = nullptr;
         for (std::size_t j = 0; j < k && why.empty(); ++j) {
             const CandidateEstimate& f = result.candidates[order[j]];
             if (!f.evaluated || f.meets || !SameFamily(f.model, e.model)) continue;
             if (e.model.step >= f.model.step && Passes(e.model) <= Passes(f.model)) {
                 why = "not run: a finer model of its family missed the budget";
-            } else if (Passes(e.model) == Passes(f.model) && f.stable && std::isfinite(f.estimate)) {
-                const double predicted = f.estimate * std::pow(e.model.step / f.model.step, OrderOf(e.model, space));
-                if (predicted > 4.0 * bound) {
-                    char text[120];
-                    std::snprintf(text, sizeof text, "not run: predicted %.3g from its family's dt %g s", predicted,
-                                  f.model.step);
-                    why = text;
+            } else if (Passes(e.model) == Passes(f.model) && f.stable && std::isfinite(f.estimate) &&
+                       f.model.step > e.model.step && (!nearest || f.model.step < nearest->model.step)) {
+                nearest = &f;
+            } else if (e.model.step == f.model.step && Passes(e.model) > Passes(f.model) && f.stable &&
+                       f.estimate < 64.0 * bound) {
+                // Near the budget, more passes at this step stopped helping (the step's own error dominates): a
+                // richer candidate at the same step is not run. Far from it, a solve that has not converged at all
+                // says nothing about how the next passes will do.
+                for (std::size_t i = 0; i < j && why.empty(); ++i) {
+                    const CandidateEstimate& g = result.candidates[order[i]];
+                    if (g.evaluated && !g.meets && g.stable && SameFamily(g.model, f.model) &&
+                        g.model.step == f.model.step && Passes(g.model) < Passes(f.model) &&
+                        f.estimate > 0.5 * g.estimate) {
+                        why = "not run: more passes stopped helping its family at this step";
+                    }
                 }
+            }
+        }
+        if (why.empty() && nearest && nearest->model.step <= 2.5 * e.model.step) {
+            const double predicted =
+                nearest->estimate * std::pow(e.model.step / nearest->model.step, OrderOf(e.model, space));
+            if (predicted > 8.0 * bound) {
+                char text[120];
+                std::snprintf(text, sizeof text, "not run: predicted %.3g from its family's dt %g s", predicted,
+                              nearest->model.step);
+                why = text;
             }
         }
         if (!why.empty()) {
@@ -368,14 +386,30 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
             e.note = "not run: evaluation limit reached";
             continue;
         }
-        const WindowResult w = RunWindow(factory, e.model, space, budget, window, settings.runSeconds);
         ++result.evaluatedCount;
-        result.calibrationCpuSeconds += w.probeCpuSeconds;
         e.evaluated = true;
+        double used = window;
+        WindowResult w;
+        const double screen = std::max(settings.screenFraction * window, 2.0 * e.model.step);
+        if (screen >= 2.0 * e.model.step && screen < 0.9 * window) {
+            w = RunWindow(factory, e.model, space, budget, screen, settings.runSeconds);
+            result.calibrationCpuSeconds += w.probeCpuSeconds;
+            used = screen;
+            if (w.stable && w.estimate <= settings.screenMargin * bound) {
+                w = RunWindow(factory, e.model, space, budget, window, settings.runSeconds);
+                result.calibrationCpuSeconds += w.probeCpuSeconds;
+                used = window;
+            } else if (w.stable) {
+                e.note = "missed by far on the screening window";
+            }
+        } else {
+            w = RunWindow(factory, e.model, space, budget, window, settings.runSeconds);
+            result.calibrationCpuSeconds += w.probeCpuSeconds;
+        }
         e.stable = w.stable;
         e.estimate = w.stable ? w.estimate : kInf;
         e.growth = w.growth;
-        const double length = e.model.step * std::max(2.0, std::round(window / e.model.step));
+        const double length = e.model.step * std::max(2.0, std::round(used / e.model.step));
         e.cpuPerSimSecond = w.cpuSeconds / length;
         e.meets = e.stable && e.estimate <= bound;
         if (!e.stable) e.note = "unstable in the calibration window";
@@ -399,9 +433,13 @@ ModelWatch::ModelWatch(const CandidateSpace& s, const ErrorBudget& b, const Choi
       currentEstimate(calibrationEstimate),
       growth(calibrationGrowth) {}
 
+bool ModelWatch::Due(double time) const {
+    const double every = settings.checkEvery > 0.0 ? settings.checkEvery : settings.runSeconds / 6.0;
+    return every > 0.0 && time >= lastCheck + every - 1e-9 && time < settings.runSeconds - 1e-9;
+}
+
 bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* log) {
-    const double every = settings.checkEvery > 0.0 ? settings.checkEvery : settings.runSeconds / 8.0;
-    if (!(every > 0.0) || time < lastCheck + every - 1e-9 || time >= settings.runSeconds - 1e-9) return false;
+    if (!Due(time)) return false;
     lastCheck = time;
     const double window = std::min(settings.runSeconds - time, settings.checkWindowFraction * WindowFor(settings));
     if (!(window > 0.0)) return false;

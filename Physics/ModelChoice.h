@@ -71,8 +71,8 @@ struct CandidateSpace {
 };
 /// Every combination the space allows, in a fixed order (the estimator's order is by cost, not this).
 std::vector<ModelCandidate> EnumerateCandidates(const CandidateSpace& space);
-/// The candidate's refinement used to estimate its error: half the step when the space varies the step (else
-/// twice the passes).
+/// The candidate's refinement used to estimate its error: twice the substeps for the soft solver on a world of
+/// volumes only, else half the step. Either costs twice the candidate.
 ModelCandidate Refine(const ModelCandidate& candidate, const CandidateSpace& space);
 /// Deterministic work per simulated second of a candidate on a space (force evaluations, integrations and contact
 /// passes per step, over the step): the order in which candidates are tried, and "cheapest". Never timing, so the
@@ -114,12 +114,17 @@ struct ChoiceSettings {
     double windowFraction = 0.05;
     double minWindow = 0.2;
     double maxWindow = 2.0;
+    /// Screening: each candidate first runs a window this fraction of the calibration window, and is counted as
+    /// missing the budget without the full window when that estimate exceeds screenMargin * bound / safety (most
+    /// candidates tried miss by far, and the screen costs a quarter of a window).
+    double screenFraction = 0.25;
+    double screenMargin = 8.0;
     /// A candidate meets the budget when safety * estimate <= bound.
     double safety = 2.0;
     /// Candidates estimated at most (the rest are reported as not run).
-    int maxEvaluations = 40;
+    int maxEvaluations = 60;
     /// The live check: a window of this fraction of the calibration window, run every `checkEvery` seconds of
-    /// simulated time (0 = an eighth of the run).
+    /// simulated time (0 = a sixth of the run).
     double checkWindowFraction = 0.3;
     double checkEvery = 0.0;
 };
@@ -165,6 +170,8 @@ public:
     /// True when the model changed at this call: then Current() is the new model and *log says when and why.
     /// *log is also set (and false returned) when the estimate left the budget but no finer model exists.
     bool Check(double time, const ProbeFactory& factory, std::string* log);
+    /// True when Check at `time` would run a window (so a host builds its factory only then).
+    bool Due(double time) const;
     const ModelCandidate& Current() const { return current; }
     /// The running estimate of the error at the end of the run, in the budget's unit.
     double RunningEstimate() const { return running; }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <iterator>
 #include <limits>
 #include <sstream>
@@ -202,6 +203,12 @@ bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double 
                           ToString(budget.quantity), budget.bound, BudgetUnit(budget.quantity), settings.safety,
                           b.estimate, BudgetUnit(budget.quantity),
                           b.model.Describe(space.hasParticles, space.hasVolumes).c_str(), choice.evaluatedCount);
+            if (choice.evaluatedCount >= settings.maxEvaluations) {
+                std::snprintf(text + std::strlen(text), sizeof text - std::strlen(text),
+                              "; the evaluation limit of %d candidates was reached, so finer candidates were not "
+                              "tried",
+                              settings.maxEvaluations);
+            }
         } else {
             std::snprintf(text, sizeof text,
                           "no model meets the %s error budget %g %s: every candidate estimated was unstable (%d "
@@ -219,7 +226,7 @@ bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double 
 }
 
 void AutoModel::AfterFrame(ParameterSet* params, const PhysicsSystem& world, double time) {
-    if (!active) return;
+    if (!active || !watch->Due(time)) return;
     std::string line;
     const bool changed = watch->Check(time, FactoryOf(world), &line);
     if (changed) {
@@ -268,7 +275,7 @@ std::string AutoModel::Explain() const {
         }
         std::string note = c.note;
         if (c.evaluated && c.meets) note = "meets the budget";
-        if (c.evaluated && !c.meets && c.stable) note = "misses the budget";
+        if (c.evaluated && !c.meets && c.stable && note.empty()) note = "misses the budget";
         std::snprintf(line, sizeof line, "  %-6s %-44s %-12s %-12.4g %-12s %s\n",
                       static_cast<int>(i) == choice.chosen ? "*" : "",
                       c.model.Describe(space.hasParticles, space.hasVolumes).c_str(), estimate, c.predictedWork, cpu,
