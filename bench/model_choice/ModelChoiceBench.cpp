@@ -269,16 +269,22 @@ std::string Report(const std::vector<Case>& cases, const std::vector<ProblemRuns
     return md.str();
 }
 
+/// A CSV cell: commas become semicolons ("verlet; dt 0.1 s").
+std::string NoCommas(std::string text) {
+    std::replace(text.begin(), text.end(), ',', ';');
+    return text;
+}
+
 std::string Csv(const std::vector<Case>& cases) {
     std::ostringstream csv;
-    csv << "problem,sweep_problem,param,budget,quantity,auto_bound,refused,chosen,error,cpu_per_sim_s,"
+    csv << "problem,sweep_problem,param,budget,quantity,auto_bound,refused,model,error,cpu_per_sim_s,"
            "overhead_cpu_s,switches,cheapest,cheapest_error,cheapest_cpu_per_sim_s,cost_ratio,own_quantity\n";
     for (const Case& c : cases) {
         const ReferenceProblem& p = *c.problem;
         csv << p.name << "," << p.sweepProblem << "," << p.sweepParam << "," << Num(c.budget, 6) << ","
             << ToString(p.quantity) << "," << Num(c.autoBound, 6) << "," << (c.autoRun.refused ? 1 : 0) << ","
-            << (c.Ran() ? c.autoRun.chosen : "refused") << "," << (c.Ran() ? Num(c.autoRun.error, 6) : "-") << ","
-            << Num(c.autoRun.cpuPerSimSecond, 6) << "," << Num(c.autoRun.overheadCpuSeconds, 6) << ","
+            << NoCommas(c.Ran() ? c.autoRun.model : "refused") << "," << (c.Ran() ? Num(c.autoRun.error, 6) : "-")
+            << "," << Num(c.autoRun.cpuPerSimSecond, 6) << "," << Num(c.autoRun.overheadCpuSeconds, 6) << ","
             << c.autoRun.switches << "," << (c.cheapest ? c.cheapest->Describe() : "-") << ","
             << (c.cheapest ? Num(c.cheapestRun.error, 6) : "-") << ","
             << (c.cheapest ? Num(c.cheapestRun.cpuPerSimSecond, 6) : "-") << ","

@@ -25,10 +25,11 @@ fi
 # The small grid: auto within 3x the budget wherever it runs; a refusal only where the sweep has no setting either.
 "$bench" --quick --csv "$dir/quick.csv" --out "$dir/quick.md" >/dev/null 2>"$dir/quick.err" ||
   { cat "$dir/quick.err" >&2; fail "--quick exited $?"; }
-header='problem,sweep_problem,param,budget,quantity,auto_bound,refused,chosen,error,cpu_per_sim_s,overhead_cpu_s,switches,cheapest,cheapest_error,cheapest_cpu_per_sim_s,cost_ratio,own_quantity'
+header='problem,sweep_problem,param,budget,quantity,auto_bound,refused,model,error,cpu_per_sim_s,overhead_cpu_s,switches,cheapest,cheapest_error,cheapest_cpu_per_sim_s,cost_ratio,own_quantity'
 [ "$(head -n 1 "$dir/quick.csv")" = "$header" ] || fail "unexpected CSV header: $(head -n 1 "$dir/quick.csv")"
 [ "$(($(wc -l <"$dir/quick.csv") - 1))" -ge 6 ] || fail "fewer than 6 cases in the small grid"
 awk -F, 'NR > 1 {
+    if (NF != 17) { print "row " NR " has " NF " columns, not 17"; bad = 1 }
     if ($7 == 1) { if ($13 != "-") { print $1 " at " $4 ": refused, but the sweep meets it with " $13; bad = 1 } }
     else if ($9 == "-" || $9 + 0 > 3 * $4) { print $1 " at " $4 ": auto error " $9 " is above 3x the budget (" $8 ")"; bad = 1 }
   } END { exit bad }' "$dir/quick.csv" || fail "accuracy above"
