@@ -28,7 +28,7 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: psb-model-choice-bench [--problem NAME]... [--budgets LIST] [--quick] [--check] [--out FILE.md]\n"
-    "                              [--csv FILE.csv] [--scenes DIR] [--results FILE] [--list]\n"
+    "                              [--csv FILE.csv] [--scenes DIR] [--results FILE] [--explain] [--list]\n"
     "Runs `model: auto` on the sweep's reference problems (scenes/reference/*.json) at error budgets in each\n"
     "problem's unit and compares it with the cheapest sweep setting meeting the same budget, the book's model\n"
     "at 0.03 s and the most accurate sweep setting (docs/model-choice-validation.md).\n"
@@ -41,7 +41,8 @@ constexpr const char* kUsage =
     "  --out FILE      write the markdown report (tables, criteria) to FILE\n"
     "  --csv FILE      write auto's points: problem,budget,...,error,cpu_per_sim_s (for the sweep figures)\n"
     "  --scenes DIR    the reference scene files (default: the source tree's scenes/reference)\n"
-    "  --results FILE  the full sweep (default: the source tree's docs/sweep/results.csv)\n";
+    "  --results FILE  the full sweep (default: the source tree's docs/sweep/results.csv)\n"
+    "  --explain       print auto's candidates (AutoModel::Explain) and its log for every case on stderr\n";
 
 std::string Num(double v, int digits = 3) {
     if (std::isinf(v)) return "inf";
@@ -320,7 +321,7 @@ int main(int argc, char** argv) {
     std::string out, csvOut;
     std::vector<std::string> names;
     std::vector<double> budgets{0.1, 0.01, 0.001};
-    bool quick = false, check = false, budgetsGiven = false;
+    bool quick = false, check = false, budgetsGiven = false, explain = false;
     std::string command = "psb-model-choice-bench";
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -344,6 +345,8 @@ int main(int argc, char** argv) {
             quick = true;
         } else if (a == "--check") {
             check = true;
+        } else if (a == "--explain") {
+            explain = true;
         } else if (a == "--out") {
             out = value();
         } else if (a == "--csv") {
@@ -402,6 +405,10 @@ int main(int argc, char** argv) {
                          budget, c.autoRun.refused ? "refused" : c.autoRun.chosen.c_str(), c.autoRun.steps,
                          c.autoRun.simSeconds, Num(c.autoRun.error).c_str(), Verdict(c).c_str(),
                          c.autoRun.refused ? (": " + c.autoRun.message).c_str() : "");
+            if (explain) {
+                std::fprintf(stderr, "%s", c.autoRun.explain.c_str());
+                for (const std::string& line : c.autoRun.log) std::fprintf(stderr, "  log: %s\n", line.c_str());
+            }
             if (!perProblem.empty() && perProblem.back().problem == p)
                 c.own = OwnQuantity(c.autoRun, perProblem.back().accurate, p->quantity);
             cases.push_back(std::move(c));

@@ -82,10 +82,12 @@ RunResult RunOnce(const SceneDescription& description, const ReferenceProblem& p
             r.message = error;
             r.chosen = "refused";
             r.overheadCpuSeconds = autoModel.OverheadCpuSeconds();
+            r.explain = autoModel.Explain();
             return r;
         }
         r.chosen = autoModel.Current().Describe(particles, volumes);
         r.estimate = autoModel.RunningEstimate();
+        r.explain = autoModel.Explain();
         time.dt = CurrentStep(scene, hostStep);
     }
     if (sweepSteps > 0) {
@@ -127,6 +129,7 @@ RunResult RunOnce(const SceneDescription& description, const ReferenceProblem& p
     if (request != nullptr) {
         r.overheadCpuSeconds = autoModel.OverheadCpuSeconds();
         r.switches = int(autoModel.Log().size());
+        r.log = autoModel.Log();
         r.estimate = autoModel.RunningEstimate();
     }
     if (!stable) r.message = scene.Monitor().Report().message;

@@ -33,7 +33,9 @@ struct RunResult {
     std::string chosen;               ///< the calibration's choice
     double estimate = 0.0;            ///< its estimated error at the end of the run (auto's budget unit)
     double overheadCpuSeconds = 0.0;  ///< calibration and watch
-    int switches = 0;                 ///< model changes during the run
+    int switches = 0;
+    std::string explain;           ///< AutoModel::Explain after the choice (or the refusal)
+    std::vector<std::string> log;  ///< AutoModel::Log at the end                 ///< model changes during the run
 };
 
 /// The host step of a scene (s): its own step, else the book's 0.03 s.
