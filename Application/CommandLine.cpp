@@ -96,8 +96,13 @@ const Flag kFlags[] = {
          const std::size_t eq = v.text.find('=');
          o.sets.emplace_back(v.text.substr(0, eq), v.text.substr(eq + 1));
      }},
-    {"--params", "", ValueType::None, 0, 0, "print the demo's parameters (keys, ranges, values after --set) and exit",
+    {"--params", "", ValueType::None, 0, 0,
+     "print the demo's parameters (keys, ranges, values after --set and after the auto model's choice) and exit",
      [](Options& o, const FlagValue&) { o.showParams = true; }},
+    {"--explain-model", "", ValueType::None, 0, 0,
+     "with --set model=auto (or a scene file's \"model\": \"auto\"): print every candidate model with its "
+     "estimated error and cost, the chosen one marked, and exit without running (exit 2 when none meets the budget)",
+     [](Options& o, const FlagValue&) { o.explainModel = true; }},
     {"--state", "FILE", ValueType::Text, 0, 0,
      "write CSV: frame,time,body,kind,x,y,z,vx,vy,vz (one row per body per frame); FILE must not exist or be a "
      "regular file",
@@ -265,6 +270,7 @@ const char* HeadlessOnlyFlag(const Options& o) {
     if (!o.onlyFrames.empty()) return "--only-frames";
     if (o.updateGolden) return "--update-golden";
     if (o.showParams) return "--params";
+    if (o.explainModel) return "--explain-model";
     return nullptr;
 }
 
@@ -276,6 +282,11 @@ bool CheckCombinations(const Options& o, std::string* error) {
     }
     if (!o.exportScene.empty() && (o.demo.empty() || o.window)) {
         *error = "--export-scene needs --demo ID (and no --window)";
+        return false;
+    }
+    if (!o.exportScene.empty() && o.explainModel) {
+        *error =
+            "--export-scene and --explain-model both given; give one (an exported scene keeps \"model\": \"auto\")";
         return false;
     }
     if (o.window) {
@@ -355,6 +366,14 @@ std::string UsageText() {
         text += head + help + "\n";
     }
     text +=
+        "\nError budget (docs/model-choice.md): the demos ch14, ch15, springs, ch16, joints, linear-impulse and\n"
+        "momentum, and every scene file, take --set model=fixed|auto, --set tolerance=T (the bound, > 0; not the\n"
+        "--tolerance of the golden comparison) and --set budget=position|energy|constraint (m, relative, m; default\n"
+        "position). With model=auto the run first estimates candidate models (integrator, dt, iterations, contact\n"
+        "solver) on the scene itself and runs the cheapest whose estimated error at the end of the run is within T,\n"
+        "re-estimating as it goes; a budget no candidate meets is refused (exit 2) with the best estimate reached.\n"
+        "--state then gets an error_estimate column, the summary and the panel name the model. A scene file says\n"
+        "\"model\": \"auto\", \"budget\": {\"quantity\": \"position\", \"bound\": 0.01} (docs/scenes.md).\n"
         "\nExit codes: 0 success, 1 golden mismatch, 2 bad usage (nothing written), 3 failure while running\n"
         "(also a detected blow-up, an unwritable output, out of memory), 130/143 interrupted by SIGINT/SIGTERM.\n";
     return text;

@@ -28,6 +28,9 @@ struct Options {
     std::vector<std::pair<std::string, std::string>> sets;  ///< --set key=value, in order
     bool noUi = false;
     bool showParams = false;  ///< --params: print the demo's parameters (after --set) and exit
+    /// --explain-model: with an auto model (`--set model=auto`, a scene's "model": "auto"), print every candidate
+    /// with its estimated error and cost, the chosen one marked, and exit without running (docs/model-choice.md).
+    bool explainModel = false;
     std::string stateFile;
     std::string videoFile;         ///< --video: every frame into an .mp4, .webm or .gif (Platform/VideoEncoder.h)
     std::string backend = "auto";  ///< --backend: "auto", "osmesa" or "egl" (Platform/HeadlessContext.h)

@@ -79,4 +79,14 @@ int FrameClock::AdvanceFrame() {
     return n;
 }
 
+void FrameClock::SetStep(const Rational& step) {
+    const std::int64_t ticks = std::lcm(ticksPerSecond, step.den);
+    const std::int64_t scale = ticks / ticksPerSecond;
+    ticksPerSecond = ticks;
+    frameTicks *= scale;
+    accumulator *= scale;
+    stepTicks = step.num * (ticksPerSecond / step.den);
+    stepSeconds = step.ToDouble();
+}
+
 double FrameClock::FrameSeconds() const { return double(frames * frameTime.num) / double(frameTime.den); }

@@ -28,6 +28,10 @@ public:
     /// Advances by one output frame and returns how many fixed steps to run now: while accumulated > step
     /// (strictly, as the book), subtract one step.
     int AdvanceFrame();
+    /// Changes the physics step from the next AdvanceFrame on (the auto model refining its step during a run,
+    /// docs/model-choice.md). Exact: the tick becomes 1/lcm(ticks per second, step.den), the accumulated time is
+    /// kept to the tick, and frames and steps go on counting. A step of the same value changes nothing.
+    void SetStep(const Rational& step);
     /// Output frames advanced so far.
     std::int64_t Frames() const { return frames; }
     /// Fixed steps handed out so far.

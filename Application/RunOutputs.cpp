@@ -138,14 +138,15 @@ bool RunOutputs::MakeDirectories(const std::string& dir, std::string* error) {
     return true;
 }
 
-bool RunOutputs::Open(std::string* error) {
+bool RunOutputs::Open(std::string* error, bool errorEstimateColumn) {
     if (!frameDir.empty() && !MakeDirectories(frameDir, error)) return false;
     if (!o.videoFile.empty()) {
         const double fps = 1.0 / o.frameTime.ToDouble();
         if (!video.Open(o.videoFile, o.width, o.height, fps, error)) return false;
     }
     if (o.stateFile.empty()) return true;
-    return state.Open(o.stateFile, error) && state.Write(StateCsvHeader(), std::string(StateCsvHeader()).size(), error);
+    const std::string header = StateCsvHeader(errorEstimateColumn);
+    return state.Open(o.stateFile, error) && state.Write(header.data(), header.size(), error);
 }
 
 EncodeQueue::Job RunOutputs::MakeFrameJob(int frame, Image image) {

@@ -46,8 +46,9 @@ public:
     RunOutputs(const RunOutputs&) = delete;
     RunOutputs& operator=(const RunOutputs&) = delete;
 
-    /// Creates the frame directory and opens the --state temporary with its header. False with *error.
-    bool Open(std::string* error);
+    /// Creates the frame directory and opens the --state temporary with its header (with the error_estimate
+    /// column of an auto model when errorEstimateColumn). False with *error.
+    bool Open(std::string* error, bool errorEstimateColumn = false);
     /// Frames are read back when they are written, compared or recorded.
     bool WantsPixels() const { return !frameDir.empty() || comparing || Recording(); }
     /// PNG frames (written or compared) are wanted: --out or --compare.

@@ -20,6 +20,7 @@
 #include <numeric>
 #include <vector>
 
+#include "Application/AutoModelHost.h"
 #include "Application/RunOutputs.h"
 #include "Application/StateCsv.h"
 #if PSB_HAVE_WINDOW
@@ -61,7 +62,7 @@ void ReadFrame(int width, int height, std::vector<std::uint8_t>* scratch, Image*
 
 class ProgressLine {
 public:
-    explicit ProgressLine(const Options& o) : total(o.frames), tty(isatty(STDERR_FILENO) != 0) {
+    explicit ProgressLine(const Options& o) : total(o.frames), tty(isatty(STDERR_FILENO) != 0), quiet(o.quiet) {
         if (o.quiet) return;
         if (o.progressEvery > 0)
             every = o.progressEvery;
@@ -81,10 +82,18 @@ public:
         if (pending) std::fputc('\n', stderr);
         pending = false;
     }
+    /// A line between progress lines (the auto model's switches): on its own line, quiet under --quiet.
+    void Note(const std::string& text) {
+        if (quiet) return;
+        End();
+        std::fprintf(stderr, "physics-sandbox: %s\n", text.c_str());
+        std::fflush(stderr);
+    }
 
 private:
     int total;
     bool tty;
+    bool quiet;
     int every = 0;
     bool pending = false;
 };
@@ -164,8 +173,8 @@ int StartSession(const Options& o, const SceneDescription* scene, Session* s, Ru
     return kExitOk;
 }
 
-// --set in order (exit 2 naming the key and listing the table), then --params (prints and ends the run).
-int ApplyParameters(const Options& o, DemoBase& demo) {
+// --set in order (exit 2 naming the key and listing the table).
+int ApplySets(const Options& o, DemoBase& demo) {
     std::string error;
     for (const auto& [key, value] : o.sets) {
         if (!demo.Parameters().Set(key, value, &error)) {
@@ -174,10 +183,23 @@ int ApplyParameters(const Options& o, DemoBase& demo) {
             return kExitUsage;
         }
     }
-    if (!o.showParams) return kExitOk;
+    return kExitOk;
+}
+
+// --params: prints the table (the values in effect) and ends the run.
+int ShowParameters(const Options& o, const DemoBase& demo) {
     std::printf("parameters of %s (--set KEY=VALUE):\n%s", o.demo.c_str(), demo.Parameters().Describe().c_str());
     return FinishStdout();
 }
+
+// --set, then --params (prints and ends the run).
+int ApplyParameters(const Options& o, DemoBase& demo) {
+    if (const int code = ApplySets(o, demo); code != kExitOk || !o.showParams) return code;
+    return ShowParameters(o, demo);
+}
+
+/// The simulated seconds a run covers (the auto model estimates the error at its end).
+double RunSeconds(const Options& o) { return double(o.frames) * o.frameTime.ToDouble(); }
 
 // Camera overrides, then one camera update so the view is valid on frame 0 (docs/book-reference.md §1.2). Returns the
 // yaw the
@@ -213,8 +235,10 @@ struct RunLoop {
     DemoBase& demo;
     RunOutputs& outputs;
     RunStats* stats;
-    const Rational step;  ///< the host's fixed step (HostStep)
+    Rational step;  ///< the host's fixed step (HostStep); an auto model's switch may change it
     FrameClock clock;
+    AutoModel* autoModel = nullptr;   ///< the demo's, while active (docs/model-choice.md)
+    std::size_t autoModelLogged = 0;  ///< lines of its Log() already printed
     float baseYaw = 0.0f;
     ProgressLine progress;
     std::vector<std::uint8_t> scratch;
@@ -232,7 +256,9 @@ struct RunLoop {
           step(HostStep(o, d)),
           clock(o.frameTime, step),
           baseYaw(yaw),
-          progress(o) {}
+          progress(o) {
+        if (d.AutoModelOf().Active()) autoModel = &d.AutoModelOf();
+    }
 };
 
 bool Selected(RunLoop& r, int frame) {
@@ -261,6 +287,18 @@ void SimulateFrame(RunLoop& r, int frame) {
     }
 }
 
+// After the frame's fixed steps: the auto model's live watch; a switch is printed as it happens, and a new step
+// (dt refined) takes effect from the next frame on, the clock keeping its accumulated time.
+void WatchModel(RunLoop& r, double time) {
+    for (const std::string& line : WatchAutoModel(r.demo, time, &r.autoModelLogged))
+        r.progress.Note(r.o.demo + ": model auto: " + line);
+    const Rational step = HostStep(r.o, r.demo);
+    if (step.num != r.step.num || step.den != r.step.den) {
+        r.clock.SetStep(step);
+        r.step = step;
+    }
+}
+
 // The state checks and the --state rows of one frame; false with *failure (exit 3).
 bool CheckAndRecordState(RunLoop& r, int frame, double time, std::string* failure) {
     std::string where;
@@ -276,7 +314,12 @@ bool CheckAndRecordState(RunLoop& r, int frame, double time, std::string* failur
     r.bodies.clear();
     r.demo.CollectState(&r.bodies);
     r.rows.clear();
-    AppendStateRows(frame, time, r.bodies, &r.rows);
+    if (r.autoModel != nullptr) {
+        const double estimate = r.autoModel->RunningEstimate();
+        AppendStateRows(frame, time, r.bodies, &r.rows, &estimate);
+    } else {
+        AppendStateRows(frame, time, r.bodies, &r.rows);
+    }
     return r.outputs.state.Write(r.rows.data(), r.rows.size(), failure);
 }
 
@@ -315,6 +358,7 @@ bool RunFrame(RunLoop& r, int frame, std::string* failure) {
     const bool blownUp = r.demo.Unstable(&report);
     SimulateFrame(r, frame);
     const double time = r.clock.FrameSeconds();  // simulated time of this frame's state
+    if (r.autoModel != nullptr) WatchModel(r, time);
     if (!CheckAndRecordState(r, frame, time, failure)) {
         if (!r.o.noUi) ImGui::EndFrame();
         return false;
@@ -359,7 +403,7 @@ void FillStats(const RunLoop& r, Clock::time_point wallStart, double processCpuS
     stats->wallSeconds = Since(wallStart);
 }
 
-void PrintSummary(const Options& o, const RunStats& s, const std::string& frameDir) {
+void PrintSummary(const Options& o, const RunStats& s, const std::string& frameDir, const DemoBase& demo) {
     const double frames = std::max(1, s.frames);
     std::fprintf(stderr,
                  "physics-sandbox: %s: %d frames, %.3f simulated s, %lld steps, wall %.2f s, %.1f fps "
@@ -368,6 +412,8 @@ void PrintSummary(const Options& o, const RunStats& s, const std::string& frameD
                  s.wallSeconds > 0 ? s.frames / s.wallSeconds : 0.0, 1000.0 * s.renderSeconds / frames,
                  1000.0 * s.readbackSeconds / frames, 1000.0 * s.encodeSeconds / frames, s.renderer.c_str(),
                  frameDir.empty() ? "" : "; frames in ", frameDir.c_str());
+    if (demo.AutoModelOf().Active())
+        std::fprintf(stderr, "physics-sandbox: %s: %s\n", o.demo.c_str(), demo.AutoModelOf().Summary().c_str());
 }
 
 /// --scene: loads the file into *scene (exit 2 listing every problem, before anything is written), names the run
@@ -414,6 +460,7 @@ int ExportScene(const Options& o) {
     description.camera.rotation = demo->camera.GetRotation();
     description.camera.zoom = demo->camera.GetZoom();
     demo->ExportNotes(&notes);
+    if (const AutoModelRequest* request = demo->AutoModelRequestOf()) description.autoModel = *request;
     const std::string text = WriteSceneText(description);
     std::string error;
     if (!WriteFileAtomic(o.exportScene, std::vector<std::uint8_t>(text.begin(), text.end()), &error)) {
@@ -439,13 +486,22 @@ int RunUnguarded(const Options& given, RunStats* stats) {
     Session session;
     if ((code = StartSession(o, fromFile ? &scene : nullptr, &session, stats)) != kExitOk) return code;
     DemoBase& demo = *session.window->CurrentDemo();
-    if ((code = ApplyParameters(o, demo)) != kExitOk || o.showParams) return code;
+    if ((code = ApplySets(o, demo)) != kExitOk) return code;
+    AutoModelHost host;
+    host.name = o.demo;
+    host.hostStep = o.step.ToDouble();
+    host.runSeconds = RunSeconds(o);
+    host.explain = o.explainModel;
+    host.quiet = o.quiet;
+    bool explained = false;
+    if ((code = ChooseAutoModel(demo, host, &explained)) != kExitOk || explained) return code;
+    if (o.showParams) return ShowParameters(o, demo);
     const float baseYaw = ApplyCamera(o, demo);
 
     // From here on a failure is a run-time failure (exit 3).
     RunOutputs outputs(o);
     std::string error;
-    if (!outputs.Open(&error)) {
+    if (!outputs.Open(&error, demo.AutoModelOf().Active())) {
         std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
         return kExitFailure;
     }
@@ -454,7 +510,7 @@ int RunUnguarded(const Options& given, RunStats* stats) {
     code = outputs.Finish(code);
     FillStats(loop, wallStart, processCpuStart, stats);
     if (code == kExitOk || code == kExitMismatch) code = outputs.ReportComparisons(code);
-    if (!o.quiet && code != kExitFailure) PrintSummary(o, *stats, outputs.FrameDir());
+    if (!o.quiet && code != kExitFailure) PrintSummary(o, *stats, outputs.FrameDir(), demo);
     return code;
 }
 

@@ -13,6 +13,7 @@
 #include <memory>
 #include <thread>
 
+#include "Application/AutoModelHost.h"
 #include "Application/Runner.h"
 #include "Demos/DemoBase.h"
 #include "Platform/DesktopWindow.h"
@@ -72,14 +73,38 @@ bool StartFirstDemo(const WindowedOptions& o, DemoWindow& window) {
         std::fprintf(stderr, "physics-sandbox: demo '%s' failed to start\n", o.demo.c_str());
         return false;
     }
+    DemoBase& demo = *window.CurrentDemo();
     std::string error;
     for (const auto& [key, value] : o.sets)
-        if (!window.CurrentDemo()->Parameters().Set(key, value, &error)) {
+        if (!demo.Parameters().Set(key, value, &error)) {
             std::fprintf(stderr, "physics-sandbox: --set %s=%s: %s\n", key.c_str(), value.c_str(), error.c_str());
             return false;
         }
-    return true;
+    // `model: auto` (docs/model-choice.md): chosen before the first frame, for the --frames the window will show
+    // (a window closed by hand: ChoiceSettings' default run length).
+    AutoModelHost host;
+    host.name = o.demo;
+    host.hostStep = o.step;
+    host.runSeconds = o.frames > 0 ? o.frames / 60.0 : ChoiceSettings().runSeconds;
+    host.quiet = o.quiet;
+    bool explained = false;  // --explain-model is headless only
+    return ChooseAutoModel(demo, host, &explained) == kExitOk;
 }
+
+/// The live watch of the first demo's auto model (while it runs): after each frame's fixed steps, with the
+/// simulated time since it started; switches are printed as they happen.
+struct AutoModelWatch {
+    DemoBase* demo = nullptr;  ///< the demo whose model was chosen; nullptr without auto
+    double simulated = 0.0;    ///< s since it started
+    std::size_t logged = 0;
+
+    void AfterFrame(const WindowedOptions& o, DemoWindow& window, double seconds) {
+        if (demo == nullptr || window.CurrentDemo() != demo) return;
+        simulated += seconds;
+        for (const std::string& line : WatchAutoModel(*demo, simulated, &logged))
+            if (!o.quiet) std::fprintf(stderr, "physics-sandbox: %s: model auto: %s\n", o.demo.c_str(), line.c_str());
+    }
+};
 
 void ReportDemo(const WindowedOptions& o, const std::string& id) {
     if (o.quiet) return;
@@ -98,6 +123,8 @@ void ReportSummary(const WindowedOptions& o, DemoWindow& window, int frames, lon
                     double(demo->camera.GetZoom()), double(t.x), double(t.y), double(t.z));
     }
     std::printf("\n");
+    if (DemoBase* demo = window.CurrentDemo(); demo != nullptr && demo->AutoModelOf().Active())
+        std::printf("%s\n", demo->AutoModelOf().Summary().c_str());
     std::fflush(stdout);
 }
 
@@ -120,6 +147,9 @@ int RunWindowed(const WindowedOptions& o) {
     window.OnResize(o.width, o.height);
     window.SetUIVisible(!o.noUi);
     if (!StartFirstDemo(o, window)) return kExitUsage;
+    AutoModelWatch watch;
+    if (window.CurrentDemo() != nullptr && window.CurrentDemo()->AutoModelOf().Active())
+        watch.demo = window.CurrentDemo();
     std::string shownDemo = window.CurrentDemoId();
     ReportDemo(o, shownDemo);
 
@@ -148,11 +178,14 @@ int RunWindowed(const WindowedOptions& o) {
         const DemoBase* demo = window.CurrentDemo();
         const double step = demo != nullptr && demo->PhysicsStep() > 0.0f ? double(demo->PhysicsStep()) : o.step;
         fixedElapsed += deltaTime;
+        double stepped = 0.0;
         while (fixedElapsed > step) {
             window.OnFixedUpdate(float(step));
             fixedElapsed -= step;
+            stepped += step;
             ++steps;
         }
+        watch.AfterFrame(o, window, stepped);
         window.OnRender();
         ImGui::Render();
         ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());

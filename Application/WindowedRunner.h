@@ -22,6 +22,8 @@ struct WindowedOptions {
 
 /// Runs the window until it is closed or `frames` frames have been shown. Prints "demo: ID" (or "demo: none")
 /// on stdout whenever the running demo changes, and a summary line with the frame count and the final camera
-/// at the end. The caller checks the demo id. Returns kExitOk, kExitUsage for a bad --set, kExitFailure when
-/// no window can be opened (no display).
+/// at the end (then, with `--set model=auto`, the auto model's summary line, "Model: auto, ..."). The caller checks the
+/// demo id. Returns kExitOk, kExitUsage for a bad --set, kExitFailure when no window can be opened (no display). With
+/// `--set model=auto` the first demo's model is chosen before the first frame (kExitUsage for a budget no candidate
+/// meets) and watched while it runs (Application/AutoModelHost.h).
 int RunWindowed(const WindowedOptions& options);

@@ -43,6 +43,7 @@ CH14Demo::CH14Demo() {
     params.AddFloat("dt", &stepDt, 0.0f, kMaxSceneDt, "physics step in s; 0 = the host's fixed step (book: 0.03)");
     params.AddInt("seed", &seed, 0, 2147483647, "MSVC rand() seed of the spawns (book: 1); on reset", resetIfFresh);
     AddShowHelpButton();
+    AddAutoModelKeys();
 }
 
 void CH14Demo::ResetDemo() {

@@ -10,8 +10,8 @@
 class CH14Demo : public DemoBase {
 public:
     /// Registers the demo's table: the panel (delta row, particles applied on Reset as the book, Reset, Show
-    /// Help) and the model keys integrator, dt, seed. particles and seed set before the first step rebuild at
-    /// once (so --set applies).
+    /// Help), the model keys integrator, dt, seed and the error-budget keys (DemoBase::AddAutoModelKeys). particles and
+    /// seed set before the first step rebuild at once (so --set applies).
     CH14Demo();
     /// Book camera preset, lighting on, light (0.5, 1, -1.5, 0) until the first Render, scene built.
     void Initialize(int width, int height) override;

@@ -15,6 +15,7 @@ CH15Demo::CH15Demo() {
     // Not a book row: the panel shows a non-book contact solver in effect.
     params.AddPanelText(
         [this] { return ContactSolverRow(scene.System().settings.contactSolver, scene.Params().soft); });
+    AddAutoModelKeys();
 }
 
 void CH15Demo::Initialize(int width, int height) {

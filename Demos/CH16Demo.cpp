@@ -7,6 +7,7 @@
 CH16Demo::CH16Demo() {
     UseBookCamera(9.0f);
     scene.AddParameters(&params);
+    AddAutoModelKeys();
 }
 
 void CH16Demo::Initialize(int width, int height) {
@@ -35,7 +36,7 @@ void CH16Demo::Render() {
 
 void CH16Demo::ImGUI() {
     const Ch16Params& p = scene.Params();
-    DrawSoftDemoPanel("Chapter 16 Demo", params, p.integrator, p.dt, scene.Monitor());
+    DrawSoftDemoPanel("Chapter 16 Demo", params, p.integrator, p.dt, scene.Monitor(), AutoModelRowHeight());
     DemoBase::ImGUI();
 }
 

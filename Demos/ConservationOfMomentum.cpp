@@ -15,6 +15,7 @@ ConservationOfMomentum::ConservationOfMomentum() {
     // Not a book row: the panel shows a non-book contact solver in effect (--set solver=).
     params.AddPanelText(
         [this] { return ContactSolverRow(scene.System().settings.contactSolver, scene.Params().soft); });
+    AddAutoModelKeys();
 }
 
 void ConservationOfMomentum::Initialize(int width, int height) {

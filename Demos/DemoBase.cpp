@@ -3,6 +3,7 @@
 #include <glad/gl.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -49,13 +50,35 @@ void DemoBase::ImGUI() {
 }
 
 void DemoBase::DrawPanel(const char* title, float height, PanelScrollbar scrollbar) const {
-    BeginDemoPanel(title, height, scrollbar);
+    BeginDemoPanel(title, height + AutoModelRowHeight(), scrollbar);
     DrawParameterPanel(params);
     ImGui::End();
 }
 
 void DemoBase::AddShowHelpButton() {
     params.AddPanelButton(ParameterSet::Widget::Button("Show Help").SameLine(), [this] { show_help = true; });
+}
+
+void DemoBase::AddAutoModelKeys() {
+    AddAutoModelParameters(&params, &autoModelRequest);
+    params.AddPanelText([this] { return AutoModelPanelText(); });
+    hasAutoModelKeys = true;
+}
+
+std::string DemoBase::AutoModelPanelText() const {
+    if (!autoModel.Active()) return std::string();
+    // The summary's parts, one a line: the panel is narrow.
+    std::string text = autoModel.Summary();
+    for (std::size_t at = text.find("; "); at != std::string::npos; at = text.find("; ", at)) text.replace(at, 2, "\n");
+    return text;
+}
+
+float DemoBase::AutoModelRowHeight() const {
+    const std::string text = AutoModelPanelText();
+    if (text.empty()) return 0.0f;
+    // One row, then one text line per further line (ImGui draws a multi-line text as one item).
+    const auto lines = std::count(text.begin(), text.end(), '\n');
+    return BookPanel::kRowHeight + ImGui::GetTextLineHeight() * static_cast<float>(lines);
 }
 
 void DemoBase::UseBookCamera(float zoom) {

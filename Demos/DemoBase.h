@@ -8,6 +8,7 @@
 
 #include "Application/View/Camera.h"
 #include "Demos/ParameterPanel.h"
+#include "Demos/Scenes/AutoModel.h"
 #include "Demos/Scenes/Parameters.h"
 #include "Physics/PhysicsSystem.h"
 
@@ -67,12 +68,27 @@ public:
     virtual const PhysicsSystem* World() const { return nullptr; }
     /// Appends what the demo does beyond its world that a scene file cannot express (for --export-scene).
     virtual void ExportNotes(std::vector<std::string>* /*notes*/) const {}
+    /// The demo's error-budget request (the `--set` keys model, tolerance, budget: docs/model-choice.md), or
+    /// nullptr for a demo without them (a scripted one). The host chooses the model when it is auto.
+    AutoModelRequest* AutoModelRequestOf() { return hasAutoModelKeys ? &autoModelRequest : nullptr; }
+    const AutoModelRequest* AutoModelRequestOf() const { return hasAutoModelKeys ? &autoModelRequest : nullptr; }
+    /// The run's auto model: chosen and watched by the host (Application/Runner.cpp); inactive unless auto.
+    AutoModel& AutoModelOf() { return autoModel; }
+    const AutoModel& AutoModelOf() const { return autoModel; }
 
 protected:
     /// The demo's panel: BeginDemoPanel, the parameter table's widgets (DrawParameterPanel), End.
     void DrawPanel(const char* title, float height, PanelScrollbar scrollbar = PanelScrollbar::Hidden) const;
     /// Appends the book's panel-only "Show Help" button (on the line of the widget before it) to the table.
     void AddShowHelpButton();
+    /// Appends the error-budget keys model, tolerance and budget (AddAutoModelParameters, bound to
+    /// autoModelRequest) and a panel row with the auto model's summary, drawn only while the auto model is active
+    /// (so a fixed model's panel is unchanged). Called last in the constructor, so `--params` only gains lines.
+    void AddAutoModelKeys();
+    /// The panel rows of an active auto model: its summary, one part a line; "" otherwise.
+    std::string AutoModelPanelText() const;
+    /// px: the height of those rows, 0 without an active auto model (the book's panels stay as they are).
+    float AutoModelRowHeight() const;
     /// The book's chapter 14-16 camera preset (docs/book-reference.md §1.4): target (3.75622, 2.98255, 0), rotation
     /// (-67.9312, 19.8) degrees, and `zoom` (9 in most demos; 12 in CH15 and Conservation Of Momentum). Called in
     /// the demo's constructor (the book does it in Initialize), so `camera` is the demo's view before any GL context
@@ -93,4 +109,9 @@ protected:
     vec2 size;
     bool configHelpWindow = true;
     ParameterSet params;
+    AutoModelRequest autoModelRequest;  ///< a scene-file demo starts from its file's request
+
+private:
+    bool hasAutoModelKeys = false;
+    AutoModel autoModel;
 };

@@ -8,6 +8,7 @@ JointDemo::JointDemo() : scene(JointParams(), &rng) {
     UseBookCamera(9.0f);
     scene.AddParameters(&params);
     AddShowHelpButton();
+    AddAutoModelKeys();
 }
 
 void JointDemo::Initialize(int width, int height) {
@@ -34,7 +35,7 @@ void JointDemo::Render() {
 
 void JointDemo::ImGUI() {
     const JointParams& p = scene.Params();
-    DrawSoftDemoPanel("Joint Demo", params, p.integrator, p.dt, scene.Monitor());
+    DrawSoftDemoPanel("Joint Demo", params, p.integrator, p.dt, scene.Monitor(), AutoModelRowHeight());
     DemoBase::ImGUI();
 }
 

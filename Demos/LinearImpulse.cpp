@@ -13,6 +13,7 @@ LinearImpulse::LinearImpulse() {
     // Not a book row: the panel shows a non-book contact solver in effect (--set solver=).
     params.AddPanelText(
         [this] { return ContactSolverRow(scene.System().settings.contactSolver, scene.Params().soft); });
+    AddAutoModelKeys();
 }
 
 void LinearImpulse::Initialize(int width, int height) {

@@ -9,6 +9,8 @@
 SceneFileDemo::SceneFileDemo(const SceneDescription& description) : scene(description) {
     scene.AddParameters(&params);
     AddShowHelpButton();
+    autoModelRequest = description.autoModel;  // the file's "model" and "budget"; `--set` may change them
+    AddAutoModelKeys();
 }
 
 void SceneFileDemo::Initialize(int width, int height) {

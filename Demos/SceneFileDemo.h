@@ -9,7 +9,8 @@
 
 class SceneFileDemo : public DemoBase {
 public:
-    /// Builds the scene and registers its model settings (FileScene::AddParameters) and the help button.
+    /// Builds the scene and registers its model settings (FileScene::AddParameters), the help button and the
+    /// error-budget keys, which start at the file's "model" and "budget".
     explicit SceneFileDemo(const SceneDescription& description);
     /// The file's camera (the book's orbit camera), point size 5, the book's lighting; the scene.
     void Initialize(int width, int height) override;

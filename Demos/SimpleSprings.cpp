@@ -8,6 +8,7 @@ SimpleSprings::SimpleSprings() {
     UseBookCamera(9.0f);
     scene.AddParameters(&params);
     AddShowHelpButton();
+    AddAutoModelKeys();
 }
 
 void SimpleSprings::Initialize(int width, int height) {
@@ -31,7 +32,7 @@ void SimpleSprings::Render() {
 
 void SimpleSprings::ImGUI() {
     const SpringsParams& p = scene.Params();
-    DrawSoftDemoPanel("Simple Springs Demo", params, p.integrator, p.dt, scene.Monitor());
+    DrawSoftDemoPanel("Simple Springs Demo", params, p.integrator, p.dt, scene.Monitor(), AutoModelRowHeight());
     DemoBase::ImGUI();
 }
 

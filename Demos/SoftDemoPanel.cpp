@@ -16,9 +16,9 @@ bool StepIsBook(Integrator integrator, float dt) {
 }  // namespace
 
 void DrawSoftDemoPanel(const char* title, const ParameterSet& params, Integrator integrator, float dt,
-                       const StabilityMonitor& monitor) {
+                       const StabilityMonitor& monitor, float extraHeight) {
     const bool bookStep = StepIsBook(integrator, dt);
-    float height = BookPanel::kHeight;
+    float height = BookPanel::kHeight + extraHeight;
     if (!bookStep) height += BookPanel::kRowHeight;
     if (!monitor.Stable()) height += BookPanel::kRowHeight;
     BeginDemoPanel(title, height, PanelScrollbar::Auto);

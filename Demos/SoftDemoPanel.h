@@ -15,9 +15,10 @@ constexpr vec3 kSoftDemoLight{0.0f, 1.0f, 0.0f};
 
 /// The demo panel at (400, 10), 370 wide and 75 high as the book, drawn from the table `params`; one text
 /// row taller for each of: a non-book integrator or dt (read-only here; set with --set integrator=... dt=...),
-/// an instability report (in red).
+/// an instability report (in red); `extraHeight` (px) more for rows of the table the book does not have (the
+/// auto model's, DemoBase::AutoModelRowHeight).
 void DrawSoftDemoPanel(const char* title, const ParameterSet& params, Integrator integrator, float dt,
-                       const StabilityMonitor& monitor);
+                       const StabilityMonitor& monitor, float extraHeight = 0.0f);
 /// Prints the monitor's report to stderr the first time it fails (*reported latches until the monitor is
 /// stable again, i.e. after a reset).
 void ReportOnce(const StabilityMonitor& monitor, const char* demo, bool* reported);

@@ -172,6 +172,25 @@ void WorldPositions(const PhysicsSystem& world, std::vector<double>* out) {
     }
 }
 
+void WorldVelocities(const PhysicsSystem& world, std::vector<double>* out) {
+    out->clear();
+    auto add = [out](const vec3& v) {
+        out->push_back(v.x);
+        out->push_back(v.y);
+        out->push_back(v.z);
+    };
+    for (const Rigidbody* body : world.Bodies()) {
+        if (body->type == RigidbodyType::Particle) {
+            add(static_cast<const Particle*>(body)->GetVelocity());
+        } else if (body->type == RigidbodyType::Box || body->type == RigidbodyType::Sphere) {
+            add(static_cast<const RigidbodyVolume*>(body)->velocity);
+        }
+    }
+    for (const Cloth* cloth : world.Cloths()) {
+        for (const Particle& p : cloth->verts) add(p.GetVelocity());
+    }
+}
+
 double WorldEnergy(const PhysicsSystem& world) {
     double energy = StabilityMonitor::MechanicalEnergy(world);
     for (const RigidbodyVolume* v : world.Volumes()) {
@@ -206,6 +225,10 @@ struct QuantityProbe {
     BudgetQuantity quantity;
     double energyScale = 1.0;  // J: |E0| of the window's start (floored)
     std::vector<double> a, b;
+    // The difference at the end of a warm-up, taken off every later one (Rebase).
+    bool based = false;
+    std::vector<double> baseDelta, baseVelocity;
+    double baseEnergy = 0.0;
 
     double Measure(const ModelProbe& coarse, const ModelProbe* fine) {
         switch (quantity) {
@@ -213,34 +236,63 @@ struct QuantityProbe {
                 WorldPositions(coarse.World(), &a);
                 WorldPositions(fine->World(), &b);
                 double worst = 0.0;
-                for (std::size_t i = 0; i + 2 < a.size() && i + 2 < b.size(); i += 3) {
-                    const double dx = a[i] - b[i], dy = a[i + 1] - b[i + 1], dz = a[i + 2] - b[i + 2];
-                    worst = std::max(worst, std::sqrt(dx * dx + dy * dy + dz * dz));
+                const std::size_t n = std::min(a.size(), b.size());
+                for (std::size_t i = 0; i + 2 < n; i += 3) {
+                    double d[3];
+                    for (int c = 0; c < 3; ++c) d[c] = a[i + c] - b[i + c] - (based ? baseDelta[i + c] : 0.0);
+                    worst = std::max(worst, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
                 }
                 return worst;
             }
             case BudgetQuantity::Energy:
-                return std::fabs(WorldEnergy(coarse.World()) - WorldEnergy(fine->World())) / energyScale;
+                return std::fabs(WorldEnergy(coarse.World()) - WorldEnergy(fine->World()) - baseEnergy) / energyScale;
             case BudgetQuantity::Constraint:
                 return WorldConstraintError(coarse.World());
         }
         return kInf;
     }
+
+    /// Takes the current difference as the zero of later ones.
+    void Rebase(const ModelProbe& coarse, const ModelProbe* fine) {
+        if (quantity == BudgetQuantity::Position) {
+            WorldPositions(coarse.World(), &a);
+            WorldPositions(fine->World(), &b);
+            baseDelta.assign(std::min(a.size(), b.size()), 0.0);
+            for (std::size_t i = 0; i < baseDelta.size(); ++i) baseDelta[i] = a[i] - b[i];
+            WorldVelocities(coarse.World(), &a);
+            WorldVelocities(fine->World(), &b);
+            baseVelocity.assign(std::min(a.size(), b.size()), 0.0);
+            for (std::size_t i = 0; i < baseVelocity.size(); ++i) baseVelocity[i] = a[i] - b[i];
+        } else if (quantity == BudgetQuantity::Energy) {
+            baseEnergy = WorldEnergy(coarse.World()) - WorldEnergy(fine->World());
+        }
+        based = true;
+    }
 };
 
 /// One window: the candidate and (unless the quantity is observed directly) its refinement run from the same
-/// state to `window` seconds, sampled at up to 256 whole-step times (an oscillation must not hide between samples).
+/// state for `window` seconds, sampled at up to 256 whole-step times (an oscillation must not hide between
+/// samples). `warmSteps` steps of the candidate first run unmeasured, and the difference at their end is taken off
+/// the later ones: probes built from a mid-run state of a world with volumes lack its contact history (no warm
+/// start), so they first settle.
 struct WindowResult {
     bool stable = true;
-    double estimate = kInf;        // the quantity at the end of `horizon`, extrapolated
-    double observed = 0.0;         // the largest sampled difference (or observed value)
-    double growth = 1.0;           // the fitted exponent
+    double estimate = kInf;        // the quantity at the end of `horizon`, extrapolated with `growth`
+    double observed = 0.0;         // the largest sampled difference (or observed value) over the measured part
+    double half = 0.0;             // ... over its first half
+    double length = 0.0;           // s: the measured part
+    double endPosition = 0.0;      // m: position budgets: the largest position difference at the window's end
+    double endVelocity = 0.0;      // m/s: ... and the largest velocity difference there
+    double factor = 1.0;           // the Richardson factor
+    double growth = 1.0;           // the exponent used
     double cpuSeconds = 0.0;       // candidate's probe only
     double probeCpuSeconds = 0.0;  // both probes
+    double simulated = 0.0;        // s the candidate's probe ran
 };
 
 WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
-                       const ErrorBudget& budget, double window, double horizon, double fixedGrowth = -1.0) {
+                       const ErrorBudget& budget, double window, double horizon, int warmSteps,
+                       double fixedGrowth = -1.0) {
     WindowResult r;
     const double start = ThreadCpuSeconds();
     std::unique_ptr<ModelProbe> coarse = factory();
@@ -251,52 +303,76 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
         fine = factory();
         fine->Apply(Refine(candidate, space));
     }
-    QuantityProbe q{budget.quantity, 1.0, {}, {}};
+    QuantityProbe q{budget.quantity, 1.0, {}, {}, false, {}, {}, 0.0};
     if (budget.quantity == BudgetQuantity::Energy) {
         q.energyScale = std::max(std::fabs(WorldEnergy(coarse->World())), 1e-12);
     }
-    const long long steps = std::max(2LL, std::llround(window / candidate.step));
-    const int samples = static_cast<int>(std::min<long long>(256, steps));
-    double half = 0.0, full = 0.0;  // running maximum at the window's middle and end
+    const long long warm = observed ? 0 : warmSteps;
+    const long long measured = std::max(2LL, std::llround(window / candidate.step));
+    const int samples = static_cast<int>(std::min<long long>(256, measured));
+    double half = 0.0, full = 0.0;  // running maximum at the measured part's middle and end
     double cpu = 0.0;
-    for (int s = 1; s <= samples; ++s) {
-        const double t = candidate.step * static_cast<double>((steps * s) / samples);
+    bool ok = true;
+    auto advance = [&](double t) {
         const double before = ThreadCpuSeconds();
         const bool coarseOk = coarse->AdvanceTo(t);
         cpu += ThreadCpuSeconds() - before;
-        const bool fineOk = observed || fine->AdvanceTo(t);
-        if (!coarseOk || !fineOk) {
-            r.stable = coarseOk;
-            if (!coarseOk) break;
-            // The refinement blew up but the candidate did not: no estimate can be trusted.
-            r.estimate = kInf;
-            r.probeCpuSeconds = ThreadCpuSeconds() - start;
-            r.cpuSeconds = cpu;
-            return r;
+        if (!coarseOk) {
+            r.stable = false;
+            return false;
         }
+        if (!observed && !fine->AdvanceTo(t)) {
+            r.estimate = kInf;  // the refinement blew up but the candidate did not: no estimate can be trusted
+            r.observed = kInf;
+            return false;
+        }
+        return true;
+    };
+    if (warm > 0) {
+        ok = advance(candidate.step * static_cast<double>(warm));
+        if (ok) q.Rebase(*coarse, fine.get());
+    }
+    for (int s = 1; ok && s <= samples; ++s) {
+        ok = advance(candidate.step * static_cast<double>(warm + (measured * s) / samples));
+        if (!ok) break;
         const double d = q.Measure(*coarse, fine.get());
         if (!std::isfinite(d)) {
             r.stable = false;
+            ok = false;
             break;
         }
         full = std::max(full, d);
         if (2 * s <= samples) half = full;
     }
+    if (ok && budget.quantity == BudgetQuantity::Position) {
+        // Where each body is and how fast it goes at the end, with the warm-up's differences taken off.
+        std::vector<double> va, vb;
+        WorldVelocities(coarse->World(), &va);
+        WorldVelocities(fine->World(), &vb);
+        for (std::size_t i = 0; i + 2 < std::min(va.size(), vb.size()); i += 3) {
+            double d[3];
+            for (int c = 0; c < 3; ++c) d[c] = va[i + c] - vb[i + c] - (q.based ? q.baseVelocity[i + c] : 0.0);
+            r.endVelocity = std::max(r.endVelocity, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+        }
+        r.endPosition = q.Measure(*coarse, fine.get());
+    }
     r.cpuSeconds = cpu;
     r.probeCpuSeconds = ThreadCpuSeconds() - start;
-    if (!r.stable) return r;
-    const double length = candidate.step * static_cast<double>(steps);
-    // Growth in time fitted from the window's halves, 0 (bounded, e.g. a symplectic integrator's energy error) to
-    // 1 (a drift: a phase error, a velocity bias). Discretisation errors do not grow faster than linearly while
-    // the run is stable; what does (an instability starting) is left to the live checks, not extrapolated from a
-    // transient (a stack settling in its first steps would otherwise be extrapolated quadratically).
+    r.simulated = candidate.step * static_cast<double>(warm + measured);
+    if (!ok) return r;
+    const double length = candidate.step * static_cast<double>(measured);
+    // Growth in time, fitted from the measured part's halves, 0 (bounded: a symplectic integrator's energy error, a
+    // stack that settled) to 1 (a drift: a phase error, a velocity bias). Nothing is extrapolated faster than
+    // linearly: an instability starting is left to the live checks.
     double growth = 1.0;
     if (full > 0.0 && half > 0.0) growth = std::clamp(std::log2(full / half), 0.0, 1.0);
-    if (observed) growth = std::min(growth, 1.0);
     if (fixedGrowth >= 0.0) growth = fixedGrowth;
     r.growth = growth;
     r.observed = full;
+    r.half = half;
+    r.length = length;
     const double factor = observed ? 1.0 : RichardsonFactor(OrderOf(candidate, space));
+    r.factor = factor;
     r.estimate = factor * full * std::pow(std::max(horizon / length, 1.0), growth);
     return r;
 }
@@ -311,6 +387,142 @@ bool SameFamily(const ModelCandidate& a, const ModelCandidate& b) {
 }
 
 int Passes(const ModelCandidate& c) { return c.solver == ContactSolver::Soft ? c.softSubsteps : c.iterations; }
+
+}  // namespace
+
+namespace {
+
+/// A window, from `factory`'s state at `start` s: the calibration's at the start, or the watch's around an event.
+struct PlannedWindow {
+    enum class Kind { Start, Event };
+    Kind kind = Kind::Start;
+    ProbeFactory factory;
+    double start = 0.0;
+    double span = 0.0;  ///< s of the run that follows the window's start
+    int warmSteps = 0;
+};
+
+/// The calibration's windows: one at the start and, for a world without volumes, up to settings.eventWindows around
+/// events the start window cannot see (a bounce, a cloth reaching an obstacle), from snapshots of a pilot run of the
+/// scene's own model over the whole run. Particles restart exactly from a snapshot; volumes would lose their contact
+/// history (and the scene's own model may let a stack fall), so their events are left to the live watch. Each
+/// step's irregularity is the largest change of any point's acceleration times the step (m/s: what an impulse does,
+/// and what gravity or a smooth spring hardly does); the run is cut into intervals of half a window, and an interval
+/// ten times more irregular than any the start window covers gets a window from the snapshot of the interval before.
+std::vector<PlannedWindow> PlanWindows(const ProbeFactory& factory, const CandidateSpace& space,
+                                       const ChoiceSettings& settings, double window, ModelChoiceResult* result) {
+    using Kind = PlannedWindow::Kind;
+    const double T = settings.runSeconds;
+    std::vector<PlannedWindow> plan{{Kind::Start, factory, 0.0, T, 0}};
+    const double interval = window / 2.0;
+    const int intervals = static_cast<int>(std::ceil(T / interval - 1e-9));
+    if (settings.eventWindows <= 0 || space.hasVolumes || intervals < 4) return plan;
+    const double start = ThreadCpuSeconds();
+    std::unique_ptr<ModelProbe> pilot = factory();
+    pilot->Apply(space.base);
+    const double h = space.base.step;
+    std::vector<ProbeFactory> snapshots{factory};  // at k * interval
+    std::vector<double> jump(static_cast<std::size_t>(intervals), 0.0);
+    std::vector<double> x0, x1, x2, a1;  // positions two steps back, one back, now; the last acceleration
+    long long n = 0;
+    bool haveA = false;
+    while ((n + 1) * h <= T * (1.0 + 1e-12)) {
+        if (!pilot->AdvanceTo((n + 1) * h)) break;  // the scene's own model blew up: plan from what came before
+        ++n;
+        const double t = n * h;
+        x0.swap(x1);
+        x1.swap(x2);
+        WorldPositions(pilot->World(), &x2);
+        const std::size_t k = static_cast<std::size_t>(std::min(intervals - 1, static_cast<int>(t / interval)));
+        if (n >= 3 && x0.size() == x2.size()) {
+            double worst = 0.0;
+            if (a1.size() != x2.size()) a1.assign(x2.size(), 0.0);
+            for (std::size_t i = 0; i < x2.size(); ++i) {
+                const double a = (x2[i] - 2.0 * x1[i] + x0[i]) / (h * h);
+                if (haveA) worst = std::max(worst, std::fabs(a - a1[i]) * h);
+                a1[i] = a;
+            }
+            haveA = true;
+            jump[k] = std::max(jump[k], worst);
+        }
+        if (t >= static_cast<double>(snapshots.size()) * interval - 1e-9 &&
+            static_cast<int>(snapshots.size()) < intervals) {
+            snapshots.push_back(pilot->Snapshot());
+        }
+    }
+    const double seen = std::max(jump[0], jump[1]);  // what the start window covers
+    std::vector<int> picked;
+    for (int e = 0; e < settings.eventWindows; ++e) {
+        int best = -1;
+        for (int k = 2; k < intervals; ++k) {
+            bool near = false;  // picked windows cover two intervals each, never twice
+            for (int p : picked) near = near || std::abs(p - k) < 2;
+            if (near || k - 1 >= static_cast<int>(snapshots.size())) continue;
+            if (jump[k] > 10.0 * seen && jump[k] > 1e-6 && (best < 0 || jump[k] > jump[best])) best = k;
+        }
+        if (best < 0) break;
+        picked.push_back(best);
+    }
+    std::sort(picked.begin(), picked.end());
+    for (int k : picked) {
+        const double begin = (k - 1) * interval;
+        plan.push_back({Kind::Event, snapshots[static_cast<std::size_t>(k - 1)], begin, T - begin, 0});
+        result->eventTimes.push_back(begin);
+    }
+    result->pilotCpuSeconds = ThreadCpuSeconds() - start;
+    result->calibrationCpuSeconds += result->pilotCpuSeconds;
+    return plan;
+}
+
+/// What one window adds to a candidate's estimate.
+///  - Start: the window's difference extrapolated over the run with its fitted growth. For a position budget on a
+///    world without volumes, at least the position difference plus the velocity difference carried over the rest of
+///    the run (a phase error shows in the velocity while the positions still agree, at a turning point); volumes
+///    are left out of that term, as contact jitter would carry over as a drift.
+///  - Event: the difference the event made, grown linearly over the rest of the run, or (position, no volumes) the
+///    velocity difference it left carried over the rest of the run (a bounce at another time leaves one behind).
+double Contribution(const PlannedWindow& p, const WindowResult& w, const ErrorBudget& budget, bool volumes) {
+    if (budget.quantity == BudgetQuantity::Constraint) return w.observed;
+    const double extrapolated = w.factor * w.observed * std::pow(std::max(p.span / w.length, 1.0), w.growth);
+    const double linear = w.factor * w.observed * std::max(p.span / w.length, 1.0);
+    const double carried = w.factor * (w.endPosition + w.endVelocity * std::max(p.span - w.length, 0.0));
+    const bool velocities = budget.quantity == BudgetQuantity::Position && !volumes;
+    if (p.kind == PlannedWindow::Kind::Event) return velocities ? std::max(linear, carried) : linear;
+    return velocities ? std::max(extrapolated, carried) : extrapolated;
+}
+
+/// A candidate's estimate: the sum of its windows' contributions (constraint error: the largest). Stops as soon as
+/// it misses `bound` (the rest can only add), marking the estimate partial (a lower bound).
+void Evaluate(const std::vector<PlannedWindow>& plan, double window, const CandidateSpace& space,
+              const ErrorBudget& budget, double bound, CandidateEstimate* e, double* cpuSeconds) {
+    e->estimate = 0.0;
+    e->segments.clear();
+    double cpu = 0.0, simulated = 0.0;
+    for (std::size_t k = 0; k < plan.size(); ++k) {
+        const WindowResult w = RunWindow(plan[k].factory, e->model, space, budget, window, 0.0, plan[k].warmSteps);
+        *cpuSeconds += w.probeCpuSeconds;
+        cpu += w.cpuSeconds;
+        simulated += w.simulated;
+        if (!w.stable || !std::isfinite(w.observed)) {
+            e->stable = w.stable;
+            e->estimate = kInf;
+            e->note = w.stable ? "its refinement blew up in the calibration" : "unstable in the calibration";
+            break;
+        }
+        if (k == 0) e->growth = w.growth;
+        const double c = Contribution(plan[k], w, budget, space.hasVolumes);
+        e->segments.push_back(c);
+        e->estimate = budget.quantity == BudgetQuantity::Constraint ? std::max(e->estimate, c) : e->estimate + c;
+        if (e->estimate > bound && k + 1 < plan.size()) {
+            e->partial = true;
+            char text[96];
+            std::snprintf(text, sizeof text, "missed after %zu of %zu windows", k + 1, plan.size());
+            e->note = text;
+            break;
+        }
+    }
+    e->cpuPerSimSecond = simulated > 0.0 ? cpu / simulated : 0.0;
+}
 
 }  // namespace
 
@@ -332,6 +544,7 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
     const double window = WindowFor(settings);
     result.windowSeconds = window;
     const double bound = budget.bound / settings.safety;
+    const std::vector<PlannedWindow> plan = PlanWindows(factory, space, settings, window, &result);
     for (std::size_t k = 0; k < order.size(); ++k) {
         CandidateEstimate& e = result.candidates[order[k]];
         if (result.chosen >= 0) {
@@ -353,16 +566,17 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
             } else if (Passes(e.model) == Passes(f.model) && f.stable && std::isfinite(f.estimate) &&
                        f.model.step > e.model.step && (!nearest || f.model.step < nearest->model.step)) {
                 nearest = &f;
-            } else if (e.model.step == f.model.step && Passes(e.model) > Passes(f.model) && f.stable &&
+            } else if (e.model.step == f.model.step && Passes(e.model) > Passes(f.model) && f.stable && !f.partial &&
                        f.estimate < 64.0 * bound) {
-                // Near the budget, more passes at this step stopped helping (the step's own error dominates): a
+                // Near the budget, more passes at this step stopped helping (doubling them or more took off less
+                // than a fifth: the step's own error dominates): a
                 // richer candidate at the same step is not run. Far from it, a solve that has not converged at all
                 // says nothing about how the next passes will do.
                 for (std::size_t i = 0; i < j && why.empty(); ++i) {
                     const CandidateEstimate& g = result.candidates[order[i]];
-                    if (g.evaluated && !g.meets && g.stable && SameFamily(g.model, f.model) &&
+                    if (g.evaluated && !g.meets && g.stable && !g.partial && SameFamily(g.model, f.model) &&
                         g.model.step == f.model.step && Passes(g.model) < Passes(f.model) &&
-                        f.estimate > 0.5 * g.estimate) {
+                        f.estimate > 0.8 * g.estimate) {
                         why = "not run: more passes stopped helping its family at this step";
                     }
                 }
@@ -388,35 +602,16 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
         }
         ++result.evaluatedCount;
         e.evaluated = true;
-        double used = window;
-        WindowResult w;
-        const double screen = std::max(settings.screenFraction * window, 2.0 * e.model.step);
-        if (screen >= 2.0 * e.model.step && screen < 0.9 * window) {
-            w = RunWindow(factory, e.model, space, budget, screen, settings.runSeconds);
-            result.calibrationCpuSeconds += w.probeCpuSeconds;
-            used = screen;
-            if (w.stable && w.estimate <= settings.screenMargin * bound) {
-                w = RunWindow(factory, e.model, space, budget, window, settings.runSeconds);
-                result.calibrationCpuSeconds += w.probeCpuSeconds;
-                used = window;
-            } else if (w.stable) {
-                e.note = "missed by far on the screening window";
-            }
-        } else {
-            w = RunWindow(factory, e.model, space, budget, window, settings.runSeconds);
-            result.calibrationCpuSeconds += w.probeCpuSeconds;
-        }
-        e.stable = w.stable;
-        e.estimate = w.stable ? w.estimate : kInf;
-        e.growth = w.growth;
-        const double length = e.model.step * std::max(2.0, std::round(used / e.model.step));
-        e.cpuPerSimSecond = w.cpuSeconds / length;
-        e.meets = e.stable && e.estimate <= bound;
-        if (!e.stable) e.note = "unstable in the calibration window";
+        Evaluate(plan, window, space, budget, bound, &e, &result.calibrationCpuSeconds);
+        e.meets = e.stable && !e.partial && e.estimate <= bound;
         if (e.meets) result.chosen = static_cast<int>(order[k]);
-        if (e.stable && std::isfinite(e.estimate) &&
-            (result.best < 0 || e.estimate < result.candidates[result.best].estimate)) {
-            result.best = static_cast<int>(order[k]);
+        if (e.stable && std::isfinite(e.estimate)) {
+            const CandidateEstimate* b = result.best >= 0 ? &result.candidates[result.best] : nullptr;
+            // The smallest complete estimate; a partial one (a lower bound) only while there is none.
+            if (!b || (b->partial && (!e.partial || e.estimate < b->estimate)) ||
+                (!b->partial && !e.partial && e.estimate < b->estimate)) {
+                result.best = static_cast<int>(order[k]);
+            }
         }
     }
     result.feasible = result.chosen >= 0;
@@ -424,73 +619,162 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
 }
 
 ModelWatch::ModelWatch(const CandidateSpace& s, const ErrorBudget& b, const ChoiceSettings& c,
-                       const ModelCandidate& chosen, double calibrationEstimate, double calibrationGrowth)
+                       const CandidateEstimate& chosen)
     : space(s),
       budget(b),
       settings(c),
-      current(chosen),
-      running(calibrationEstimate),
-      currentEstimate(calibrationEstimate),
-      growth(calibrationGrowth) {}
+      current(chosen.model),
+      running(chosen.estimate),
+      predicted(chosen.estimate),
+      growth(chosen.growth) {}
 
 bool ModelWatch::Due(double time) const {
+    if (time >= settings.runSeconds - 1e-9) return false;
+    if (eventPending && snapshot) return true;
     const double every = settings.checkEvery > 0.0 ? settings.checkEvery : settings.runSeconds / 6.0;
-    return every > 0.0 && time >= lastCheck + every - 1e-9 && time < settings.runSeconds - 1e-9;
+    return every > 0.0 && time >= lastCheck + every - 1e-9;
+}
+
+double ModelWatch::CheckWindow() const { return settings.checkWindowFraction * WindowFor(settings); }
+
+bool ModelWatch::WantsSnapshot(double time) const {
+    return settings.maxEventChecks > 0 && time >= snapshotTime + 0.5 * CheckWindow() - 1e-9 &&
+           time < settings.runSeconds - 1e-9;
+}
+
+void ModelWatch::TakeSnapshot(double time, ProbeFactory factory) {
+    // The one before the newest is kept too: an event is checked from a snapshot at least half a window before it.
+    previousSnapshot = std::move(snapshot);
+    previousSnapshotTime = snapshotTime;
+    snapshot = std::move(factory);
+    snapshotTime = time;
+}
+
+void ModelWatch::Observe(double time, const PhysicsSystem& world) {
+    // Irregularity between frames: the largest change of any point's acceleration times the frame time (m/s; what
+    // an impulse does, and what gravity or a smooth spring hardly does).
+    const double dt = time - lastObserved;
+    if (!(dt > 0.0) && observed > 0) return;  // no step since the last frame
+    x0.swap(x1);
+    x1.swap(x2);
+    WorldPositions(world, &x2);
+    // Frames of unequal length (a step that is not a whole number of frames) would read as irregular: the
+    // acceleration estimate needs two equal intervals.
+    const bool even = std::fabs(dt - lastInterval) <= 1e-6 * dt;
+    lastInterval = dt;
+    lastObserved = time;
+    ++observed;
+    if (observed < 3 || x0.size() != x2.size()) return;
+    if (!even) {
+        acceleration.clear();
+        return;
+    }
+    double jump = 0.0;
+    const bool haveAcceleration = acceleration.size() == x2.size();
+    if (!haveAcceleration) acceleration.assign(x2.size(), 0.0);
+    for (std::size_t i = 0; i < x2.size(); ++i) {
+        const double a = (x2[i] - 2.0 * x1[i] + x0[i]) / (dt * dt);
+        if (haveAcceleration) jump = std::max(jump, std::fabs(a - acceleration[i]) * dt);
+        acceleration[i] = a;
+    }
+    if (!haveAcceleration) return;
+    if (time <= WindowFor(settings) + 1e-9) {
+        baseline = std::max(baseline, jump);  // what the calibration window saw
+    } else if (jump > 10.0 * baseline && jump > 1e-6 && eventChecks < settings.maxEventChecks && !eventPending) {
+        eventPending = true;
+        eventTime = time;
+    }
 }
 
 bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* log) {
     if (!Due(time)) return false;
-    lastCheck = time;
-    const double window = std::min(settings.runSeconds - time, settings.checkWindowFraction * WindowFor(settings));
+    const double T = settings.runSeconds;
+    const bool event = eventPending && snapshot;
+    // An event is checked from the snapshot taken at least half a window before it, over the rest of the run; a
+    // periodic check from the world as it is, for the time since the last check.
+    const ProbeFactory& from = event && previousSnapshot && snapshotTime > eventTime - 0.5 * CheckWindow()
+                                   ? previousSnapshot
+                                   : (event ? snapshot : factory);
+    const double from_time = event ? (&from == &previousSnapshot ? previousSnapshotTime : snapshotTime) : time;
+    // At least four steps measured, so the window's growth is fitted from more than two samples.
+    const double window = std::min(T - from_time, std::max(CheckWindow(), 4.0 * current.step));
+    if (event) {
+        eventPending = false;
+        ++eventChecks;
+    } else {
+        lastCheck = time;
+    }
     if (!(window > 0.0)) return false;
-    // The current regime taken as the whole run's: the window's difference extrapolated over the full run length
-    // with the calibration's growth (a short window's own fit follows the phase of an oscillation, not its trend).
-    const WindowResult w = RunWindow(factory, current, space, budget, window, settings.runSeconds, growth);
+    // Probes from a live world with volumes lack its contact history (no warm start): they settle first, unmeasured.
+    const int warm = space.hasVolumes ? std::max(3, static_cast<int>(window / 3.0 / current.step)) : 0;
+    const WindowResult w = RunWindow(from, current, space, budget, window, 0.0, warm,
+                                     budget.quantity == BudgetQuantity::Position ? -1.0 : growth);
     cpuSeconds += w.probeCpuSeconds;
     ++checks;
-    const double estimate = w.stable ? w.estimate : kInf;
-    currentEstimate = estimate;
-    const double share = (settings.runSeconds - modelStart) / settings.runSeconds;
-    running = carried + estimate * share;
+    const bool ok = w.stable && std::isfinite(w.observed);
+    if (budget.quantity == BudgetQuantity::Position) {
+        // A periodic window's rate stands for the time since the last check; an event's difference grows over the
+        // rest of the run; the calibration's estimate, scaled for refinements since, stands for the rest.
+        const double span = event ? T - from_time : time - lastCounted;
+        if (!event) lastCounted = time;
+        // Extrapolated with the window's own growth (a settled stack's jitter does not add up), and for a world
+        // without volumes at least the velocity difference carried over the span.
+        double add = w.factor * w.observed * std::pow(std::max(span / w.length, 1.0), w.growth);
+        if (!space.hasVolumes) add = std::max(add, w.factor * (w.endPosition + w.endVelocity * span));
+        measured += ok ? add : kInf;
+        running = measured + predicted * scale * (T - time) / T;
+    } else {
+        // Energy and constraint: the window's regime taken as the whole run's (with the calibration's growth), for
+        // the current model's share of the run, plus what earlier models left.
+        const double estimate = ok ? (budget.quantity == BudgetQuantity::Constraint
+                                          ? w.observed
+                                          : w.factor * w.observed * std::pow(std::max(T / w.length, 1.0), growth))
+                                   : kInf;
+        lastEstimate = std::max(event ? lastEstimate : 0.0, estimate);
+        running = carried + lastEstimate * (T - modelStart) / T;
+    }
     // The model was chosen with the safety factor's margin; it is changed only when the estimate says the budget
     // itself will be missed (a margin, so a model chosen near the edge does not flip on window-to-window noise).
     if (running <= budget.bound) return false;
-    // Refine within the family: the next smaller step the space allows, else twice the passes.
+    // Refine within the family: the next smaller step the space allows, else more passes.
     ModelCandidate next = current;
     double smaller = 0.0;
-    for (double s : space.steps) {
-        if (s < current.step - 1e-12 && s > smaller) smaller = s;
+    for (double st : space.steps) {
+        if (st < current.step - 1e-12 && st > smaller) smaller = st;
     }
     const std::vector<int>& passList = current.solver == ContactSolver::Soft ? space.softSubsteps : space.iterations;
     int morePasses = 0;
     for (int p : passList) {
         if (p > Passes(current) && (morePasses == 0 || p < morePasses)) morePasses = p;
     }
+    double ratio = 1.0;  // predicted error ratio of the refinement to the current model
     if (smaller > 0.0) {
         next.step = smaller;
+        ratio = std::pow(smaller / current.step, OrderOf(current, space));
     } else if (space.hasVolumes && morePasses > 0) {
         (current.solver == ContactSolver::Soft ? next.softSubsteps : next.iterations) = morePasses;
+        ratio = static_cast<double>(Passes(current)) / morePasses;
     } else {
         char text[256];
         std::snprintf(text, sizeof text,
-                      "t = %.2f s: estimated %s error at the end %.3g exceeds the budget %g, and %s "
-                      "has no finer setting on this host",
+                      "t = %.2f s: estimated %s error at the end %.3g exceeds the budget %g, and %s has no finer "
+                      "setting on this host",
                       time, ToString(budget.quantity), running, budget.bound,
                       current.Describe(space.hasParticles, space.hasVolumes).c_str());
         *log = text;
         return false;
     }
-    // What the model made so far stays in the estimate, for its share of the run.
-    carried += estimate * (time - modelStart) / settings.runSeconds;
-    char text[320];
+    char text[400];
     std::snprintf(text, sizeof text,
-                  "t = %.2f s: estimated %s error at the end %.3g exceeds the budget %g (the last %.3g s "
+                  "t = %.2f s: estimated %s error at the end %.3g exceeds the budget %g (%s %.3g s from t = %.2f s "
                   "differ by %.3g from the refinement): switching from %s to %s",
-                  time, ToString(budget.quantity), running, budget.bound, window, w.observed,
-                  current.Describe(space.hasParticles, space.hasVolumes).c_str(),
+                  time, ToString(budget.quantity), running, budget.bound, event ? "an impact: the" : "the last",
+                  w.length, from_time, w.observed, current.Describe(space.hasParticles, space.hasVolumes).c_str(),
                   next.Describe(space.hasParticles, space.hasVolumes).c_str());
     *log = text;
     current = next;
+    scale *= ratio;
+    carried += lastEstimate * (time - modelStart) / T;
     modelStart = time;
     return true;
 }

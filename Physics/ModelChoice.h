@@ -81,7 +81,11 @@ double PredictedWork(const ModelCandidate& candidate, const CandidateSpace& spac
 /// "m" or "(relative)".
 const char* BudgetUnit(BudgetQuantity quantity);
 
-/// A fresh copy of the scene, at the state of the moment its factory was called, that the estimator can run.
+class ModelProbe;
+/// Builds a probe, a fresh copy of the scene at the state of the moment the factory was made.
+using ProbeFactory = std::function<std::unique_ptr<ModelProbe>()>;
+
+/// A fresh copy of the scene that the estimator can run.
 class ModelProbe {
 public:
     virtual ~ModelProbe() = default;
@@ -92,12 +96,13 @@ public:
     virtual bool AdvanceTo(double seconds) = 0;
     /// The probe's world (for WorldPositions, WorldEnergy, WorldConstraintError).
     virtual const PhysicsSystem& World() const = 0;
+    /// A factory of probes that start from this probe's world as it is now.
+    virtual ProbeFactory Snapshot() const = 0;
 };
-/// Builds a probe from the host's world as it is now.
-using ProbeFactory = std::function<std::unique_ptr<ModelProbe>()>;
-
 /// Every body's position as x, y, z triples: particles and volumes in insertion order, then cloth particles.
 void WorldPositions(const PhysicsSystem& world, std::vector<double>* out);
+/// Every body's velocity (m/s) as x, y, z triples, in WorldPositions' order.
+void WorldVelocities(const PhysicsSystem& world, std::vector<double>* out);
 /// J: kinetic energy of particles (cloth included) and volumes (linear and angular), gravitational potential
 /// energy (-m g . x), and spring energy (k (l - rest)^2 / 2 with the book's sign convention). Static bodies
 /// (mass 0) count nothing.
@@ -114,11 +119,13 @@ struct ChoiceSettings {
     double windowFraction = 0.05;
     double minWindow = 0.2;
     double maxWindow = 2.0;
-    /// Screening: each candidate first runs a window this fraction of the calibration window, and is counted as
-    /// missing the budget without the full window when that estimate exceeds screenMargin * bound / safety (most
-    /// candidates tried miss by far, and the screen costs a quarter of a window).
-    double screenFraction = 0.25;
-    double screenMargin = 8.0;
+    /// Worlds without volumes: at most this many more calibration windows, each from a snapshot of a pilot run of the
+    /// scene's own model just before an event (a bounce, an impact) the start window cannot see; 0 = none.
+    int eventWindows = 3;
+    /// The live watch also looks for events (a frame whose irregularity is ten times what the calibration window
+    /// saw: a bounce, an impact, a cloth reaching an obstacle) and checks the model over each, from a snapshot taken
+    /// before it; at most this many event checks per run (0: none, and no snapshots are taken).
+    int maxEventChecks = 6;
     /// A candidate meets the budget when safety * estimate <= bound.
     double safety = 2.0;
     /// Candidates estimated at most (the rest are reported as not run).
@@ -138,8 +145,10 @@ struct CandidateEstimate {
     double growth = 0.0;           ///< the error's fitted growth exponent in time
     bool evaluated = false;        ///< false: skipped (its predicted cost was above the chosen one's)
     bool stable = true;
-    bool meets = false;  ///< safety * estimate <= bound
-    std::string note;    ///< why skipped, or why the estimate is not trusted
+    bool meets = false;            ///< safety * estimate <= bound
+    bool partial = false;          ///< the estimate stopped at a window where it already missed (a lower bound)
+    std::vector<double> segments;  ///< each window's share of the estimate (start window first)
+    std::string note;              ///< why skipped, or why the estimate is not trusted
 };
 
 /// What ChooseModel found.
@@ -148,7 +157,9 @@ struct ModelChoiceResult {
     int chosen = -1;        ///< index into candidates of the cheapest that meets it (-1 when none)
     int best = -1;          ///< index of the candidate with the smallest estimate (for the refusal message)
     std::vector<CandidateEstimate> candidates;  ///< every candidate, in EnumerateCandidates order
-    double calibrationCpuSeconds = 0.0;         ///< s of CPU spent on probes
+    double calibrationCpuSeconds = 0.0;         ///< s of CPU spent on probes, the pilot included
+    double pilotCpuSeconds = 0.0;               ///< s of CPU of the pilot run (worlds without volumes)
+    std::vector<double> eventTimes;             ///< s: where the calibration's event windows start
     int evaluatedCount = 0;                     ///< candidates estimated
     double windowSeconds = 0.0;                 ///< s of simulated time per calibration run
 };
@@ -166,12 +177,18 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
 class ModelWatch {
 public:
     ModelWatch(const CandidateSpace& space, const ErrorBudget& budget, const ChoiceSettings& settings,
-               const ModelCandidate& chosen, double calibrationEstimate, double calibrationGrowth);
+               const CandidateEstimate& chosen);
     /// True when the model changed at this call: then Current() is the new model and *log says when and why.
     /// *log is also set (and false returned) when the estimate left the budget but no finer model exists.
     bool Check(double time, const ProbeFactory& factory, std::string* log);
     /// True when Check at `time` would run a window (so a host builds its factory only then).
     bool Due(double time) const;
+    /// After each frame, before Check: the host's world at `time` (s), for event detection.
+    void Observe(double time, const PhysicsSystem& world);
+    /// True when the host should hand in a snapshot of its world as it is now (TakeSnapshot), every half check
+    /// window, so an event can be checked from before it.
+    bool WantsSnapshot(double time) const;
+    void TakeSnapshot(double time, ProbeFactory snapshot);
     const ModelCandidate& Current() const { return current; }
     /// The running estimate of the error at the end of the run, in the budget's unit.
     double RunningEstimate() const { return running; }
@@ -185,12 +202,29 @@ private:
     ErrorBudget budget;
     ChoiceSettings settings;
     ModelCandidate current;
+    double CheckWindow() const;
+
     double running = 0.0;
-    double currentEstimate = 0.0;  // the last window's estimate for the current model over the whole run
-    double carried = 0.0;          // error of earlier models, each for its share of the run
-    double modelStart = 0.0;       // s: when the current model took over
-    double growth = 1.0;           // the calibration's fitted growth exponent, used for every check
-    double lastCheck = 0.0;        // s
+    double predicted = 0.0;     // the calibration's estimate for the chosen model over the whole run
+    double scale = 1.0;         // predicted error ratio of the current model to the chosen one
+    double measured = 0.0;      // position: the checks' estimate for the time before the last one
+    double lastCounted = 0.0;   // s: position: up to where periodic checks have counted
+    double carried = 0.0;       // energy, constraint: what earlier models left, each for its share of the run
+    double lastEstimate = 0.0;  // energy, constraint: the last check's whole-run estimate
+    double modelStart = 0.0;    // s: when the current model took over
+    double growth = 1.0;        // the calibration's fitted growth exponent, used for every check
+    double lastCheck = 0.0;     // s
     double cpuSeconds = 0.0;
+    // Events: the host's last three frames' positions and the last acceleration, the irregularity the calibration
+    // window saw, the pending event, and the two newest snapshots.
+    std::vector<double> x0, x1, x2, acceleration;
+    double lastObserved = 0.0, lastInterval = 0.0;
+    long long observed = 0;
+    double baseline = 0.0;
+    bool eventPending = false;
+    double eventTime = 0.0;
+    int eventChecks = 0;
+    ProbeFactory snapshot, previousSnapshot;
+    double snapshotTime = 0.0, previousSnapshotTime = 0.0;
     int checks = 0;
 };

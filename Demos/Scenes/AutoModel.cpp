@@ -45,6 +45,12 @@ public:
 
     const PhysicsSystem& World() const override { return scene->System(); }
 
+    ProbeFactory Snapshot() const override {
+        std::vector<std::string> notes;  // what the format cannot express: the estimate runs without it
+        auto now = std::make_shared<const SceneDescription>(DescribeWorld(scene->System(), "auto-model probe", &notes));
+        return [now]() -> std::unique_ptr<ModelProbe> { return std::make_unique<FileSceneProbe>(*now); };
+    }
+
 private:
     SceneDescription description;
     std::unique_ptr<FileScene> scene;
@@ -220,13 +226,21 @@ bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double 
     }
     const CandidateEstimate& chosen = choice.candidates[choice.chosen];
     if (!ApplyModel(params, chosen.model, error)) return false;
-    watch = std::make_unique<ModelWatch>(space, budget, settings, chosen.model, chosen.estimate, chosen.growth);
+    watch = std::make_unique<ModelWatch>(space, budget, settings, chosen);
     active = true;
     return true;
 }
 
 void AutoModel::AfterFrame(ParameterSet* params, const PhysicsSystem& world, double time) {
-    if (!active || !watch->Due(time)) return;
+    if (!active) return;
+    watch->Observe(time, world);
+    if (watch->WantsSnapshot(time)) {
+        std::vector<std::string> notes;
+        auto now = std::make_shared<const SceneDescription>(DescribeWorld(world, "auto-model probe", &notes));
+        watch->TakeSnapshot(time,
+                            [now]() -> std::unique_ptr<ModelProbe> { return std::make_unique<FileSceneProbe>(*now); });
+    }
+    if (!watch->Due(time)) return;
     std::string line;
     const bool changed = watch->Check(time, FactoryOf(world), &line);
     if (changed) {

@@ -227,6 +227,11 @@ std::string WriteSceneText(const SceneDescription& d) {
     root["format"] = d.format;
     root["name"] = d.name;
     root["duration"] = J(d.duration);
+    if (d.autoModel.Auto()) {  // a fixed model writes neither key, so exports without auto stay as they were
+        root["model"] = "auto";
+        root["budget"] = {{"quantity", ToString(static_cast<BudgetQuantity>(d.autoModel.quantity))},
+                          {"bound", J(d.autoModel.tolerance)}};
+    }
     const SceneWorld& w = d.world;
     Json world = {{"gravity", J(w.gravity)},
                   {"integrator", ToString(w.integrator)},

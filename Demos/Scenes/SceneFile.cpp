@@ -395,6 +395,47 @@ void ReadCloth(const Json& j, const std::string& path, SceneCloth* c, Problems* 
     r.Finish();
 }
 
+/// "model" and "budget" (docs/scenes.md, "Error budget"). The bound is checked as `--set tolerance=` checks it
+/// (finite, > 0, within the key's range: AddAutoModelParameters), so a file and the command line take the same.
+void ReadAutoModel(const Json& root, ObjectReader* r, AutoModelRequest* request, Problems* problems) {
+    std::string model;
+    r->String("model", &model);
+    if (model == "auto") {
+        request->model = 1;
+    } else if (!model.empty() && model != "fixed") {
+        problems->Add("model", "must be \"fixed\" or \"auto\"", &root.at("model"));
+    }
+    const Json* budget = r->Object("budget");
+    if (budget == nullptr) {
+        if (request->Auto()) problems->Add("budget", "is required when model is \"auto\" (e.g. {\"bound\": 0.01})");
+        return;
+    }
+    ObjectReader b(*budget, "budget", problems);
+    if (!b.Valid()) return;
+    std::string name;
+    b.String("quantity", &name);
+    BudgetQuantity quantity = BudgetQuantity::Position;
+    if (!name.empty() && !ParseBudgetQuantity(name, &quantity)) {
+        problems->Add("budget.quantity", "must be position, energy or constraint", &budget->at("quantity"));
+    }
+    request->quantity = static_cast<int>(quantity);
+    b.Float("bound", &request->tolerance, Range::Positive, true);
+    if (b.Has("bound") && budget->at("bound").is_number()) {  // a bad number was reported and not stored
+        ParameterSet keys;
+        AutoModelRequest scratch;
+        AddAutoModelParameters(&keys, &scratch);
+        const ParameterSet::Entry* key = keys.Find("tolerance");
+        const float bound = request->tolerance;
+        if (key != nullptr && bound > 0.0f && std::isfinite(bound) && (bound < key->min || bound > key->max)) {
+            problems->Add("budget.bound",
+                          "must be in [" + Decimal(static_cast<float>(key->min)) + ", " +
+                              Decimal(static_cast<float>(key->max)) + "]",
+                          &budget->at("bound"));
+        }
+    }
+    b.Finish();
+}
+
 void ReadTop(const Json& root, SceneDescription* d, Problems* problems) {
     ObjectReader r(root, "", problems);
     if (!r.Valid()) return;
@@ -407,6 +448,7 @@ void ReadTop(const Json& root, SceneDescription* d, Problems* problems) {
     r.Float("duration", &d->duration, Range::Positive);
     if (d->duration > SceneLimits::kMaxDuration)
         problems->Add("duration", "must be at most 3600 s", &root.at("duration"));
+    ReadAutoModel(root, &r, &d->autoModel, problems);
     if (const Json* w = r.Object("world")) ReadWorld(*w, &d->world, problems);
     if (const Json* c = r.Object("camera")) ReadCamera(*c, &d->camera, problems);
 

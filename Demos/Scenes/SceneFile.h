@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "Demos/Scenes/AutoModel.h"
 #include "Math/quaternion.h"
 #include "Math/vectors.h"
 #include "Physics/ContactSolver.h"
@@ -116,6 +117,9 @@ struct SceneDescription {
     int format = kSceneFormatVersion;
     std::string name;
     float duration = 10.0f;  ///< s, the run length when --frames is not given
+    /// "model" and "budget" (docs/scenes.md, "Error budget"): fixed (the world's own settings) unless "auto"; a
+    /// budget without "auto" is kept for `--set model=auto`.
+    AutoModelRequest autoModel;
     SceneWorld world;
     SceneCamera camera;
     std::vector<SceneBody> bodies;

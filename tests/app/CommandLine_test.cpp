@@ -199,7 +199,8 @@ TEST(CommandLine, HelpListsEveryFlagTheParserAccepts) {
                              "--serial-encode",
                              "--progress",
                              "--quiet",
-                             "--debug-nonfinite-at"}) {
+                             "--debug-nonfinite-at",
+                             "--explain-model"}) {
         EXPECT_NE(help.find(std::string("  ") + flag + " "), std::string::npos) << flag;
         Options o;
         std::string error;
@@ -209,4 +210,23 @@ TEST(CommandLine, HelpListsEveryFlagTheParserAccepts) {
     // Ranges in the help come from the same table the parser checks.
     EXPECT_NE(help.find("[-89, 89]"), std::string::npos);
     EXPECT_NE(help.find("[0, 255]"), std::string::npos);
+    // The error budget's --set keys (the demos' tables are not the parser's) are documented in the help.
+    for (const char* key : {"model=fixed|auto", "tolerance=T", "budget=position|energy|constraint"})
+        EXPECT_NE(help.find(key), std::string::npos) << key;
+}
+
+// --explain-model (docs/model-choice.md): a headless run's flag that needs no value; whether the demo's model is
+// auto is known only after --set, so the runner checks that (tests/app/AutoModelCli_test.cpp).
+TEST(CommandLine, ExplainModel) {
+    Options o;
+    std::string error;
+    ASSERT_EQ(Parse({"--demo", "springs", "--set", "model=auto", "--explain-model"}, &o, &error), ParseStatus::Ok)
+        << error;
+    EXPECT_TRUE(o.explainModel);
+    Options plain;
+    ASSERT_EQ(Parse({"--demo", "springs"}, &plain, &error), ParseStatus::Ok) << error;
+    EXPECT_FALSE(plain.explainModel);
+    ExpectError({"--window", "--explain-model"}, "--explain-model is for headless runs");
+    ExpectError({"--demo", "x", "--explain-model=1"}, "takes no value");
+    ExpectError({"--demo", "x", "--export-scene", "f.json", "--explain-model"}, "give one");
 }

@@ -56,3 +56,28 @@ TEST(FrameClock, NoDriftOverAMillionFrames) {
     EXPECT_EQ(clock.Steps() * clock.StepTicks() + clock.RemainderTicks(), frames * clock.FrameTicks());
     EXPECT_DOUBLE_EQ(clock.FrameSeconds(), 1000000.0 / 60.0);
 }
+
+// The auto model may refine the step during a run (docs/model-choice.md): the clock keeps every tick it has
+// accumulated, even when the new step needs a finer tick (1/7 s does not divide 1/300 s), and from then on
+// hands out steps of the new length.
+TEST(FrameClock, SetStepKeepsTheAccumulatedTimeExactly) {
+    FrameClock clock({1, 60}, {3, 100});
+    for (int i = 0; i < 7; ++i) clock.AdvanceFrame();
+    const std::int64_t before = clock.Steps();
+    const double remainder = double(clock.RemainderTicks()) / double(clock.TicksPerSecond());
+    clock.SetStep({1, 7});
+    EXPECT_EQ(clock.TicksPerSecond(), 2100);
+    EXPECT_EQ(clock.StepTicks(), 300);
+    EXPECT_EQ(clock.FrameTicks(), 35);
+    EXPECT_DOUBLE_EQ(double(clock.RemainderTicks()) / double(clock.TicksPerSecond()), remainder);
+    for (int i = 0; i < 600; ++i) clock.AdvanceFrame();
+    const std::int64_t after = clock.Steps() - before;
+    // Every tick of the 607 frames is in a step of its length or in the remainder.
+    const std::int64_t tps = clock.TicksPerSecond();
+    EXPECT_EQ(before * 3 * tps / 100 + after * tps / 7 + clock.RemainderTicks(), 607 * tps / 60);
+    EXPECT_EQ(after, 70);  // floor((600 / 60 + remainder) * 7): 10.03 s of 1/7 s steps
+    // The same step again changes nothing.
+    clock.SetStep({1, 7});
+    EXPECT_EQ(clock.TicksPerSecond(), tps);
+    EXPECT_EQ(clock.StepTicks(), 300);
+}

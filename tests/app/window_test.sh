@@ -91,4 +91,14 @@ zoom=$(echo "$summary" | sed -n 's/.* zoom \([-0-9.]*\).*/\1/p')
 [ -n "$yaw" ] && [ -n "$zoom" ] || fail "summary has no camera: $summary"
 [ "$yaw" != "-67.9312" ] || fail "right drag did not rotate the camera: $summary"
 [ "$zoom" != "12.0000" ] || fail "middle drag did not zoom the camera: $summary"
-echo "window: ok (ch14 -> ch15 by the panel button; camera yaw $yaw, zoom $zoom after the drags)"
+
+# model: auto in the window (docs/app.md, "Error budget"): chosen before the first frame, its summary after the
+# window's; a budget no candidate meets closes it with exit 2 before any frame.
+"$exe" --window --demo springs --set model=auto --set tolerance=0.01 --frames 30 >"$dir/app.out" 2>"$dir/app.err" ||
+  fail "the window with model=auto exited $?"
+grep -q '^Model: auto, ' "$dir/app.out" || fail "no auto model summary"
+"$exe" --window --demo springs --set model=auto --set tolerance=1e-9 --frames 30 >"$dir/app.out" 2>"$dir/app.err"
+rc=$?
+[ "$rc" -eq 2 ] || fail "an impossible budget in the window exited $rc, not 2"
+grep -q 'best estimate' "$dir/app.err" || fail "the refusal names no best estimate"
+echo "window: ok (ch14 -> ch15 by the panel button; camera yaw $yaw, zoom $zoom after the drags; model=auto)"

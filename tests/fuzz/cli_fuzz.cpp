@@ -25,6 +25,7 @@ void CheckAccepted(const Options& o) {
     Require(!o.demo.empty() || !o.scene.empty() || o.window, "a headless run names a demo or a scene");
     Require(o.demo.empty() || o.scene.empty(), "never both --demo and --scene");
     Require(o.exportScene.empty() || (!o.demo.empty() && !o.window), "--export-scene exports a demo");
+    Require(!o.explainModel || (!o.window && o.exportScene.empty()), "--explain-model is a headless run's");
     Require(!o.window || (o.outDir.empty() && o.compareDir.empty() && o.stateFile.empty() && o.videoFile.empty()),
             "--window takes no headless outputs");
     Require(o.backend == "auto" || o.backend == "osmesa" || o.backend == "egl", "a known back end");

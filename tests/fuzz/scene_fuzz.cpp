@@ -31,6 +31,9 @@ void CheckAccepted(const SceneDescription& d) {
                 d.cloths.size() <= SceneLimits::kMaxCloths,
             "counts within the limits");
     Require(Finite(d.world.gravity) && d.world.step >= 0.0f && d.world.step <= 1.0f, "world finite");
+    std::string budgetError;
+    Require(!d.autoModel.Auto() || ValidateBudget(d.autoModel.Budget(), &budgetError), "an auto budget is valid");
+    Require(d.autoModel.quantity >= 0 && d.autoModel.quantity <= 2, "a known budget quantity");
     for (const SceneBody& b : d.bodies) {
         Require(!b.id.empty() && Finite(b.position) && Finite(b.velocity) && Finite(b.angularVelocity), "body finite");
         Require(b.mass >= 0.0f && std::isfinite(b.mass), "mass >= 0");

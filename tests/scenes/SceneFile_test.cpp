@@ -553,3 +553,77 @@ TEST(SceneExport, WritesSoftAndSleepOnlyWhenTheyDifferFromTheDefaults) {
     EXPECT_EQ(read.world.sleep.angularSpeed, 0.5f);
     EXPECT_EQ(read.world.sleep.timeToSleep, SleepSettings().timeToSleep);
 }
+
+// The error budget (docs/scenes.md, "Error budget"): "model" and "budget" read into SceneDescription::autoModel.
+TEST(SceneFile, ReadsTheErrorBudget) {
+    SceneDescription d;
+    ASSERT_TRUE(Problems(File(kBox), &d).empty());
+    EXPECT_FALSE(d.autoModel.Auto()) << "fixed is the default";
+
+    ASSERT_TRUE(
+        Problems(File(kBox, R"("model": "auto", "budget": {"quantity": "energy", "bound": 0.05})"), &d).empty());
+    EXPECT_TRUE(d.autoModel.Auto());
+    EXPECT_EQ(d.autoModel.quantity, static_cast<int>(BudgetQuantity::Energy));
+    EXPECT_EQ(d.autoModel.tolerance, 0.05f);
+    EXPECT_EQ(d.autoModel.Budget().quantity, BudgetQuantity::Energy);
+
+    // The quantity defaults to position; "fixed" may keep a budget (for `--set model=auto`).
+    ASSERT_TRUE(Problems(File(kBox, R"("model": "auto", "budget": {"bound": 0.002})"), &d).empty());
+    EXPECT_EQ(d.autoModel.quantity, static_cast<int>(BudgetQuantity::Position));
+    EXPECT_EQ(d.autoModel.tolerance, 0.002f);
+    ASSERT_TRUE(
+        Problems(File(kBox, R"("model": "fixed", "budget": {"quantity": "constraint", "bound": 0.1})"), &d).empty());
+    EXPECT_FALSE(d.autoModel.Auto());
+    EXPECT_EQ(d.autoModel.quantity, static_cast<int>(BudgetQuantity::Constraint));
+    EXPECT_EQ(d.autoModel.tolerance, 0.1f);
+}
+
+TEST(SceneFile, RefusesABadErrorBudgetWithThePathAndValue) {
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("model": "auto")")), {"t.json: budget: is required", "auto"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("model": "best", "budget": {"bound": 1})")),
+                           {"t.json: model: must be \"fixed\" or \"auto\"", "(got \"best\")"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("model": "auto", "budget": {"bound": 0})")),
+                           {"t.json: budget.bound: must be > 0", "(got 0)"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("model": "auto", "budget": {"bound": -0.01})")),
+                           {"budget.bound: must be > 0", "(got -0.01)"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("model": "auto", "budget": {"bound": 1e39})")),
+                           {"budget.bound: must be finite", "(got 1e+39)"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("model": "auto", "budget": {"bound": "tight"})")),
+                           {"budget.bound: must be a number", "(got \"tight\")"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("model": "auto", "budget": {"quantity": "speed", "bound": 1})")),
+                           {"budget.quantity: must be position, energy or constraint", "(got \"speed\")"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("model": "auto", "budget": {"quantity": "energy"})")),
+                           {"budget.bound: is required"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("model": "auto", "budget": {"bound": 1, "safety": 2})")),
+                           {"budget.safety: unknown key"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("model": "auto", "budget": 0.01)")),
+                           {"budget: must be an object", "(got 0.01)"}));
+    // A file and `--set tolerance=` take the same bounds.
+    ParameterSet keys;
+    AutoModelRequest request;
+    AddAutoModelParameters(&keys, &request);
+    const ParameterSet::Entry* tolerance = keys.Find("tolerance");
+    ASSERT_NE(tolerance, nullptr);
+    if (tolerance->max * 10.0 < 3e38) {  // a finite float above the key's range
+        const std::string above = std::to_string(tolerance->max * 10.0);
+        EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("model": "auto", "budget": {"bound": )" + above + "}")),
+                               {"budget.bound: must be in ["}));
+    }
+}
+
+TEST(SceneExport, WritesTheErrorBudgetOnlyForAnAutoModel) {
+    SceneDescription d;
+    ASSERT_TRUE(Problems(File(kBox, R"("budget": {"quantity": "energy", "bound": 0.05})"), &d).empty());
+    const std::string fixedText = WriteSceneText(d);
+    EXPECT_EQ(fixedText.find("\"model\""), std::string::npos) << fixedText;
+    EXPECT_EQ(fixedText.find("\"budget\""), std::string::npos) << fixedText;
+
+    d.autoModel.model = 1;
+    const std::string text = WriteSceneText(d);
+    SceneDescription read;
+    std::vector<std::string> errors;
+    ASSERT_TRUE(ParseSceneText(text, "export.json", &read, &errors)) << errors.front() << "\n" << text;
+    EXPECT_TRUE(read.autoModel.Auto());
+    EXPECT_EQ(read.autoModel.quantity, static_cast<int>(BudgetQuantity::Energy));
+    EXPECT_EQ(read.autoModel.tolerance, 0.05f);
+}

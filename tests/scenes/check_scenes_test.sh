@@ -27,6 +27,22 @@ expect() {
   fi
 }
 
+# expect_top OK|FAIL MEMBERS [MESSAGE]: one scene with the top-level MEMBERS (no world) checked alone.
+expect_top() {
+  rm -f "$dir/scenes/t.json"
+  printf '{"format": 1, "name": "t", %s, %s}\n' "$2" "$body" >"$dir/scenes/t.json"
+  set +e
+  "$python" "$root/scripts/check-scenes.py" "$dir" >"$dir/out.txt" 2>&1
+  rc=$?
+  set -e
+  if [ "$1" = OK ]; then
+    [ "$rc" -eq 0 ] || fail "refused $2: $(cat "$dir/out.txt")"
+  else
+    [ "$rc" -eq 1 ] || fail "accepted $2 (exit $rc)"
+    grep -qF "$3" "$dir/out.txt" || fail "for $2 the message lacks '$3': $(cat "$dir/out.txt")"
+  fi
+}
+
 expect OK '{"contactSolver": "soft", "soft": {"substeps": 8, "contactHertz": 60, "relaxIterations": 0}}'
 expect OK '{"sleep": true}'
 expect OK '{"sleep": false}'
@@ -37,4 +53,11 @@ expect FAIL '{"soft": {"hertz": 30}}' 'world.soft.hertz: unknown key'
 expect FAIL '{"sleep": 1}' 'world.sleep: must match exactly one of 2 forms'
 expect FAIL '{"sleep": {"time": 1}}' 'world.sleep: must match exactly one of 2 forms'
 expect FAIL '{"iterations": 5, "iterations": 9}' "duplicate key 'iterations'"
+# The error budget (docs/scenes.md, "Error budget").
+expect_top OK '"model": "auto", "budget": {"quantity": "energy", "bound": 0.01}'
+expect_top OK '"model": "fixed", "budget": {"bound": 1}'
+expect_top FAIL '"model": "best"' 'model: must be one of'
+expect_top FAIL '"model": "auto", "budget": {"bound": 0}' 'budget.bound: must be > 0'
+expect_top FAIL '"model": "auto", "budget": {"quantity": "position"}' 'budget.bound: is required'
+expect_top FAIL '"model": "auto", "budget": {"quantity": "speed", "bound": 1}' 'budget.quantity: must be one of'
 echo "scenes.schema-check: ok"

@@ -1,0 +1,45 @@
+#include "Application/AutoModelHost.h"
+
+#include <cstdio>
+
+#include "Application/Runner.h"
+#include "Demos/DemoBase.h"
+
+int ChooseAutoModel(DemoBase& demo, const AutoModelHost& host, bool* explained) {
+    const AutoModelRequest* request = demo.AutoModelRequestOf();
+    if (request == nullptr || !request->Auto() || demo.World() == nullptr) {
+        if (!host.explain) return kExitOk;
+        std::fprintf(stderr,
+                     "physics-sandbox: --explain-model: %s runs its fixed model; it needs --set model=auto (or a "
+                     "scene file with \"model\": \"auto\")\n",
+                     host.name.c_str());
+        return kExitUsage;
+    }
+    AutoModel& model = demo.AutoModelOf();
+    std::string error;
+    const bool chosen =
+        model.Choose(&demo.Parameters(), *demo.World(), host.hostStep, host.runSeconds, *request, &error);
+    // The table also when the budget is refused: it shows how close each candidate came.
+    if (host.explain && !model.Choice().candidates.empty()) std::fputs(model.Explain().c_str(), stdout);
+    if (!chosen) {
+        if (host.explain) FinishStdout();
+        std::fprintf(stderr, "physics-sandbox: %s: model auto: %s\n", host.name.c_str(), error.c_str());
+        return kExitUsage;
+    }
+    if (host.explain) {
+        *explained = true;
+        return FinishStdout();
+    }
+    if (!host.quiet) std::fprintf(stderr, "physics-sandbox: %s: %s\n", host.name.c_str(), model.Summary().c_str());
+    return kExitOk;
+}
+
+std::vector<std::string> WatchAutoModel(DemoBase& demo, double time, std::size_t* printed) {
+    AutoModel& model = demo.AutoModelOf();
+    if (!model.Active() || demo.World() == nullptr) return {};
+    model.AfterFrame(&demo.Parameters(), *demo.World(), time);
+    const std::vector<std::string>& log = model.Log();
+    std::vector<std::string> lines;
+    for (; *printed < log.size(); ++*printed) lines.push_back(log[*printed]);
+    return lines;
+}
