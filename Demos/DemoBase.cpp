@@ -67,10 +67,8 @@ void DemoBase::AddAutoModelKeys() {
 
 std::string DemoBase::AutoModelPanelText() const {
     if (!autoModel.Active()) return std::string();
-    // The summary's parts, one a line: the panel is narrow.
-    std::string text = autoModel.Summary();
-    for (std::size_t at = text.find("; "); at != std::string::npos; at = text.find("; ", at)) text.replace(at, 2, "\n");
-    return text;
+    // Deterministic rows (no measured times), so frames with the panel repeat exactly.
+    return autoModel.PanelText();
 }
 
 float DemoBase::AutoModelRowHeight() const {

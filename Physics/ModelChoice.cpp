@@ -172,25 +172,6 @@ void WorldPositions(const PhysicsSystem& world, std::vector<double>* out) {
     }
 }
 
-void WorldVelocities(const PhysicsSystem& world, std::vector<double>* out) {
-    out->clear();
-    auto add = [out](const vec3& v) {
-        out->push_back(v.x);
-        out->push_back(v.y);
-        out->push_back(v.z);
-    };
-    for (const Rigidbody* body : world.Bodies()) {
-        if (body->type == RigidbodyType::Particle) {
-            add(static_cast<const Particle*>(body)->GetVelocity());
-        } else if (body->type == RigidbodyType::Box || body->type == RigidbodyType::Sphere) {
-            add(static_cast<const RigidbodyVolume*>(body)->velocity);
-        }
-    }
-    for (const Cloth* cloth : world.Cloths()) {
-        for (const Particle& p : cloth->verts) add(p.GetVelocity());
-    }
-}
-
 double WorldEnergy(const PhysicsSystem& world) {
     double energy = StabilityMonitor::MechanicalEnergy(world);
     for (const RigidbodyVolume* v : world.Volumes()) {
@@ -227,7 +208,7 @@ struct QuantityProbe {
     std::vector<double> a, b;
     // The difference at the end of a warm-up, taken off every later one (Rebase).
     bool based = false;
-    std::vector<double> baseDelta, baseVelocity;
+    std::vector<double> baseDelta;
     double baseEnergy = 0.0;
 
     double Measure(const ModelProbe& coarse, const ModelProbe* fine) {
@@ -259,10 +240,6 @@ struct QuantityProbe {
             WorldPositions(fine->World(), &b);
             baseDelta.assign(std::min(a.size(), b.size()), 0.0);
             for (std::size_t i = 0; i < baseDelta.size(); ++i) baseDelta[i] = a[i] - b[i];
-            WorldVelocities(coarse.World(), &a);
-            WorldVelocities(fine->World(), &b);
-            baseVelocity.assign(std::min(a.size(), b.size()), 0.0);
-            for (std::size_t i = 0; i < baseVelocity.size(); ++i) baseVelocity[i] = a[i] - b[i];
         } else if (quantity == BudgetQuantity::Energy) {
             baseEnergy = WorldEnergy(coarse.World()) - WorldEnergy(fine->World());
         }
@@ -281,13 +258,12 @@ struct WindowResult {
     double observed = 0.0;         // the largest sampled difference (or observed value) over the measured part
     double half = 0.0;             // ... over its first half
     double length = 0.0;           // s: the measured part
-    double endPosition = 0.0;      // m: position budgets: the largest position difference at the window's end
-    double endVelocity = 0.0;      // m/s: ... and the largest velocity difference there
     double factor = 1.0;           // the Richardson factor
     double growth = 1.0;           // the exponent used
     double cpuSeconds = 0.0;       // candidate's probe only
     double probeCpuSeconds = 0.0;  // both probes
     double simulated = 0.0;        // s the candidate's probe ran
+    double work = 0.0;             // PredictedWork units both probes did (a deterministic measure of their cost)
 };
 
 WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
@@ -303,7 +279,7 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
         fine = factory();
         fine->Apply(Refine(candidate, space));
     }
-    QuantityProbe q{budget.quantity, 1.0, {}, {}, false, {}, {}, 0.0};
+    QuantityProbe q{budget.quantity, 1.0, {}, {}, false, {}, 0.0};
     if (budget.quantity == BudgetQuantity::Energy) {
         q.energyScale = std::max(std::fabs(WorldEnergy(coarse->World())), 1e-12);
     }
@@ -344,21 +320,11 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
         full = std::max(full, d);
         if (2 * s <= samples) half = full;
     }
-    if (ok && budget.quantity == BudgetQuantity::Position) {
-        // Where each body is and how fast it goes at the end, with the warm-up's differences taken off.
-        std::vector<double> va, vb;
-        WorldVelocities(coarse->World(), &va);
-        WorldVelocities(fine->World(), &vb);
-        for (std::size_t i = 0; i + 2 < std::min(va.size(), vb.size()); i += 3) {
-            double d[3];
-            for (int c = 0; c < 3; ++c) d[c] = va[i + c] - vb[i + c] - (q.based ? q.baseVelocity[i + c] : 0.0);
-            r.endVelocity = std::max(r.endVelocity, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
-        }
-        r.endPosition = q.Measure(*coarse, fine.get());
-    }
     r.cpuSeconds = cpu;
     r.probeCpuSeconds = ThreadCpuSeconds() - start;
     r.simulated = candidate.step * static_cast<double>(warm + measured);
+    r.work = r.simulated *
+             (PredictedWork(candidate, space) + (observed ? 0.0 : PredictedWork(Refine(candidate, space), space)));
     if (!ok) return r;
     const double length = candidate.step * static_cast<double>(measured);
     // Growth in time, fitted from the measured part's halves, 0 (bounded: a symplectic integrator's energy error, a
@@ -470,37 +436,30 @@ std::vector<PlannedWindow> PlanWindows(const ProbeFactory& factory, const Candid
         result->eventTimes.push_back(begin);
     }
     result->pilotCpuSeconds = ThreadCpuSeconds() - start;
+    result->calibrationWork += PredictedWork(space.base, space) * static_cast<double>(n) * h;
     result->calibrationCpuSeconds += result->pilotCpuSeconds;
     return plan;
 }
 
-/// What one window adds to a candidate's estimate.
-///  - Start: the window's difference extrapolated over the run with its fitted growth. For a position budget on a
-///    world without volumes, at least the position difference plus the velocity difference carried over the rest of
-///    the run (a phase error shows in the velocity while the positions still agree, at a turning point); volumes
-///    are left out of that term, as contact jitter would carry over as a drift.
-///  - Event: the difference the event made, grown linearly over the rest of the run, or (position, no volumes) the
-///    velocity difference it left carried over the rest of the run (a bounce at another time leaves one behind).
-double Contribution(const PlannedWindow& p, const WindowResult& w, const ErrorBudget& budget, bool volumes) {
+/// What one window adds to a candidate's estimate: its difference extrapolated over the run after its start with
+/// its fitted growth (a bounce at another time leaves a drift behind, growth near 1; a transient that settled, near
+/// 0). Constraint error is observed, not extrapolated.
+double Contribution(const PlannedWindow& p, const WindowResult& w, const ErrorBudget& budget) {
     if (budget.quantity == BudgetQuantity::Constraint) return w.observed;
-    const double extrapolated = w.factor * w.observed * std::pow(std::max(p.span / w.length, 1.0), w.growth);
-    const double linear = w.factor * w.observed * std::max(p.span / w.length, 1.0);
-    const double carried = w.factor * (w.endPosition + w.endVelocity * std::max(p.span - w.length, 0.0));
-    const bool velocities = budget.quantity == BudgetQuantity::Position && !volumes;
-    if (p.kind == PlannedWindow::Kind::Event) return velocities ? std::max(linear, carried) : linear;
-    return velocities ? std::max(extrapolated, carried) : extrapolated;
+    return w.factor * w.observed * std::pow(std::max(p.span / w.length, 1.0), w.growth);
 }
 
 /// A candidate's estimate: the sum of its windows' contributions (constraint error: the largest). Stops as soon as
 /// it misses `bound` (the rest can only add), marking the estimate partial (a lower bound).
 void Evaluate(const std::vector<PlannedWindow>& plan, double window, const CandidateSpace& space,
-              const ErrorBudget& budget, double bound, CandidateEstimate* e, double* cpuSeconds) {
+              const ErrorBudget& budget, double bound, CandidateEstimate* e, double* cpuSeconds, double* work) {
     e->estimate = 0.0;
     e->segments.clear();
     double cpu = 0.0, simulated = 0.0;
     for (std::size_t k = 0; k < plan.size(); ++k) {
         const WindowResult w = RunWindow(plan[k].factory, e->model, space, budget, window, 0.0, plan[k].warmSteps);
         *cpuSeconds += w.probeCpuSeconds;
+        *work += w.work;
         cpu += w.cpuSeconds;
         simulated += w.simulated;
         if (!w.stable || !std::isfinite(w.observed)) {
@@ -510,7 +469,7 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
             break;
         }
         if (k == 0) e->growth = w.growth;
-        const double c = Contribution(plan[k], w, budget, space.hasVolumes);
+        const double c = Contribution(plan[k], w, budget);
         e->segments.push_back(c);
         e->estimate = budget.quantity == BudgetQuantity::Constraint ? std::max(e->estimate, c) : e->estimate + c;
         if (e->estimate > bound && k + 1 < plan.size()) {
@@ -602,7 +561,7 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
         }
         ++result.evaluatedCount;
         e.evaluated = true;
-        Evaluate(plan, window, space, budget, bound, &e, &result.calibrationCpuSeconds);
+        Evaluate(plan, window, space, budget, bound, &e, &result.calibrationCpuSeconds, &result.calibrationWork);
         e.meets = e.stable && !e.partial && e.estimate <= bound;
         if (e.meets) result.chosen = static_cast<int>(order[k]);
         if (e.stable && std::isfinite(e.estimate)) {
@@ -710,6 +669,7 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
     const WindowResult w = RunWindow(from, current, space, budget, window, 0.0, warm,
                                      budget.quantity == BudgetQuantity::Position ? -1.0 : growth);
     cpuSeconds += w.probeCpuSeconds;
+    work += w.work;
     ++checks;
     const bool ok = w.stable && std::isfinite(w.observed);
     if (budget.quantity == BudgetQuantity::Position) {
@@ -717,11 +677,8 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
         // rest of the run; the calibration's estimate, scaled for refinements since, stands for the rest.
         const double span = event ? T - from_time : time - lastCounted;
         if (!event) lastCounted = time;
-        // Extrapolated with the window's own growth (a settled stack's jitter does not add up), and for a world
-        // without volumes at least the velocity difference carried over the span.
-        double add = w.factor * w.observed * std::pow(std::max(span / w.length, 1.0), w.growth);
-        if (!space.hasVolumes) add = std::max(add, w.factor * (w.endPosition + w.endVelocity * span));
-        measured += ok ? add : kInf;
+        // Extrapolated with the window's own growth (a settled stack's jitter does not add up).
+        measured += ok ? w.factor * w.observed * std::pow(std::max(span / w.length, 1.0), w.growth) : kInf;
         running = measured + predicted * scale * (T - time) / T;
     } else {
         // Energy and constraint: the window's regime taken as the whole run's (with the calibration's growth), for
@@ -773,6 +730,7 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
                   next.Describe(space.hasParticles, space.hasVolumes).c_str());
     *log = text;
     current = next;
+    ++switches;
     scale *= ratio;
     carried += lastEstimate * (time - modelStart) / T;
     modelStart = time;

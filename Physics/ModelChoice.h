@@ -101,8 +101,6 @@ public:
 };
 /// Every body's position as x, y, z triples: particles and volumes in insertion order, then cloth particles.
 void WorldPositions(const PhysicsSystem& world, std::vector<double>* out);
-/// Every body's velocity (m/s) as x, y, z triples, in WorldPositions' order.
-void WorldVelocities(const PhysicsSystem& world, std::vector<double>* out);
 /// J: kinetic energy of particles (cloth included) and volumes (linear and angular), gravitational potential
 /// energy (-m g . x), and spring energy (k (l - rest)^2 / 2 with the book's sign convention). Static bodies
 /// (mass 0) count nothing.
@@ -159,9 +157,11 @@ struct ModelChoiceResult {
     std::vector<CandidateEstimate> candidates;  ///< every candidate, in EnumerateCandidates order
     double calibrationCpuSeconds = 0.0;         ///< s of CPU spent on probes, the pilot included
     double pilotCpuSeconds = 0.0;               ///< s of CPU of the pilot run (worlds without volumes)
-    std::vector<double> eventTimes;             ///< s: where the calibration's event windows start
-    int evaluatedCount = 0;                     ///< candidates estimated
-    double windowSeconds = 0.0;                 ///< s of simulated time per calibration run
+    /// PredictedWork units the probes and the pilot did: the calibration's cost, deterministic (CPU time is not).
+    double calibrationWork = 0.0;
+    std::vector<double> eventTimes;  ///< s: where the calibration's event windows start
+    int evaluatedCount = 0;          ///< candidates estimated
+    double windowSeconds = 0.0;      ///< s of simulated time per calibration run
 };
 
 /// Estimates every candidate on probes from `factory` (cheapest first, skipping those predicted to cost more
@@ -196,6 +196,12 @@ public:
     double CpuSeconds() const { return cpuSeconds; }
     /// Checks run so far.
     int Checks() const { return checks; }
+    /// PredictedWork units the watch's probes did so far (deterministic).
+    double Work() const { return work; }
+    /// The current model's predicted work per simulated second.
+    double CurrentWork() const { return PredictedWork(current, space); }
+    /// Model changes so far.
+    int Switches() const { return switches; }
 
 private:
     CandidateSpace space;
@@ -215,6 +221,8 @@ private:
     double growth = 1.0;        // the calibration's fitted growth exponent, used for every check
     double lastCheck = 0.0;     // s
     double cpuSeconds = 0.0;
+    double work = 0.0;
+    int switches = 0;
     // Events: the host's last three frames' positions and the last acceleration, the irregularity the calibration
     // window saw, the pending event, and the two newest snapshots.
     std::vector<double> x0, x1, x2, acceleration;

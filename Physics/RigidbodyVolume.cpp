@@ -73,25 +73,30 @@ void RigidbodyVolume::IntegrateVelocity(float dt) {
 void RigidbodyVolume::IntegratePosition(float dt) {
     position += velocity * dt;
 
+    if (InvMass() > 0.0f) {
+        orientation = AdvanceRotation(orientation, &angVel, LocalInertia(), dt);
+    } else if (MagnitudeSq(angVel) > 0.0f) {
+        orientation = Integrate(orientation, angVel, dt);
+    }
+    SynchCollisionVolumes();
+}
+
+quat AdvanceRotation(const quat& orientation, vec3* angularVelocity, const vec3& inertia, float dt) {
     // erratum 5.2-12: orientation is a quaternion advanced by the world-space angular velocity (exponential
     // map), not Euler angles plus angVel*dt. For a body whose principal moments differ, the torque-free
     // motion keeps the world angular momentum L = I_world w while I_world turns with the body, so w is
     // re-derived from L (explicit midpoint on the rotation, L held fixed). Cubes and spheres skip this:
     // their world tensor is a multiple of the identity and w is already constant.
-    const vec3 inertia = LocalInertia();
-    if (MagnitudeSq(angVel) > 0.0f) {
-        if (InvMass() > 0.0f && !IsIsotropic(inertia)) {
-            const vec3 invInertia(1.0f / inertia.x, 1.0f / inertia.y, 1.0f / inertia.z);
-            const vec3 L = MultiplyVector(angVel, RotateDiagonal(ToMat3(orientation), inertia));
-            const quat half = Integrate(orientation, angVel, dt * 0.5f);
-            const vec3 wHalf = MultiplyVector(L, RotateDiagonal(ToMat3(half), invInertia));
-            orientation = Integrate(orientation, wHalf, dt);
-            angVel = MultiplyVector(L, RotateDiagonal(ToMat3(orientation), invInertia));
-        } else {
-            orientation = Integrate(orientation, angVel, dt);
-        }
-    }
-    SynchCollisionVolumes();
+    const vec3 w = *angularVelocity;
+    if (!(MagnitudeSq(w) > 0.0f)) return orientation;
+    if (IsIsotropic(inertia)) return Integrate(orientation, w, dt);
+    const vec3 invInertia(1.0f / inertia.x, 1.0f / inertia.y, 1.0f / inertia.z);
+    const vec3 L = MultiplyVector(w, RotateDiagonal(ToMat3(orientation), inertia));
+    const quat half = Integrate(orientation, w, dt * 0.5f);
+    const vec3 wHalf = MultiplyVector(L, RotateDiagonal(ToMat3(half), invInertia));
+    const quat next = Integrate(orientation, wHalf, dt);
+    *angularVelocity = MultiplyVector(L, RotateDiagonal(ToMat3(next), invInertia));
+    return next;
 }
 
 void RigidbodyVolume::SynchCollisionVolumes() {

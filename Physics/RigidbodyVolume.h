@@ -99,6 +99,12 @@ private:
     mutable float retentionValue = 1.0f;
 };
 
+/// Advances an orientation (body -> world) by dt seconds of torque-free motion with world angular velocity *w
+/// (rad/s): the exponential map, and for a body whose principal moments (kg m^2, `inertia`) differ, with its world
+/// angular momentum held fixed (explicit midpoint), *w re-derived from it. Shared by IntegratePosition and the soft
+/// step (SoftSolver.cpp).
+quat AdvanceRotation(const quat& orientation, vec3* angularVelocity, const vec3& inertia, float dt);
+
 /// True when `body` can be simulated: a sphere or box with finite, non-negative mass (0 = static); finite
 /// position, velocity, angular velocity, gravity, forces and torques; a finite, non-zero orientation; finite,
 /// strictly positive half sizes (box) or radius (sphere); finite cor, friction >= 0, damping in [0, 1], finite

@@ -180,6 +180,7 @@ void SoftContactSolver::LoadBodies(const std::vector<RigidbodyVolume*>& volumes,
         st.w = body.angVel;
         bs.invMass = body.InvMass();
         bs.invI = body.InvTensor();
+        bs.inertia = body.LocalInertia();
         // The book's force model: forces = gravity * mass (ApplyForces), plus any torque the body carries.
         bs.gravity = body.gravity;
         bs.angularAccel = Mul(body.torques, bs.invI);
@@ -319,11 +320,12 @@ void SoftContactSolver::IntegratePositions(const StepContext& ctx) {
         BodyState& st = state[i];
         st.dp += st.v * h;
         bs.p += st.v * h;
-        // Orientation advanced by the world angular velocity (exponential map, normalised); the rotation since the
-        // step began moves the fixed anchors (Solve). Angular velocity is constant between contacts (no
-        // gyroscopic term).
+        // Orientation advanced by the world angular velocity (exponential map, normalised), keeping the world
+        // angular momentum of a body whose principal moments differ (AdvanceRotation: between contacts a box turns
+        // as a free body does, not at a constant w); the rotation since the step began moves the fixed anchors
+        // (Solve).
         if (MagnitudeSq(st.w) > 0.0f) {
-            bs.q = Integrate(bs.q, st.w, h);
+            bs.q = AdvanceRotation(bs.q, &st.w, bs.inertia, h);
             st.dR = ToMat3(bs.q * Conjugate(bs.q0));
         }
     }

@@ -96,6 +96,7 @@ public:
         vec3 p;             // position, m
         quat q, q0;         // orientation now and at the start of the step
         mat3 invI;          // world inverse inertia at the start of the step (zero for static)
+        vec3 inertia;       // principal moments, kg m^2 (body frame): torque-free rotation keeps L (AdvanceRotation)
         vec3 gravity;       // m/s^2 (zero for static)
         vec3 angularAccel;  // I^-1 torque, rad/s^2
         float invMass = 0.0f;

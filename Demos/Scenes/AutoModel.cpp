@@ -306,10 +306,25 @@ std::string AutoModel::Summary() const {
     char text[512];
     std::snprintf(text, sizeof text,
                   "Model: auto, %s; estimated %s error %.3g %s (budget %g, safety %g); %.3g s CPU per simulated s; "
-                  "auto overhead %.3g s CPU (calibration %.3g s, %d candidates; %d checks, %zu switches)",
+                  "auto overhead %.3g s CPU (calibration %.3g s, %d candidates; %d checks, %d switches)",
                   Current().Describe(space.hasParticles, space.hasVolumes).c_str(), ToString(budget.quantity),
                   RunningEstimate(), BudgetUnit(budget.quantity), budget.bound, settings.safety, chosen.cpuPerSimSecond,
                   OverheadCpuSeconds(), choice.calibrationCpuSeconds, choice.evaluatedCount,
-                  watch ? watch->Checks() : 0, log.size());
+                  watch ? watch->Checks() : 0, watch ? watch->Switches() : 0);
+    return text;
+}
+
+std::string AutoModel::PanelText() const {
+    if (!active) return "";
+    const ErrorBudget budget = request.Budget();
+    const double runWork = watch->CurrentWork() * settings.runSeconds;
+    const double overhead = runWork > 0.0 ? (choice.calibrationWork + watch->Work()) / runWork : 0.0;
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "Model: auto, %s\nEstimated %s error %.3g %s (budget %g)\nCost %.4g work units per simulated s\n"
+                  "Auto overhead %.0f%% of the run's work (%d candidates, %d checks, %d switches)",
+                  Current().Describe(space.hasParticles, space.hasVolumes).c_str(), ToString(budget.quantity),
+                  RunningEstimate(), BudgetUnit(budget.quantity), budget.bound, watch->CurrentWork(), 100.0 * overhead,
+                  choice.evaluatedCount, watch->Checks(), watch->Switches());
     return text;
 }

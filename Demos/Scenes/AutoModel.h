@@ -57,6 +57,9 @@ public:
     /// One line for the run's summary and the panel: the model, its estimate against the budget, its cost and the
     /// calibration's overhead.
     std::string Summary() const;
+    /// The panel's rows: Summary without measured times, so rendered frames repeat exactly: the cost as predicted
+    /// work per simulated second, the overhead as the probes' work over the run's.
+    std::string PanelText() const;
     /// The switches made during the run, one line each ("t = 2.40 s: ... ").
     const std::vector<std::string>& Log() const { return log; }
 

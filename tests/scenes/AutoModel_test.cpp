@@ -246,7 +246,7 @@ TEST(AutoModel, SameSceneSameChoice) {
         AutoModel autoModel;
         std::string error;
         ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, 3.0, Budget(1e-2), &error)) << error;
-        std::string pick = autoModel.Current().Describe();
+        std::string pick = autoModel.Current().Describe() + "\n" + autoModel.PanelText();  // the panel repeats too
         for (const CandidateEstimate& c : autoModel.Choice().candidates) pick += " " + std::to_string(c.estimate);
         picks.push_back(pick);
     }
