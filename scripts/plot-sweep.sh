@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Turns psb-sweep CSV output into the PNG figures of docs/sweep.md (gnuplot, from gnuplot-nox).
-#   scripts/plot-sweep.sh [CSV...] [-o OUTDIR]
+#   scripts/plot-sweep.sh [CSV...] [-o OUTDIR] [--auto AUTO_CSV]
 # Defaults: docs/sweep/results.csv -> docs/sweep/. Several CSVs (shards) are merged; repeated headers skipped.
+# --auto: the points of `model: auto` (psb-model-choice-bench --csv, docs/model-choice-validation.md) are added to
+# the error-against-cost figures as red triangles labelled with their budget; default docs/sweep/auto.csv if present.
 # Axis labels come from problems.tsv (psb-sweep --list) beside the first CSV, when present.
 # Per problem: error against CPU cost (s per simulated s) on log-log axes, one line per integrator or solver
 # setting, the Pareto front (no cheaper run is as accurate) as a black dashed line. For spring-stiffness,
@@ -13,10 +15,12 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="$root/docs/sweep"
 inputs=()
+auto="$root/docs/sweep/auto.csv"
 while [ $# -gt 0 ]; do
   case "$1" in
     -o) out="$2"; shift 2 ;;
-    -h|--help) sed -n '2,8p' "$0"; exit 0 ;;
+    --auto) auto="$2"; [ -r "$auto" ] || { echo "plot-sweep: cannot read '$auto'" >&2; exit 2; }; shift 2 ;;
+    -h|--help) sed -n '2,10p' "$0"; exit 0 ;;
     *) inputs+=("$1"); shift ;;
   esac
 done
@@ -85,6 +89,16 @@ for p in $problems; do
     plot+="'$file' using 1:2 with linespoints lw 2 pt $pt ps 0.8 title '$title', "
   done < "$dir/index"
   plot+="'$dir/pareto' using 1:2 with linespoints lw 2 dt 2 pt 6 ps 1.6 lc rgb 'black' title 'Pareto front'"
+  # Auto's runs of the same problem and param (columns: 2 sweep_problem, 3 param, 4 budget, 7 refused, 9 error,
+  # 10 cpu_per_sim_s), floored like the sweep's.
+  if [ -r "$auto" ]; then
+    awk -F, -v p="$p" -v v="$v" 'NR > 1 && $2 == p && $3 == v && $7 == 0 && $9 != "-" && $9 != "inf" {
+      e = $9 + 0; if (e < 1e-9) e = 1e-9; c = $10 + 0; if (c < 1e-8) c = 1e-8; print c, e, $4 }' "$auto" > "$dir/auto"
+    if [ -s "$dir/auto" ]; then
+      plot+=", '$dir/auto' using 1:2 with points pt 9 ps 2.4 lc rgb 'red' title 'model: auto (label: budget)'"
+      plot+=", '$dir/auto' using 1:2:3 with labels offset 2.2,0.6 tc rgb 'red' notitle"
+    fi
+  fi
   gnuplot <<GP
 set terminal pngcairo size 900,600 font ',10'
 set output '$out/$name.png'

@@ -1,0 +1,42 @@
+#!/bin/sh
+# CI check of psb-model-choice-bench (docs/model-choice-validation.md): the reference scene files are valid and are
+# the sweep's problems (--check: the same error as the sweep's own run at the same settings), and on the small grid
+# `model: auto` stays within 3x every budget it accepts and refuses only budgets no sweep setting meets. Timings
+# are not checked (they are the full bench's report, never a test).
+# Usage: model_choice_test.sh SOURCE_DIR PATH/TO/psb-model-choice-bench SCRATCH_DIR
+set -eu
+src=$1
+bench=$2
+dir=$3
+rm -rf "$dir" && mkdir -p "$dir/scenes"
+fail() { echo "model_choice.quick: FAIL: $*" >&2; exit 1; }
+
+# The reference scenes against the scene schema (the checker reads DIR/scenes/*.json).
+if command -v python3 >/dev/null 2>&1; then
+  cp "$src/scenes/scene.schema.json" "$src"/scenes/reference/*.json "$dir/scenes/"
+  python3 "$src/scripts/check-scenes.py" "$dir" >"$dir/schema.out" 2>&1 || { cat "$dir/schema.out" >&2; fail "schema"; }
+fi
+
+# Every scene file gives its sweep problem's error, bit for bit up to 1e-9 (volumes with the sweep's
+# velocityEpsilon 0, the one value the format cannot say).
+"$bench" --check >"$dir/check.md" 2>"$dir/check.err" || { cat "$dir/check.md" "$dir/check.err" >&2; fail "--check exited $?"; }
+[ "$(grep -c '^| [a-z]' "$dir/check.md")" -ge 29 ] || fail "--check compared fewer than 29 settings"
+
+# The small grid: auto within 3x the budget wherever it runs; a refusal only where the sweep has no setting either.
+"$bench" --quick --csv "$dir/quick.csv" --out "$dir/quick.md" >/dev/null 2>"$dir/quick.err" ||
+  { cat "$dir/quick.err" >&2; fail "--quick exited $?"; }
+header='problem,sweep_problem,param,budget,quantity,auto_bound,refused,model,error,cpu_per_sim_s,overhead_cpu_s,switches,cheapest,cheapest_error,cheapest_cpu_per_sim_s,cost_ratio,own_quantity'
+[ "$(head -n 1 "$dir/quick.csv")" = "$header" ] || fail "unexpected CSV header: $(head -n 1 "$dir/quick.csv")"
+[ "$(($(wc -l <"$dir/quick.csv") - 1))" -ge 6 ] || fail "fewer than 6 cases in the small grid"
+awk -F, 'NR > 1 {
+    if (NF != 17) { print "row " NR " has " NF " columns, not 17"; bad = 1 }
+    if ($7 == 1) { if ($13 != "-") { print $1 " at " $4 ": refused, but the sweep meets it with " $13; bad = 1 } }
+    else if ($9 == "-" || $9 + 0 > 3 * $4) { print $1 " at " $4 ": auto error " $9 " is above 3x the budget (" $8 ")"; bad = 1 }
+  } END { exit bad }' "$dir/quick.csv" || fail "accuracy above"
+grep -q 'within budget:' "$dir/quick.md" || fail "the report has no criteria"
+
+# Bad usage is refused with exit 2.
+set +e
+"$bench" --budgets 0,-1 >/dev/null 2>&1; [ $? -eq 2 ] || fail "--budgets 0,-1 not refused with exit 2"
+"$bench" --problem nonesuch >/dev/null 2>&1; [ $? -eq 2 ] || fail "--problem nonesuch not refused with exit 2"
+exit 0
