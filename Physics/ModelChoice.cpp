@@ -641,7 +641,7 @@ void ModelWatch::Observe(double time, const PhysicsSystem& world) {
     if (!haveAcceleration) return;
     if (time <= WindowFor(settings) + 1e-9) {
         baseline = std::max(baseline, jump);  // what the calibration window saw
-    } else if (jump > 10.0 * baseline && jump > 1e-6 && eventChecks < settings.maxEventChecks && !eventPending) {
+    } else if (jump > 30.0 * baseline && jump > 1e-6 && eventChecks < settings.maxEventChecks && !eventPending) {
         eventPending = true;
         eventTime = time;
     }
@@ -695,6 +695,22 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
     // The model was chosen with the safety factor's margin; it is changed only when the estimate says the budget
     // itself will be missed (a margin, so a model chosen near the edge does not flip on window-to-window noise).
     if (running <= budget.bound) return false;
+    // What earlier windows measured (or earlier models left) is made: when that alone exceeds the budget, no finer
+    // model can bring the end back under it. Say so once and stop refining (it would only cost).
+    const double made = budget.quantity == BudgetQuantity::Position ? measured : carried;
+    if (made > budget.bound) {
+        if (!lostReported) {
+            char text[256];
+            std::snprintf(text, sizeof text,
+                          "t = %.2f s: the %s error already made, %.3g, exceeds the budget %g: a finer model cannot "
+                          "undo it, so %s stays (the run misses its budget)",
+                          time, ToString(budget.quantity), made, budget.bound,
+                          current.Describe(space.hasParticles, space.hasVolumes).c_str());
+            *log = text;
+            lostReported = true;
+        }
+        return false;
+    }
     // Refine within the family: the next smaller step the space allows, else more passes.
     ModelCandidate next = current;
     double smaller = 0.0;

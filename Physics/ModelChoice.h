@@ -121,8 +121,9 @@ struct ChoiceSettings {
     /// scene's own model just before an event (a bounce, an impact) the start window cannot see; 0 = none.
     int eventWindows = 3;
     /// The live watch also looks for events (a frame whose irregularity is ten times what the calibration window
-    /// saw: a bounce, an impact, a cloth reaching an obstacle) and checks the model over each, from a snapshot taken
-    /// before it; at most this many event checks per run (0: none, and no snapshots are taken).
+    /// saw: a bounce, an impact, a cloth reaching an obstacle; thirty times, the watch being on the host's frames) and
+    /// checks the model over each, from a snapshot taken before it; at most this many event checks per run (0: none,
+    /// and no snapshots are taken).
     int maxEventChecks = 6;
     /// A candidate meets the budget when safety * estimate <= bound.
     double safety = 2.0;
@@ -223,6 +224,7 @@ private:
     double cpuSeconds = 0.0;
     double work = 0.0;
     int switches = 0;
+    bool lostReported = false;  // the error already made exceeds the budget (said once)
     // Events: the host's last three frames' positions and the last acceleration, the irregularity the calibration
     // window saw, the pending event, and the two newest snapshots.
     std::vector<double> x0, x1, x2, acceleration;

@@ -177,16 +177,26 @@ TEST(AutoModel, StackDrift) {
 
 namespace {
 
-// A particle falls freely for 2 s (the calibration window sees an exact parabola, so the coarsest step is chosen),
-// then bounces: the watch must see the regime change and refine the step, saying when and why.
-TEST(AutoModel, WatchRefinesWhenContactBegins) {
+// A sphere falls freely for 2 s (a world with volumes gets no pilot, and the calibration window sees only the
+// fall), then hits the ground: the watch must see the impact when it happens and say so, refining the model or,
+// when the impact's error alone already exceeds the budget, reporting the miss.
+TEST(AutoModel, WatchSeesContactBegin) {
     SceneDescription d;
-    d.bodies.push_back(Particle(vec3(0, 20, 0), vec3(0, 0, 0)));
-    d.bodies.back().restitution = 0.5f;
-    SceneConstraint floor;
-    floor.position = vec3(0, -0.5f, 0);
-    floor.halfExtents = vec3(10, 0.5f, 10);
-    d.constraints.push_back(floor);
+    SceneBody ground;
+    ground.id = "ground";
+    ground.kind = SceneBodyKind::Box;
+    ground.position = vec3(0, -0.5f, 0);
+    ground.halfExtents = vec3(10, 0.5f, 10);
+    ground.mass = 0.0f;
+    d.bodies.push_back(ground);
+    SceneBody ball;
+    ball.id = "ball";
+    ball.kind = SceneBodyKind::Sphere;
+    ball.radius = 0.5f;
+    ball.position = vec3(0, 20.13f, 0);  // lands after 2 s
+    ball.restitution = 0.5f;
+    ball.velocityRetention = 1.0f;
+    d.bodies.push_back(ball);
     ModelCandidate chosen;
     {
         FileScene scene(d);
@@ -194,19 +204,46 @@ TEST(AutoModel, WatchRefinesWhenContactBegins) {
         scene.AddParameters(&params);
         AutoModel autoModel;
         std::string error;
-        ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, 334 * kHostStep, Budget(1e-2), &error));
+        ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, 334 * kHostStep, Budget(1e-2), &error))
+            << error;
         chosen = autoModel.Current();
-        EXPECT_TRUE(autoModel.Log().empty());
+        EXPECT_TRUE(autoModel.Choice().eventTimes.empty()) << "no pilot for a world with volumes";
     }
     const AutoRun run = RunAuto(d, Budget(1e-2), 334, [](const FileScene&, double) {});
     ASSERT_TRUE(run.chosen) << run.error;
     ASSERT_FALSE(run.log.empty());
     double when = 0.0;
     ASSERT_EQ(std::sscanf(run.log[0].c_str(), "t = %lf s:", &when), 1) << run.log[0];
-    EXPECT_GT(when, 2.0) << "no contact before t = 2.02 s: " << run.log[0];
-    EXPECT_NE(run.log[0].find("switching from"), std::string::npos) << run.log[0];
-    EXPECT_LT(run.model.step, chosen.step);
-    EXPECT_EQ(run.model.integrator, chosen.integrator);  // a switch refines; it never changes the integrator
+    EXPECT_GT(when, 2.0) << "no contact before t = 2 s: " << run.log[0];
+    EXPECT_LT(when, 2.5) << "the impact is checked when it happens, not at the next periodic check: " << run.log[0];
+    const bool switched = run.log[0].find("switching from") != std::string::npos;
+    const bool lost = run.log[0].find("already made") != std::string::npos;
+    EXPECT_TRUE(switched || lost) << run.log[0];
+    EXPECT_GT(run.estimate, 1e-2) << "the running estimate shows the impact's error";
+    EXPECT_EQ(run.model.solver, chosen.solver);  // a switch refines; it never changes the solver
+}
+
+// In a world without volumes the pilot finds the bounce the start window cannot see, and the calibration gives it
+// a window: the particle dropped from 20 m gets an event window at its first impact (t = 2.02 s).
+TEST(AutoModel, PilotFindsTheImpactOfAParticleWorld) {
+    SceneDescription d;
+    d.bodies.push_back(Particle(vec3(0, 20, 0), vec3(0, 0, 0)));
+    d.bodies.back().restitution = 0.5f;
+    SceneConstraint floor;
+    floor.position = vec3(0, -0.5f, 0);
+    floor.halfExtents = vec3(10, 0.5f, 10);
+    d.constraints.push_back(floor);
+    FileScene scene(d);
+    ParameterSet params;
+    scene.AddParameters(&params);
+    AutoModel autoModel;
+    std::string error;
+    ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, 10.0, Budget(1e-2), &error)) << error;
+    const std::vector<double>& events = autoModel.Choice().eventTimes;
+    ASSERT_FALSE(events.empty());
+    const double window = autoModel.Choice().windowSeconds;
+    EXPECT_LE(events.front(), 2.02);
+    EXPECT_GE(events.front() + window, 2.02) << "the first event window covers the first impact";
 }
 
 TEST(AutoModel, RefusesABudgetNoCandidateMeets) {
