@@ -695,15 +695,16 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
     // The model was chosen with the safety factor's margin; it is changed only when the estimate says the budget
     // itself will be missed (a margin, so a model chosen near the edge does not flip on window-to-window noise).
     if (running <= budget.bound) return false;
-    // What earlier windows measured (or earlier models left) is made: when that alone exceeds the budget, no finer
-    // model can bring the end back under it. Say so once and stop refining (it would only cost).
+    // What earlier windows measured (or earlier models left) is made. While it is under three times the budget,
+    // refining still keeps the end near it; beyond, no finer model can: say so once and stop refining (it would
+    // only cost).
     const double made = budget.quantity == BudgetQuantity::Position ? measured : carried;
-    if (made > budget.bound) {
+    if (made > 3.0 * budget.bound) {
         if (!lostReported) {
             char text[256];
             std::snprintf(text, sizeof text,
-                          "t = %.2f s: the %s error already made, %.3g, exceeds the budget %g: a finer model cannot "
-                          "undo it, so %s stays (the run misses its budget)",
+                          "t = %.2f s: the %s error already made, %.3g, exceeds three times the budget %g: a finer "
+                          "model cannot undo it, so %s stays (the run misses its budget)",
                           time, ToString(budget.quantity), made, budget.bound,
                           current.Describe(space.hasParticles, space.hasVolumes).c_str());
             *log = text;
