@@ -674,13 +674,15 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
     work += w.work;
     ++checks;
     const bool ok = w.stable && std::isfinite(w.observed);
+    double latest = 0.0;  // what this window adds (position) or its whole-run estimate (energy, constraint)
     if (budget.quantity == BudgetQuantity::Position) {
         // A periodic window's rate stands for the time since the last check; an event's difference grows over the
         // rest of the run; the calibration's estimate, scaled for refinements since, stands for the rest.
         const double span = event ? T - from_time : time - lastCounted;
         if (!event) lastCounted = time;
         // Extrapolated with the window's own growth (a settled stack's jitter does not add up).
-        measured += ok ? w.factor * w.observed * std::pow(std::max(span / w.length, 1.0), w.growth) : kInf;
+        latest = ok ? w.factor * w.observed * std::pow(std::max(span / w.length, 1.0), w.growth) : kInf;
+        measured += latest;
         running = measured + predicted * scale * (T - time) / T;
     } else {
         // Energy and constraint: the window's regime taken as the whole run's (with the calibration's growth), for
@@ -690,6 +692,7 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
                                           : w.factor * w.observed * std::pow(std::max(T / w.length, 1.0), growth))
                                    : kInf;
         lastEstimate = std::max(event ? lastEstimate : 0.0, estimate);
+        latest = estimate;
         running = carried + lastEstimate * (T - modelStart) / T;
     }
     // The model was chosen with the safety factor's margin; it is changed only when the estimate says the budget
@@ -699,7 +702,9 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
     // refining still keeps the end near it; beyond, no finer model can: say so once and stop refining (it would
     // only cost).
     const double made = budget.quantity == BudgetQuantity::Position ? measured : carried;
-    if (made > 3.0 * budget.bound) {
+    // A window that itself misses the budget (or blew up) is refined whatever was lost: the model is making large
+    // errors now, the way to a blow-up.
+    if (made > 3.0 * budget.bound && latest <= budget.bound) {
         if (!lostReported) {
             char text[256];
             std::snprintf(text, sizeof text,
