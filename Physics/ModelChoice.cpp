@@ -254,9 +254,7 @@ struct QuantityProbe {
 /// start), so they first settle.
 struct WindowResult {
     bool stable = true;
-    double estimate = kInf;        // the quantity at the end of `horizon`, extrapolated with `growth`
     double observed = 0.0;         // the largest sampled difference (or observed value) over the measured part
-    double half = 0.0;             // ... over its first half
     double length = 0.0;           // s: the measured part
     double factor = 1.0;           // the Richardson factor
     double growth = 1.0;           // the exponent used
@@ -267,8 +265,7 @@ struct WindowResult {
 };
 
 WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
-                       const ErrorBudget& budget, double window, double horizon, int warmSteps,
-                       double fixedGrowth = -1.0) {
+                       const ErrorBudget& budget, double window, int warmSteps, double fixedGrowth = -1.0) {
     WindowResult r;
     const double start = ThreadCpuSeconds();
     std::unique_ptr<ModelProbe> coarse = factory();
@@ -298,8 +295,7 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
             return false;
         }
         if (!observed && !fine->AdvanceTo(t)) {
-            r.estimate = kInf;  // the refinement blew up but the candidate did not: no estimate can be trusted
-            r.observed = kInf;
+            r.observed = kInf;  // the refinement blew up but the candidate did not: no estimate can be trusted
             return false;
         }
         return true;
@@ -335,11 +331,8 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     if (fixedGrowth >= 0.0) growth = fixedGrowth;
     r.growth = growth;
     r.observed = full;
-    r.half = half;
     r.length = length;
-    const double factor = observed ? 1.0 : RichardsonFactor(OrderOf(candidate, space));
-    r.factor = factor;
-    r.estimate = factor * full * std::pow(std::max(horizon / length, 1.0), growth);
+    r.factor = observed ? 1.0 : RichardsonFactor(OrderOf(candidate, space));
     return r;
 }
 
@@ -459,7 +452,7 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
     e->segments.clear();
     double cpu = 0.0, simulated = 0.0;
     for (std::size_t k = 0; k < plan.size(); ++k) {
-        const WindowResult w = RunWindow(plan[k].factory, e->model, space, budget, window, 0.0, plan[k].warmSteps);
+        const WindowResult w = RunWindow(plan[k].factory, e->model, space, budget, window, plan[k].warmSteps);
         *cpuSeconds += w.probeCpuSeconds;
         *work += w.work;
         cpu += w.cpuSeconds;
@@ -668,7 +661,7 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
     if (!(window > 0.0)) return false;
     // Probes from a live world with volumes lack its contact history (no warm start): they settle first, unmeasured.
     const int warm = space.hasVolumes ? std::max(3, static_cast<int>(window / 3.0 / current.step)) : 0;
-    const WindowResult w = RunWindow(from, current, space, budget, window, 0.0, warm,
+    const WindowResult w = RunWindow(from, current, space, budget, window, warm,
                                      budget.quantity == BudgetQuantity::Position ? -1.0 : growth);
     cpuSeconds += w.probeCpuSeconds;
     work += w.work;
