@@ -24,6 +24,7 @@ BodySpec SpecOf(const SceneBody& body) {
     spec.friction = body.friction;
     spec.restitution = body.restitution;
     spec.velocityRetention = body.velocityRetention;
+    spec.velocityEpsilon = body.velocityEpsilon;
     return spec;
 }
 

@@ -132,6 +132,7 @@ SceneDescription DescribeWorld(const PhysicsSystem& system, const std::string& n
             b.restitution = v.cor;
             b.friction = v.friction;
             b.velocityRetention = v.velocityRetention;
+            b.velocityEpsilon = v.velocityEpsilon;
             gravityOf(v.gravity, what);
         } else {
             continue;  // joints below; other kinds have no place in the format
@@ -276,6 +277,8 @@ std::string WriteSceneText(const SceneDescription& d) {
             }
             o["angularVelocity"] = J(b.angularVelocity);
             o["friction"] = J(b.friction);
+            // Only where it differs from the engine's default, so the shipped exports keep their text.
+            if (b.velocityEpsilon != SceneBody().velocityEpsilon) o["velocityEpsilon"] = J(b.velocityEpsilon);
         }
         if (b.hasColor) o["color"] = J(b.color);
         bodies.push_back(o);

@@ -310,7 +310,8 @@ void ReadBody(const Json& j, const std::string& path, SceneBody* b, Problems* pr
     }
     if (particle) {
         const char* why = "is not a particle field (particles are points: no size, orientation, spin or friction)";
-        for (const char* key : {"halfExtents", "radius", "euler", "quaternion", "angularVelocity", "friction"}) {
+        for (const char* key :
+             {"halfExtents", "radius", "euler", "quaternion", "angularVelocity", "friction", "velocityEpsilon"}) {
             r.Reject(key, why);
         }
     } else {
@@ -339,6 +340,7 @@ void ReadBody(const Json& j, const std::string& path, SceneBody* b, Problems* pr
         }
         r.Vec3("angularVelocity", &b->angularVelocity);
         r.Float("friction", &b->friction, Range::NonNegative);
+        r.Float("velocityEpsilon", &b->velocityEpsilon, Range::NonNegative);
     }
     r.Finish();
 }

@@ -75,6 +75,9 @@ struct SceneBody {
     float restitution = 0.5f;
     float friction = 0.6f;            ///< volumes only
     float velocityRetention = 0.98f;  ///< fraction kept per 0.03 s
+    /// m/s and rad/s per 0.03 s: velocity components below this are zeroed (RigidbodyVolume::velocityEpsilon);
+    /// volumes only, 0 = none.
+    float velocityEpsilon = 0.001f;
     bool hasColor = false;
     vec3 color;  ///< RGB 0..1
 };

@@ -48,7 +48,7 @@ bool Apply(ParameterSet* set, const Assignments& assignments, std::string* messa
 
 /// One run, not repeated. `sweepSteps` > 0: that many steps of the scene's step, no frames (RunSweepStyle).
 RunResult RunOnce(const SceneDescription& description, const ReferenceProblem& problem, const Assignments& assignments,
-                  const AutoModelRequest* request, long long sweepSteps, bool zeroVelocityEpsilon = false) {
+                  const AutoModelRequest* request, long long sweepSteps) {
     RunResult r;
     FileScene scene(description);
     ParameterSet set;
@@ -57,8 +57,6 @@ RunResult RunOnce(const SceneDescription& description, const ReferenceProblem& p
         r.ok = false;
         return r;
     }
-    if (zeroVelocityEpsilon)
-        for (RigidbodyVolume* v : scene.System().Volumes()) v->velocityEpsilon = 0.0f;
     std::unique_ptr<ErrorObserver> observer = problem.observer();
     observer->Start(scene);
     const double hostStep = HostStep(description);
@@ -160,12 +158,12 @@ RunResult RunScene(const SceneDescription& scene, const ReferenceProblem& proble
 }
 
 RunResult RunSweepStyle(const SceneDescription& scene, const ReferenceProblem& problem, const Assignments& assignments,
-                        double dt, double seconds, bool zeroVelocityEpsilon) {
+                        double dt, double seconds) {
     Assignments all = assignments;
     char text[32];
     std::snprintf(text, sizeof text, "%.9g", dt);
     all.emplace_back("dt", text);
-    return RunOnce(scene, problem, all, nullptr, std::llround(seconds / dt), zeroVelocityEpsilon);
+    return RunOnce(scene, problem, all, nullptr, std::llround(seconds / dt));
 }
 
 }  // namespace modelchoice

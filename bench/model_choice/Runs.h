@@ -48,10 +48,8 @@ RunResult RunScene(const SceneDescription& scene, const ReferenceProblem& proble
                    const AutoModelRequest* request, double minCpuSeconds = 0.05, int maxRepeats = 20);
 
 /// Runs `scene` at a fixed step dt for round(seconds / dt) steps, exactly as the sweep steps its problems (no
-/// frames): the scene-file counterpart of a sweep row, for the equivalence check. `zeroVelocityEpsilon` sets every
-/// volume's RigidbodyVolume::velocityEpsilon to 0 after the scene is built, as the sweep's volumes have it (the
-/// scene format has no such field: the files get the engine's 0.001 m/s).
+/// frames): the scene-file counterpart of a sweep row, for the equivalence check.
 RunResult RunSweepStyle(const SceneDescription& scene, const ReferenceProblem& problem, const Assignments& assignments,
-                        double dt, double seconds, bool zeroVelocityEpsilon);
+                        double dt, double seconds);
 
 }  // namespace modelchoice

@@ -17,8 +17,8 @@ if command -v python3 >/dev/null 2>&1; then
   python3 "$src/scripts/check-scenes.py" "$dir" >"$dir/schema.out" 2>&1 || { cat "$dir/schema.out" >&2; fail "schema"; }
 fi
 
-# Every scene file gives its sweep problem's error, bit for bit up to 1e-9 (volumes with the sweep's
-# velocityEpsilon 0, the one value the format cannot say).
+# Every scene file gives its sweep problem's error, bit for bit up to 1e-9 (its volumes carry the sweep's
+# velocityEpsilon 0).
 "$bench" --check >"$dir/check.md" 2>"$dir/check.err" || { cat "$dir/check.md" "$dir/check.err" >&2; fail "--check exited $?"; }
 [ "$(grep -c '^| [a-z]' "$dir/check.md")" -ge 29 ] || fail "--check compared fewer than 29 settings"
 

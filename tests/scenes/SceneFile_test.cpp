@@ -196,6 +196,12 @@ TEST(SceneFile, UnknownKeysAreErrors) {
     EXPECT_TRUE(OneProblem(Problems(File(R"({"id": "p", "type": "particle", "position": [0, 1, 0], "friction": 0.5})")),
                            {"bodies[0].friction: is not a particle field"}));
     EXPECT_TRUE(
+        OneProblem(Problems(File(R"({"id": "p", "type": "particle", "position": [0, 1, 0], "velocityEpsilon": 0})")),
+                   {"bodies[0].velocityEpsilon: is not a particle field"}));
+    EXPECT_TRUE(
+        OneProblem(Problems(File(R"({"id": "a", "type": "box", "position": [0, 1, 0], "velocityEpsilon": -1})")),
+                   {"bodies[0].velocityEpsilon: must be >= 0"}));
+    EXPECT_TRUE(
         OneProblem(Problems(File(R"({"id": "s", "type": "sphere", "position": [0, 1, 0], "halfExtents": [1, 1, 1]})")),
                    {"bodies[0].halfExtents: is a box field"}));
     EXPECT_TRUE(
@@ -402,7 +408,8 @@ TEST(FileScene, BuildsOnlyWhatTheFileNames) {
 TEST(FileScene, AppliesWorldSettingsAndBodyFields) {
     SceneDescription d;
     ASSERT_TRUE(Problems(File(R"({"id": "s", "type": "sphere", "position": [0, 5, 0], "radius": 0.5, "mass": 3,
-                                   "quaternion": [0, 0.7071068, 0, 0.7071068], "friction": 0.2},
+                                   "quaternion": [0, 0.7071068, 0, 0.7071068], "friction": 0.2,
+                                   "velocityEpsilon": 0},
                                   {"id": "p", "type": "particle", "position": [1, 2, 3], "restitution": 0.3})",
                               R"("world": {"gravity": [0, -2, 0], "iterations": 9, "integrator": "verlet",
                                            "contactSolver": "accumulated", "substeps": 3})"),
@@ -419,6 +426,9 @@ TEST(FileScene, AppliesWorldSettingsAndBodyFields) {
     EXPECT_EQ(v.sphere.radius, 0.5f);
     EXPECT_EQ(v.mass, 3.0f);
     EXPECT_EQ(v.friction, 0.2f);
+    EXPECT_EQ(v.velocityEpsilon, 0.0f);
+    EXPECT_EQ(scene.Volumes().size(), 1u);
+    EXPECT_EQ(SceneBody().velocityEpsilon, RigidbodyVolume().velocityEpsilon) << "the format's default is the engine's";
     EXPECT_NEAR(v.orientation.y, 0.7071068f, 1e-6f);
     EXPECT_TRUE(VecNear(v.gravity, vec3(0, -2, 0), 0.0f));
     const Particle& p = scene.Particles()[0];
@@ -476,7 +486,8 @@ TEST(SceneExport, WrittenTextReadsBackToTheSameWorld) {
     SceneDescription d;
     ASSERT_TRUE(Problems(File(std::string(kBox) + "," + kP1 + "," + kP2 +
                                   R"(, {"id": "s", "type": "sphere", "position": [1, 2, 3], "radius": 0.3,
-                                   "euler": [10, 20, 30], "velocity": [0.1, 0, 0], "friction": 0.25})",
+                                   "euler": [10, 20, 30], "velocity": [0.1, 0, 0], "friction": 0.25,
+                                   "velocityEpsilon": 0})",
                               R"("springs": [{"a": "p", "b": "q", "stiffness": 5, "damping": 0.5, "restLength": 1.5}],
                                  "joints": [{"a": "p", "b": "q", "length": 1}],
                                  "constraints": [{"position": [0, -1, 0], "halfExtents": [5, 1, 5]}],
@@ -492,6 +503,8 @@ TEST(SceneExport, WrittenTextReadsBackToTheSameWorld) {
     std::vector<std::string> errors;
     ASSERT_TRUE(ParseSceneText(WriteSceneText(described), "export.json", &read, &errors)) << errors.front();
     FileScene copy(read);
+    EXPECT_EQ(copy.Volumes()[1].velocityEpsilon, 0.0f) << "a threshold other than the default is written";
+    EXPECT_EQ(copy.Volumes()[0].velocityEpsilon, RigidbodyVolume().velocityEpsilon);
     EXPECT_EQ(copy.System().settings.solverIterations, 7);
     EXPECT_EQ(copy.System().settings.integrator, Integrator::RK4);
     ASSERT_EQ(copy.System().Bodies().size(), original.System().Bodies().size());
