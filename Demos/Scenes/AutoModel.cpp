@@ -45,11 +45,7 @@ public:
 
     const PhysicsSystem& World() const override { return scene->System(); }
 
-    ProbeFactory Snapshot() const override {
-        std::vector<std::string> notes;  // what the format cannot express: the estimate runs without it
-        auto now = std::make_shared<const SceneDescription>(DescribeWorld(scene->System(), "auto-model probe", &notes));
-        return [now]() -> std::unique_ptr<ModelProbe> { return std::make_unique<FileSceneProbe>(*now); };
-    }
+    ProbeFactory Snapshot() const override;
 
 private:
     SceneDescription description;
@@ -57,6 +53,15 @@ private:
     double step = 0.03;
     long long steps = 0;
 };
+
+/// A factory over `world` as it is now (described at once; every probe starts from that state).
+ProbeFactory SnapshotOf(const PhysicsSystem& world) {
+    std::vector<std::string> notes;  // what the format cannot express: the estimate runs without it
+    auto now = std::make_shared<const SceneDescription>(DescribeWorld(world, "auto-model probe", &notes));
+    return [now]() -> std::unique_ptr<ModelProbe> { return std::make_unique<FileSceneProbe>(*now); };
+}
+
+ProbeFactory FileSceneProbe::Snapshot() const { return SnapshotOf(scene->System()); }
 
 /// A factory over the host's world as it is at the first call (described once, shared by every probe).
 ProbeFactory FactoryOf(const PhysicsSystem& world) {
@@ -234,12 +239,7 @@ bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double 
 void AutoModel::AfterFrame(ParameterSet* params, const PhysicsSystem& world, double time) {
     if (!active) return;
     watch->Observe(time, world);
-    if (watch->WantsSnapshot(time)) {
-        std::vector<std::string> notes;
-        auto now = std::make_shared<const SceneDescription>(DescribeWorld(world, "auto-model probe", &notes));
-        watch->TakeSnapshot(time,
-                            [now]() -> std::unique_ptr<ModelProbe> { return std::make_unique<FileSceneProbe>(*now); });
-    }
+    if (watch->WantsSnapshot(time)) watch->TakeSnapshot(time, SnapshotOf(world));
     if (!watch->Due(time)) return;
     std::string line;
     const bool changed = watch->Check(time, FactoryOf(world), &line);
