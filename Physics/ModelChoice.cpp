@@ -492,8 +492,11 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
         order[i] = i;
     }
     // Cheapest first (by the deterministic work model, so the choice never depends on timing noise).
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return result.candidates[a].predictedWork < result.candidates[b].predictedWork;
+    // Ties keep enumeration order (the index breaks them; std::sort, as libstdc++'s stable_sort buffer trips ASan's
+    // alloc-dealloc check).
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        const double wa = result.candidates[a].predictedWork, wb = result.candidates[b].predictedWork;
+        return wa < wb || (wa == wb && a < b);
     });
     const double window = WindowFor(settings);
     result.windowSeconds = window;

@@ -277,8 +277,11 @@ std::string AutoModel::Explain() const {
     out << line;
     std::vector<std::size_t> order(choice.candidates.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return choice.candidates[a].predictedWork < choice.candidates[b].predictedWork;
+    // Ties keep enumeration order (the index breaks them; std::sort, as libstdc++'s stable_sort buffer trips ASan's
+    // alloc-dealloc check).
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        const double wa = choice.candidates[a].predictedWork, wb = choice.candidates[b].predictedWork;
+        return wa < wb || (wa == wb && a < b);
     });
     for (std::size_t i : order) {
         const CandidateEstimate& c = choice.candidates[i];
