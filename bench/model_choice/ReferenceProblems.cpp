@@ -47,10 +47,10 @@ private:
 class ApexError : public ErrorObserver {
 public:
     /// `sphere`: volume 1 of radius r (its bottom is the height), else particle 0.
-    ApexError(double restitution, double offset, bool sphere) : e(restitution), c(offset), sphere(sphere) {}
+    ApexError(double restitution, double offset, bool sphere) : apex{restitution, kH0, offset}, sphere(sphere) {}
     void Start(const FileScene&) override {}
     void AfterStep(const FileScene& scene, const StepTime&) override {
-        if (!stable || apexes >= 5) return;
+        if (!stable || apex.Done()) return;
         double y = 0.0, vy = 0.0;
         if (sphere) {
             const RigidbodyVolume& b = scene.Volumes()[1];
@@ -72,32 +72,17 @@ public:
             y = py;
             vy = p.GetVelocity().y;
         }
-        if (!stable) return;
-        if (vy > 0.0) {
-            rising = true;
-            peak = std::fmax(peak, y);
-        } else if (rising) {
-            rising = false;
-            ++apexes;
-            peak = std::fmax(peak, y);
-            const double e2n = std::pow(e * e, apexes);
-            const double ref = e2n * kH0 + c * (1.0 - e2n) / (1.0 - e * e);
-            worst = std::fmax(worst, std::fabs(peak - ref) / ref);
-            peak = -kInf;
-        }
+        if (stable) apex.Sample(y, vy);
     }
     double Error(const FileScene&, double) override {
-        if (!stable) return kInf;
-        return apexes < 5 ? std::fmax(worst, 1.0) : worst;  // a missing apex is 100 % error, as in the sweep
+        return stable ? apex.Error() : kInf;  // a missing apex is 100 % error, as in the sweep
     }
 
 private:
     static constexpr double kH0 = 5.0;
-    double e, c;
+    sweep::ApexTracker apex;
     bool sphere;
-    double worst = 0.0, peak = -kInf;
-    int apexes = 0;
-    bool rising = false, stable = true;
+    bool stable = true;
 };
 
 // ---- oscillator: particle 1 on a spring of stiffness K, damping b, rest 1 m to the fixed particle 0; 1 kg.

@@ -85,41 +85,27 @@ Outcome RunBounceParticle(const Settings& s) {
     // Reference: the particle reaches y = 0 with speed sqrt(2 g h) and is put Particle::kContactOffset above
     // the surface with e times that speed, so h_n = c + e^2 h_(n-1): h_n = e^(2n) h0 + c (1 - e^(2n)) / (1 - e^2).
     // The offset term is the documented 3 mm placement; with c = 0 this is the textbook e^(2n) h0.
-    const double c = Particle::kContactOffset;
+    ApexTracker apex{e, h0, Particle::kContactOffset};
     Outcome o;
-    double worst = 0.0, peak = -kInf;
-    int apexes = 0;
-    bool rising = false;
     const long long maxSteps = StepsFor(15.0, s.dt);
     const double t0 = CpuNow();
     long long i = 0;
-    for (; i < maxSteps && apexes < 5; ++i) {
+    for (; i < maxSteps && !apex.Done(); ++i) {
         world.Update(float(s.dt));
         const float y = p.GetPosition().y, vy = p.GetVelocity().y;
         if (!std::isfinite(y) || y < -1.0f || y > 2.0f * float(h0)) {
             o.stable = false;
             break;
         }
-        if (vy > 0.0f) {
-            rising = true;
-            peak = std::fmax(peak, y);
-        } else if (rising) {
-            rising = false;
-            ++apexes;
-            peak = std::fmax(peak, y);
-            const double e2n = std::pow(e * e, apexes);
-            const double ref = e2n * h0 + c * (1.0 - e2n) / (1.0 - e * e);
-            worst = std::fmax(worst, std::fabs(peak - ref) / ref);
-            peak = -kInf;
-        }
+        apex.Sample(y, vy);
     }
     o.cpuSeconds = CpuNow() - t0;
     if (!o.stable) ++i;  // the step that failed was run
     o.steps = i;
     o.simSeconds = double(i) * s.dt;
     // A missing apex (the particle came to rest or never left the ground within 15 s) counts as 100 % error.
-    o.error = apexes < 5 ? std::fmax(worst, 1.0) : worst;
-    if (apexes < 5) o.note = "only " + std::to_string(apexes) + " apexes";
+    o.error = apex.Error();
+    if (!apex.Done()) o.note = "only " + std::to_string(apex.apexes) + " apexes";
     return o;
 }
 

@@ -100,31 +100,18 @@ Outcome RunBounceSphere(const Settings& s) {
     const RigidbodyVolume& b = w.Body(1);
 
     Outcome o;
-    double worst = 0.0, peak = -kInf;
-    int apexes = 0;
-    bool rising = false;
+    ApexTracker apex{e, h0, 0.0};
     const long long maxFrames = StepsFor(15.0, s.dt);
     const double t0 = CpuNow();
     long long i = 0;
-    while (i < maxFrames && apexes < 5) {
+    while (i < maxFrames && !apex.Done()) {
         w.Frame(s);
         ++i;
         if (!w.Bounded(20.0f) || b.position.y < -1.0f) {
             o.stable = false;
             break;
         }
-        const double y = double(b.position.y) - r;
-        if (b.velocity.y > 0.0f) {
-            rising = true;
-            peak = std::fmax(peak, y);
-        } else if (rising) {
-            rising = false;
-            ++apexes;
-            peak = std::fmax(peak, y);
-            const double ref = std::pow(e * e, apexes) * h0;
-            worst = std::fmax(worst, std::fabs(peak - ref) / ref);
-            peak = -kInf;
-        }
+        apex.Sample(double(b.position.y) - r, b.velocity.y);
     }
     o.cpuSeconds = CpuNow() - t0;
     o.steps = i * s.substeps;
@@ -133,8 +120,8 @@ Outcome RunBounceSphere(const Settings& s) {
         o.error = kInf;
         o.note = "left the ground slab";
     } else {
-        o.error = apexes < 5 ? std::fmax(worst, 1.0) : worst;
-        if (apexes < 5) o.note = "only " + std::to_string(apexes) + " apexes";
+        o.error = apex.Error();
+        if (!apex.Done()) o.note = "only " + std::to_string(apex.apexes) + " apexes";
     }
     return o;
 }

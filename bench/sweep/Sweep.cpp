@@ -56,4 +56,21 @@ double PendulumPeriod(double length, double g, double theta0) {
     return 4.0 * std::sqrt(length / g) * EllipticK(std::sin(0.5 * theta0));
 }
 
+void ApexTracker::Sample(double y, double vy) {
+    if (vy > 0.0) {
+        rising = true;
+        peak = std::fmax(peak, y);
+    } else if (rising) {
+        rising = false;
+        ++apexes;
+        peak = std::fmax(peak, y);
+        const double e2n = std::pow(e * e, apexes);
+        const double ref = c != 0.0 ? e2n * h0 + c * (1.0 - e2n) / (1.0 - e * e) : e2n * h0;
+        worst = std::fmax(worst, std::fabs(peak - ref) / ref);
+        peak = -std::numeric_limits<double>::infinity();
+    }
+}
+
+double ApexTracker::Error() const { return apexes < 5 ? std::fmax(worst, 1.0) : worst; }
+
 }  // namespace sweep

@@ -5,6 +5,7 @@
 // alone (setup, references and error evaluation are not timed).
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,25 @@ const std::vector<double>& QuickStepSizes();
 /// --dt: use these step sizes instead (e.g. a demo's 0.03 s); a step that does not divide a problem's
 /// duration runs round(T / dt) steps and is compared with the reference at that time.
 void OverrideStepSizes(const std::vector<double>& dts);
+
+/// The bounce problems' error: the first five apex heights of a body dropped from h0 (m) with restitution e,
+/// against h_n = e^(2n) h0 + c (1 - e^(2n)) / (1 - e^2) (c, m: a contact offset the engine adds at each bounce; 0 =
+/// the textbook e^(2n) h0). Sample after every step; shared by psb-sweep and psb-model-choice-bench.
+struct ApexTracker {
+    ApexTracker(double restitution, double dropHeight, double offset) : e(restitution), h0(dropHeight), c(offset) {}
+    double e = 0.0, h0 = 0.0, c = 0.0;
+    double worst = 0.0;  ///< largest relative apex error so far
+    int apexes = 0;
+    /// y (m) and the vertical velocity (m/s) after a step: an apex is the highest point before vy turns to <= 0.
+    void Sample(double y, double vy);
+    bool Done() const { return apexes >= 5; }
+    /// The largest relative error of the five; a missing apex counts as 100 %.
+    double Error() const;
+
+private:
+    double peak = -std::numeric_limits<double>::infinity();
+    bool rising = false;
+};
 
 /// Thread CPU time in seconds (CLOCK_THREAD_CPUTIME_ID).
 double CpuNow();
