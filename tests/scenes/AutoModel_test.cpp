@@ -138,15 +138,20 @@ TEST(AutoModel, OscillatorMeetsEachBudget) {
 
 namespace {
 
-SceneDescription Stack(int n) {
-    SceneDescription d;
+/// A static 20 x 1 x 20 m box whose top is y = 0.
+SceneBody Ground() {
     SceneBody ground;
     ground.id = "ground";
     ground.kind = SceneBodyKind::Box;
     ground.position = vec3(0, -0.5f, 0);
     ground.halfExtents = vec3(10, 0.5f, 10);
     ground.mass = 0.0f;
-    d.bodies.push_back(ground);
+    return ground;
+}
+
+SceneDescription Stack(int n) {
+    SceneDescription d;
+    d.bodies.push_back(Ground());
     for (int i = 0; i < n; ++i) {
         SceneBody b;
         b.id = "b" + std::to_string(i);
@@ -182,13 +187,7 @@ namespace {
 // when the impact's error alone already exceeds the budget, reporting the miss.
 TEST(AutoModel, WatchSeesContactBegin) {
     SceneDescription d;
-    SceneBody ground;
-    ground.id = "ground";
-    ground.kind = SceneBodyKind::Box;
-    ground.position = vec3(0, -0.5f, 0);
-    ground.halfExtents = vec3(10, 0.5f, 10);
-    ground.mass = 0.0f;
-    d.bodies.push_back(ground);
+    d.bodies.push_back(Ground());
     SceneBody ball;
     ball.id = "ball";
     ball.kind = SceneBodyKind::Sphere;
