@@ -88,10 +88,10 @@ void PhysicsSystem::StepSoftVolumes(StepContext& ctx) {
     const unsigned char* active = sleep != nullptr ? sleep->ActiveMask() : nullptr;
     const float margin = std::max(settings.soft.speculativeMargin, 0.0f);
     const std::size_t count = volumes.size();
-    // With sleep on, the all-pairs loop also asks for overlapping grown boxes (as the broadphase does), since its
-    // pairs decide which islands wake; the solver's own test is stricter, so its contacts are the same.
+    // The all-pairs loop asks for overlapping grown boxes, as the broadphase does: so a small world and a large
+    // one find the same pairs, and the solver collides only pairs that can touch this step (in a column of 20
+    // cubes, 19 + 1 of its 210 pairs). With sleep on, these pairs also decide which islands wake.
     auto near = [&](std::size_t i, std::size_t j) {
-        if (sleep == nullptr) return true;
         vec3 minA, maxA, minB, maxB;
         VolumeBounds(*volumes[i], &minA, &maxA);
         VolumeBounds(*volumes[j], &minB, &maxB);
