@@ -131,6 +131,8 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
     const Softness softness = MakeSoftness(hertz, soft.contactDampingRatio, ctx.h);
     // A contact with a static body has only one body to move, so it is made twice as stiff.
     const Softness staticSoftness = MakeSoftness(2.0f * hertz, soft.contactDampingRatio, ctx.h);
+    colouring = ctx.settings.softGraphColouring;
+    if (colouring) BuildBatches(softness, staticSoftness);
     UpdateSeparations();
     for (int s = 0; s < ctx.substepCount; ++s) {
         IntegrateVelocities(ctx);
@@ -142,6 +144,7 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
         for (int k = 0; k < soft.relaxIterations; ++k)
             Solve(ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, false);
     }
+    if (colouring) StoreBatchImpulses();
     ApplyRestitution(soft.restitutionThreshold);
     StoreBodies(volumes);
 }
@@ -332,81 +335,109 @@ void SoftContactSolver::IntegratePositions(const StepContext& ctx) {
 }
 
 void SoftContactSolver::UpdateSeparations() {
-    for (const Pair& pair : pairs) {
-        const BodyState& A = state[pair.a];
-        const BodyState& B = state[pair.b];
-        const vec3 dp = B.dp - A.dp;
-        for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
-            Contact& c = contacts[k];
-            // The base separation plus the motion of both anchors since the step began.
-            const vec3 d = dp + Mul(c.rB, B.dR) - Mul(c.rA, A.dR);
-            c.current = Dot(d, pair.n) + c.baseSeparation;
-        }
+    if (colouring) {
+        WideUpdateSeparations();
+        for (const int i : overflow) UpdatePairSeparations(pairs[i]);
+        return;
+    }
+    for (const Pair& pair : pairs) UpdatePairSeparations(pair);
+}
+
+void SoftContactSolver::UpdatePairSeparations(const Pair& pair) {
+    const BodyState& A = state[pair.a];
+    const BodyState& B = state[pair.b];
+    const vec3 dp = B.dp - A.dp;
+    for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
+        Contact& c = contacts[k];
+        // The base separation plus the motion of both anchors since the step began.
+        const vec3 d = dp + Mul(c.rB, B.dR) - Mul(c.rA, A.dR);
+        c.current = Dot(d, pair.n) + c.baseSeparation;
     }
 }
 
 void SoftContactSolver::WarmStart() {
-    for (const Pair& pair : pairs) {
-        BodyState& A = state[pair.a];
-        BodyState& B = state[pair.b];
-        const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
-        for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
-            const Contact& c = contacts[k];
-            ApplyRow(A, B, invA, invB, pair.n, c.normal, c.normal.impulse);
-            ApplyRow(A, B, invA, invB, pair.t1, c.tangent1, c.tangent1.impulse);
-            ApplyRow(A, B, invA, invB, pair.t2, c.tangent2, c.tangent2.impulse);
-        }
+    if (colouring) {
+        WideWarmStart();
+        for (const int i : overflow) WarmStartPair(pairs[i]);
+        return;
+    }
+    for (const Pair& pair : pairs) WarmStartPair(pair);
+}
+
+void SoftContactSolver::WarmStartPair(const Pair& pair) {
+    BodyState& A = state[pair.a];
+    BodyState& B = state[pair.b];
+    const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
+    for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
+        const Contact& c = contacts[k];
+        ApplyRow(A, B, invA, invB, pair.n, c.normal, c.normal.impulse);
+        ApplyRow(A, B, invA, invB, pair.t1, c.tangent1, c.tangent1.impulse);
+        ApplyRow(A, B, invA, invB, pair.t2, c.tangent2, c.tangent2.impulse);
     }
 }
 
 void SoftContactSolver::Solve(float invH, const Softness& dynamicSoftness, const Softness& staticSoftness,
                               float maxPushout, float slop, bool useBias) {
-    for (const Pair& pair : pairs) {
-        const Softness& softness = pair.touchesStatic ? staticSoftness : dynamicSoftness;
-        BodyState& A = state[pair.a];
-        BodyState& B = state[pair.b];
-        const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
-        for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
-            Contact& c = contacts[k];
-            const float s = c.current;
-            float bias = 0.0f, massScale = 1.0f, impulseScale = 0.0f;
-            if (s > 0.0f) {
-                bias = s * invH;  // speculative: may close the gap this substep, no more
-            } else if (useBias) {
-                bias = std::max(softness.biasRate * std::min(s + slop, 0.0f), -maxPushout);
-                massScale = softness.massScale;
-                impulseScale = softness.impulseScale;
-            }
-            // Normal: the TOTAL impulse stays >= 0 (contacts push).
-            const float vn = RowSpeed(A, B, pair.n, c.normal);
-            // Restitution works from the fastest closing speed met before solving (the impact substep), not from
-            // the step's start, which misses up to g dt of the fall.
-            if (useBias) c.relativeVelocity = std::min(c.relativeVelocity, vn);
-            const float jn = std::max(
-                c.normal.impulse - c.normal.mass * massScale * (vn + bias) - impulseScale * c.normal.impulse, 0.0f);
-            const float dn = jn - c.normal.impulse;
-            c.normal.impulse = jn;
-            c.maxNormalImpulse = std::max(c.maxNormalImpulse, jn);
-            ApplyRow(A, B, invA, invB, pair.n, c.normal, dn);
+    if (colouring) {
+        WideSolve(invH, maxPushout, slop, useBias);
+        for (const int i : overflow) {
+            const Pair& pair = pairs[i];
+            SolvePair(pair, pair.touchesStatic ? staticSoftness : dynamicSoftness, invH, maxPushout, slop, useBias);
         }
-        for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
-            Contact& c = contacts[k];
-            // Friction: the TOTAL stays inside the Coulomb cone mu * jn (book §15, Coulomb clamp).
-            const float limit = pair.friction * c.normal.impulse;
-            float j1 = c.tangent1.impulse - c.tangent1.mass * RowSpeed(A, B, pair.t1, c.tangent1);
-            float j2 = c.tangent2.impulse - c.tangent2.mass * RowSpeed(A, B, pair.t2, c.tangent2);
-            const float sq = j1 * j1 + j2 * j2;
-            if (sq > limit * limit) {
-                const float scale = limit > 0.0f ? limit / std::sqrt(sq) : 0.0f;
-                j1 *= scale;
-                j2 *= scale;
-            }
-            const float d1 = j1 - c.tangent1.impulse, d2 = j2 - c.tangent2.impulse;
-            c.tangent1.impulse = j1;
-            c.tangent2.impulse = j2;
-            ApplyRow(A, B, invA, invB, pair.t1, c.tangent1, d1);
-            ApplyRow(A, B, invA, invB, pair.t2, c.tangent2, d2);
+        return;
+    }
+    for (const Pair& pair : pairs)
+        SolvePair(pair, pair.touchesStatic ? staticSoftness : dynamicSoftness, invH, maxPushout, slop, useBias);
+}
+
+void SoftContactSolver::SolvePair(const Pair& pair, const Softness& softness, float invH, float maxPushout, float slop,
+                                  bool useBias) {
+    BodyState& A = state[pair.a];
+    BodyState& B = state[pair.b];
+    const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
+    for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
+        Contact& c = contacts[k];
+        const float s = c.current;
+        float bias = 0.0f, massScale = 1.0f, impulseScale = 0.0f;
+        if (s > 0.0f) {
+            bias = s * invH;  // speculative: may close the gap this substep, no more
+        } else if (useBias) {
+            bias = std::max(softness.biasRate * std::min(s + slop, 0.0f), -maxPushout);
+            massScale = softness.massScale;
+            impulseScale = softness.impulseScale;
         }
+        // Normal: the TOTAL impulse stays >= 0 (contacts push).
+        const float vn = RowSpeed(A, B, pair.n, c.normal);
+        // Restitution works from the fastest closing speed met before solving (the impact substep), not from
+        // the step's start, which misses up to g dt of the fall.
+        if (useBias) c.relativeVelocity = std::min(c.relativeVelocity, vn);
+        const float jn = std::max(
+            c.normal.impulse - c.normal.mass * massScale * (vn + bias) - impulseScale * c.normal.impulse, 0.0f);
+        const float dn = jn - c.normal.impulse;
+        c.normal.impulse = jn;
+        c.maxNormalImpulse = std::max(c.maxNormalImpulse, jn);
+        ApplyRow(A, B, invA, invB, pair.n, c.normal, dn);
+    }
+    // Friction only in the relax pass, as Box2D's soft step does since 2026: the biased pass's friction was undone
+    // by the relax pass's anyway, at a third of the solve's rows (docs/ch15.md, "The soft-step solver").
+    if (useBias) return;
+    for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
+        Contact& c = contacts[k];
+        // Friction: the TOTAL stays inside the Coulomb cone mu * jn (book §15, Coulomb clamp).
+        const float limit = pair.friction * c.normal.impulse;
+        float j1 = c.tangent1.impulse - c.tangent1.mass * RowSpeed(A, B, pair.t1, c.tangent1);
+        float j2 = c.tangent2.impulse - c.tangent2.mass * RowSpeed(A, B, pair.t2, c.tangent2);
+        const float sq = j1 * j1 + j2 * j2;
+        if (sq > limit * limit) {
+            const float scale = limit > 0.0f ? limit / std::sqrt(sq) : 0.0f;
+            j1 *= scale;
+            j2 *= scale;
+        }
+        const float d1 = j1 - c.tangent1.impulse, d2 = j2 - c.tangent2.impulse;
+        c.tangent1.impulse = j1;
+        c.tangent2.impulse = j2;
+        ApplyRow(A, B, invA, invB, pair.t1, c.tangent1, d1);
+        ApplyRow(A, B, invA, invB, pair.t2, c.tangent2, d2);
     }
 }
 

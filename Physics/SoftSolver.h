@@ -105,7 +105,55 @@ public:
         bool dynamic = false;
     };
 
+    /// Four floats, one per lane of a wide batch (GCC/Clang vector extension: element-wise arithmetic).
+    typedef float Float4 __attribute__((vector_size(16)));
+    /// Three Float4: a vector per lane.
+    struct Vec4x3 {
+        Float4 x, y, z;
+    };
+    /// One row of a point in every lane (Row, four wide).
+    struct WideRow {
+        Vec4x3 rAxD, rBxD, iArAxD, iBrBxD;
+        Float4 mass, impulse;
+    };
+    /// Point k of every lane's pair (a lane whose pair has fewer points holds zero masses there: no effect).
+    struct WidePoint {
+        Vec4x3 rA, rB;
+        WideRow normal, tangent1, tangent2;
+        Float4 baseSeparation, current, relativeVelocity, maxNormalImpulse;
+    };
+    /// Up to four pairs of one colour (no moving body twice), solved together: lane l is pairs[pair[l]], or
+    /// empty (pair -1: no bodies, zero masses).
+    struct WideBatch {
+        int pair[4];
+        int a[4], b[4];
+        int pointCount;  // most points of any lane
+        Vec4x3 n, t1, t2;
+        Float4 invMassA, invMassB, friction;
+        Float4 biasRate, massScale, impulseScale;  // the lane's softness (static pairs: the stiffer one)
+        WidePoint points[4];
+    };
+
+    /// Colours of the constraint graph: a pair takes the first colour neither of its moving bodies has.
+    static constexpr int kColours = 24;
+    /// Batches of the last Step and the pairs left over (both bodies already in every colour), for tests.
+    std::size_t BatchCount() const { return batches.size(); }
+    std::size_t OverflowCount() const { return overflow.size(); }
+
 private:
+    // Graph colouring (SoftSolverGraph.cpp): batches built once per step after Prepare; each pass runs the
+    // batches colour by colour, then the overflow pairs one by one; the impulses go back to the contacts before
+    // restitution.
+    void BuildBatches(const Softness& softness, const Softness& staticSoftness);
+    void WideUpdateSeparations();
+    void WideWarmStart();
+    void WideSolve(float invH, float maxPushout, float slop, bool useBias);
+    void StoreBatchImpulses();
+    /// One pair of the scalar passes (the overflow, or every pair without colouring).
+    void WarmStartPair(const Pair& pair);
+    void SolvePair(const Pair& pair, const Softness& softness, float invH, float maxPushout, float slop, bool useBias);
+    void UpdatePairSeparations(const Pair& pair);
+
     /// Current separation of every contact from the bodies' motion since the step began. Poses change only in
     /// IntegratePositions, so this runs once before the substeps and once after each integration, and every
     /// solve pass in between reads it.
@@ -127,6 +175,11 @@ private:
     std::vector<BodySim> sim;
     std::vector<Pair> pairs, previousPairs;
     std::vector<Contact> contacts, previousContacts;
+    std::vector<WideBatch> batches;
+    std::vector<int> overflow;               // pair indices solved one by one after the batches
+    std::vector<std::uint32_t> bodyColours;  // per body: the colours it has this step (bit c)
+    std::vector<int> colourPairs[kColours];  // pair indices of each colour, in pair order
+    bool colouring = false;                  // this step solves by batches
     std::size_t warmStarted = 0;
     float inheritedNormal = 0.0f;
     long long lastStep = -2;

@@ -74,6 +74,10 @@ struct WorldSettings {
     float substepTravelFraction = 0.75f;
     /// Volume count from which pairs are found by sweep-and-prune (Broadphase.h); all pairs below. Not in the book.
     std::size_t broadphaseMinVolumes = 32;
+    /// ContactSolver::Soft solves its pairs in batches of four by constraint-graph colour (pairs of one colour share
+    /// no moving body; docs/ch15.md, "Graph colouring"); false solves them one by one in pair order. The same
+    /// equations either way, in another order. Not in the book.
+    bool softGraphColouring = true;
 };
 
 /// What one PhysicsSystem::Update hands to each stage: the step's times and counters and the world's settings.

@@ -1,0 +1,281 @@
+// ContactSolver::Soft by constraint-graph colour (docs/ch15.md, "Graph colouring"): every pair takes the first of
+// kColours colours that neither of its moving bodies has yet, so the pairs of one colour share no moving body and
+// four of them can be solved at once, one per lane, with the same equations as SolvePair. Static and sleeping
+// bodies have no colour (nothing is written to them), so every pair on the ground can share one. Pairs that find
+// no colour are solved one by one after the batches. Colours, batches and lanes are filled in pair order, so the
+// solve order is a fixed function of the pairs (deterministic).
+#include <algorithm>
+#include <cmath>
+
+#include "Physics/SoftSolver.h"
+
+namespace {
+
+using Float4 = SoftContactSolver::Float4;
+using Vec4x3 = SoftContactSolver::Vec4x3;
+using WideRow = SoftContactSolver::WideRow;
+using WideBatch = SoftContactSolver::WideBatch;
+
+inline Float4 Splat(float v) { return Float4{v, v, v, v}; }
+/// std::max and std::min lane by lane ((a < b) ? b : a and (b < a) ? b : a).
+inline Float4 Max(Float4 a, Float4 b) { return a < b ? b : a; }
+inline Float4 Min(Float4 a, Float4 b) { return b < a ? b : a; }
+inline Float4 Select(decltype(Float4{} < Float4{}) mask, Float4 a, Float4 b) { return mask ? a : b; }
+
+inline Vec4x3 Sub(const Vec4x3& l, const Vec4x3& r) { return {l.x - r.x, l.y - r.y, l.z - r.z}; }
+inline Vec4x3 Add(const Vec4x3& l, const Vec4x3& r) { return {l.x + r.x, l.y + r.y, l.z + r.z}; }
+inline Vec4x3 Scale(const Vec4x3& v, Float4 s) { return {v.x * s, v.y * s, v.z * s}; }
+/// Dot(l, r) lane by lane, in Dot's order (x, then y, then z).
+inline Float4 Dot(const Vec4x3& l, const Vec4x3& r) { return l.x * r.x + l.y * r.y + l.z * r.z; }
+
+/// Velocities of the lanes' bodies.
+struct WideBodies {
+    Vec4x3 vA, wA, vB, wB;
+};
+
+/// RowSpeed, four wide: Dot(vB - vA, d) + Dot(wB, rB x d) - Dot(wA, rA x d).
+inline Float4 RowSpeed(const WideBodies& s, const Vec4x3& d, const WideRow& row) {
+    return Dot(Sub(s.vB, s.vA), d) + Dot(s.wB, row.rBxD) - Dot(s.wA, row.rAxD);
+}
+
+/// ApplyRow, four wide: j along d to B, -j to A.
+inline void ApplyRow(WideBodies& s, Float4 invA, Float4 invB, const Vec4x3& d, const WideRow& row, Float4 j) {
+    s.vA = Sub(s.vA, Scale(d, invA * j));
+    s.vB = Add(s.vB, Scale(d, invB * j));
+    s.wA = Sub(s.wA, Scale(row.iArAxD, j));
+    s.wB = Add(s.wB, Scale(row.iBrBxD, j));
+}
+
+inline void SetLane(Vec4x3* v, int lane, const vec3& value) {
+    v->x[lane] = value.x;
+    v->y[lane] = value.y;
+    v->z[lane] = value.z;
+}
+inline vec3 Lane(const Vec4x3& v, int lane) { return vec3(v.x[lane], v.y[lane], v.z[lane]); }
+
+inline void SetRow(WideRow* wide, int lane, const SoftContactSolver::Row& row) {
+    SetLane(&wide->rAxD, lane, row.rAxD);
+    SetLane(&wide->rBxD, lane, row.rBxD);
+    SetLane(&wide->iArAxD, lane, row.iArAxD);
+    SetLane(&wide->iBrBxD, lane, row.iBrBxD);
+    wide->mass[lane] = row.mass;
+    wide->impulse[lane] = row.impulse;
+}
+
+/// v M four wide (row-vector convention, as SoftSolver.cpp's Mul), M given by its rows m[0..2].
+inline Vec4x3 Mul(const Vec4x3& v, const Vec4x3 (&m)[3]) {
+    return {v.x * m[0].x + v.y * m[1].x + v.z * m[2].x, v.x * m[0].y + v.y * m[1].y + v.z * m[2].y,
+            v.x * m[0].z + v.y * m[1].z + v.z * m[2].z};
+}
+
+}  // namespace
+
+void SoftContactSolver::BuildBatches(const Softness& softness, const Softness& staticSoftness) {
+    // Colour the pairs: the first colour free at both moving bodies. Capacities are kept from step to step.
+    bodyColours.assign(state.size(), 0u);
+    for (std::vector<int>& list : colourPairs) list.clear();
+    overflow.clear();
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+        const Pair& pair = pairs[i];
+        const bool movesA = sim[pair.a].dynamic, movesB = sim[pair.b].dynamic;
+        const std::uint32_t taken = (movesA ? bodyColours[pair.a] : 0u) | (movesB ? bodyColours[pair.b] : 0u);
+        int colour = 0;
+        while (colour < kColours && (taken >> colour & 1u) != 0u) ++colour;
+        if (colour == kColours || (!movesA && !movesB)) {
+            overflow.push_back(static_cast<int>(i));
+            continue;
+        }
+        if (movesA) bodyColours[pair.a] |= 1u << colour;
+        if (movesB) bodyColours[pair.b] |= 1u << colour;
+        colourPairs[colour].push_back(static_cast<int>(i));
+    }
+    // Four pairs of a colour per batch; a lane without a pair keeps zeros (no bodies, zero masses: no effect).
+    batches.clear();
+    for (const std::vector<int>& list : colourPairs) {
+        for (std::size_t first = 0; first < list.size(); first += 4) {
+            batches.emplace_back();
+            WideBatch& batch = batches.back();
+            batch = WideBatch{};
+            batch.pointCount = 0;
+            for (int lane = 0; lane < 4; ++lane) {
+                batch.pair[lane] = batch.a[lane] = batch.b[lane] = -1;
+                if (first + static_cast<std::size_t>(lane) >= list.size()) continue;
+                const int index = list[first + static_cast<std::size_t>(lane)];
+                const Pair& pair = pairs[static_cast<std::size_t>(index)];
+                batch.pair[lane] = index;
+                batch.a[lane] = pair.a;
+                batch.b[lane] = pair.b;
+                SetLane(&batch.n, lane, pair.n);
+                SetLane(&batch.t1, lane, pair.t1);
+                SetLane(&batch.t2, lane, pair.t2);
+                batch.invMassA[lane] = sim[pair.a].invMass;
+                batch.invMassB[lane] = sim[pair.b].invMass;
+                batch.friction[lane] = pair.friction;
+                const Softness& soft = pair.touchesStatic ? staticSoftness : softness;
+                batch.biasRate[lane] = soft.biasRate;
+                batch.massScale[lane] = soft.massScale;
+                batch.impulseScale[lane] = soft.impulseScale;
+                batch.pointCount = std::max(batch.pointCount, static_cast<int>(pair.count));
+                for (std::size_t k = 0; k < pair.count; ++k) {
+                    const Contact& c = contacts[pair.first + k];
+                    WidePoint& p = batch.points[k];
+                    SetLane(&p.rA, lane, c.rA);
+                    SetLane(&p.rB, lane, c.rB);
+                    SetRow(&p.normal, lane, c.normal);
+                    SetRow(&p.tangent1, lane, c.tangent1);
+                    SetRow(&p.tangent2, lane, c.tangent2);
+                    p.baseSeparation[lane] = c.baseSeparation;
+                    p.current[lane] = c.current;
+                    p.relativeVelocity[lane] = c.relativeVelocity;
+                    p.maxNormalImpulse[lane] = c.maxNormalImpulse;
+                }
+            }
+        }
+    }
+}
+
+namespace {
+
+/// The lanes' body velocities (zero for an empty lane).
+WideBodies Gather(const std::vector<SoftContactSolver::BodyState>& state, const WideBatch& batch) {
+    WideBodies s = {};
+    for (int lane = 0; lane < 4; ++lane) {
+        if (batch.pair[lane] < 0) continue;
+        const SoftContactSolver::BodyState& A = state[static_cast<std::size_t>(batch.a[lane])];
+        const SoftContactSolver::BodyState& B = state[static_cast<std::size_t>(batch.b[lane])];
+        SetLane(&s.vA, lane, A.v);
+        SetLane(&s.wA, lane, A.w);
+        SetLane(&s.vB, lane, B.v);
+        SetLane(&s.wB, lane, B.w);
+    }
+    return s;
+}
+
+/// Writes the lanes' velocities back to their moving bodies (static and sleeping ones are never written).
+void Scatter(std::vector<SoftContactSolver::BodyState>& state, const std::vector<SoftContactSolver::BodySim>& sim,
+             const WideBatch& batch, const WideBodies& s) {
+    for (int lane = 0; lane < 4; ++lane) {
+        if (batch.pair[lane] < 0) continue;
+        const std::size_t a = static_cast<std::size_t>(batch.a[lane]), b = static_cast<std::size_t>(batch.b[lane]);
+        if (sim[a].dynamic) {
+            state[a].v = Lane(s.vA, lane);
+            state[a].w = Lane(s.wA, lane);
+        }
+        if (sim[b].dynamic) {
+            state[b].v = Lane(s.vB, lane);
+            state[b].w = Lane(s.wB, lane);
+        }
+    }
+}
+
+}  // namespace
+
+void SoftContactSolver::WideUpdateSeparations() {
+    // UpdatePairSeparations four wide: s = s_base + n . ((dpB - dpA) + rB dRB - rA dRA), rows of dR as vectors.
+    for (WideBatch& batch : batches) {
+        Vec4x3 dpA = {}, dpB = {}, RA[3] = {}, RB[3] = {};
+        for (int lane = 0; lane < 4; ++lane) {
+            if (batch.pair[lane] < 0) continue;
+            const BodyState& A = state[static_cast<std::size_t>(batch.a[lane])];
+            const BodyState& B = state[static_cast<std::size_t>(batch.b[lane])];
+            SetLane(&dpA, lane, A.dp);
+            SetLane(&dpB, lane, B.dp);
+            for (int r = 0; r < 3; ++r) {
+                SetLane(&RA[r], lane, vec3(A.dR[r][0], A.dR[r][1], A.dR[r][2]));
+                SetLane(&RB[r], lane, vec3(B.dR[r][0], B.dR[r][1], B.dR[r][2]));
+            }
+        }
+        const Vec4x3 dp = Sub(dpB, dpA);
+        for (int k = 0; k < batch.pointCount; ++k) {
+            WidePoint& p = batch.points[k];
+            const Vec4x3 d = Sub(Add(dp, Mul(p.rB, RB)), Mul(p.rA, RA));
+            p.current = Dot(d, batch.n) + p.baseSeparation;
+        }
+    }
+}
+
+void SoftContactSolver::WideWarmStart() {
+    for (const WideBatch& batch : batches) {
+        WideBodies s = Gather(state, batch);
+        for (int k = 0; k < batch.pointCount; ++k) {
+            const WidePoint& p = batch.points[k];
+            ApplyRow(s, batch.invMassA, batch.invMassB, batch.n, p.normal, p.normal.impulse);
+            ApplyRow(s, batch.invMassA, batch.invMassB, batch.t1, p.tangent1, p.tangent1.impulse);
+            ApplyRow(s, batch.invMassA, batch.invMassB, batch.t2, p.tangent2, p.tangent2.impulse);
+        }
+        Scatter(state, sim, batch, s);
+    }
+}
+
+void SoftContactSolver::WideSolve(float invH, float maxPushout, float slop, bool useBias) {
+    const Float4 zero = Splat(0.0f), one = Splat(1.0f);
+    const Float4 invH4 = Splat(invH), slop4 = Splat(slop), pushout = Splat(-maxPushout);
+    for (WideBatch& batch : batches) {
+        WideBodies s = Gather(state, batch);
+        for (int k = 0; k < batch.pointCount; ++k) {
+            WidePoint& p = batch.points[k];
+            // SolvePair's normal row: speculative (s > 0) rigid with bias s/h; penetrating with the soft bias and
+            // scales when biased; rigid without bias in the relax pass.
+            const Float4 sep = p.current;
+            const auto speculative = sep > zero;
+            Float4 bias = zero, massScale = one, impulseScale = zero;
+            if (useBias) {
+                bias = Max(batch.biasRate * Min(sep + slop4, zero), pushout);
+                massScale = batch.massScale;
+                impulseScale = batch.impulseScale;
+            }
+            bias = Select(speculative, sep * invH4, bias);
+            massScale = Select(speculative, one, massScale);
+            impulseScale = Select(speculative, zero, impulseScale);
+            const Float4 vn = RowSpeed(s, batch.n, p.normal);
+            if (useBias) p.relativeVelocity = Min(p.relativeVelocity, vn);
+            const Float4 J = p.normal.impulse;
+            const Float4 jn = Max(J - p.normal.mass * massScale * (vn + bias) - impulseScale * J, zero);
+            p.normal.impulse = jn;
+            p.maxNormalImpulse = Max(p.maxNormalImpulse, jn);
+            ApplyRow(s, batch.invMassA, batch.invMassB, batch.n, p.normal, jn - J);
+        }
+        if (!useBias) {
+            // Friction in the relax pass only, as in SolvePair.
+            for (int k = 0; k < batch.pointCount; ++k) {
+                WidePoint& p = batch.points[k];
+                const Float4 limit = batch.friction * p.normal.impulse;
+                Float4 j1 = p.tangent1.impulse - p.tangent1.mass * RowSpeed(s, batch.t1, p.tangent1);
+                Float4 j2 = p.tangent2.impulse - p.tangent2.mass * RowSpeed(s, batch.t2, p.tangent2);
+                const Float4 sq = j1 * j1 + j2 * j2;
+                // Outside the cone: scaled back onto it (a scale of 1 leaves the others unchanged, bit for bit).
+                Float4 scale = one;
+                for (int lane = 0; lane < 4; ++lane)
+                    if (sq[lane] > limit[lane] * limit[lane])
+                        scale[lane] = limit[lane] > 0.0f ? limit[lane] / std::sqrt(sq[lane]) : 0.0f;
+                j1 = j1 * scale;
+                j2 = j2 * scale;
+                const Float4 d1 = j1 - p.tangent1.impulse, d2 = j2 - p.tangent2.impulse;
+                p.tangent1.impulse = j1;
+                p.tangent2.impulse = j2;
+                ApplyRow(s, batch.invMassA, batch.invMassB, batch.t1, p.tangent1, d1);
+                ApplyRow(s, batch.invMassA, batch.invMassB, batch.t2, p.tangent2, d2);
+            }
+        }
+        Scatter(state, sim, batch, s);
+    }
+}
+
+void SoftContactSolver::StoreBatchImpulses() {
+    for (const WideBatch& batch : batches) {
+        for (int lane = 0; lane < 4; ++lane) {
+            if (batch.pair[lane] < 0) continue;
+            const Pair& pair = pairs[static_cast<std::size_t>(batch.pair[lane])];
+            for (std::size_t k = 0; k < pair.count; ++k) {
+                const WidePoint& p = batch.points[k];
+                Contact& c = contacts[pair.first + k];
+                c.normal.impulse = p.normal.impulse[lane];
+                c.tangent1.impulse = p.tangent1.impulse[lane];
+                c.tangent2.impulse = p.tangent2.impulse[lane];
+                c.current = p.current[lane];
+                c.relativeVelocity = p.relativeVelocity[lane];
+                c.maxNormalImpulse = p.maxNormalImpulse[lane];
+            }
+        }
+    }
+}
