@@ -125,6 +125,7 @@ public:
     /// Up to four pairs of one colour (no moving body twice), solved together: lane l is pairs[pair[l]], or
     /// empty (pair -1: no bodies, zero masses).
     struct WideBatch {
+        int colour = 0;
         int pair[4];
         int a[4], b[4];
         int pointCount;  // most points of any lane
@@ -137,6 +138,9 @@ public:
     /// Colours of the constraint graph: a pair takes the first colour neither of its moving bodies has.
     static constexpr int kColours = 24;
     /// Batches of the last Step and the pairs left over (both bodies already in every colour), for tests.
+    const std::vector<Pair>& Pairs() const { return pairs; }
+    const std::vector<WideBatch>& Batches() const { return batches; }
+    const std::vector<int>& OverflowPairs() const { return overflow; }
     std::size_t BatchCount() const { return batches.size(); }
     std::size_t OverflowCount() const { return overflow.size(); }
 

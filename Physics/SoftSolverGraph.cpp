@@ -91,11 +91,13 @@ void SoftContactSolver::BuildBatches(const Softness& softness, const Softness& s
     }
     // Four pairs of a colour per batch; a lane without a pair keeps zeros (no bodies, zero masses: no effect).
     batches.clear();
-    for (const std::vector<int>& list : colourPairs) {
+    for (int colour = 0; colour < kColours; ++colour) {
+        const std::vector<int>& list = colourPairs[colour];
         for (std::size_t first = 0; first < list.size(); first += 4) {
             batches.emplace_back();
             WideBatch& batch = batches.back();
             batch = WideBatch{};
+            batch.colour = colour;
             batch.pointCount = 0;
             for (int lane = 0; lane < 4; ++lane) {
                 batch.pair[lane] = batch.a[lane] = batch.b[lane] = -1;

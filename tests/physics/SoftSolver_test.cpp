@@ -198,3 +198,104 @@ TEST(SoftSolver, FreeBoxKeepsItsAngularMomentum) {
     EXPECT_LT(Magnitude(L - L0) / Magnitude(L0), 1e-3f)
         << "L0 (" << L0.x << ", " << L0.y << ", " << L0.z << "), L (" << L.x << ", " << L.y << ", " << L.z << ")";
 }
+
+namespace {
+
+/// Every body's pose and velocities, bit for bit.
+std::vector<float> StateOf(const RigidWorld& world) {
+    std::vector<float> out;
+    for (const RigidbodyVolume& b : world.Bodies())
+        for (float f : {b.position.x, b.position.y, b.position.z, b.orientation.x, b.orientation.y, b.orientation.z,
+                        b.orientation.w, b.velocity.x, b.velocity.y, b.velocity.z, b.angVel.x, b.angVel.y, b.angVel.z})
+            out.push_back(f);
+    return out;
+}
+
+}  // namespace
+
+// Graph colouring (docs/ch15.md, "Graph colouring"), on a pyramid of base 12 (78 cubes): every pair is in exactly one
+// lane of one batch or in the overflow; no moving body is in two pairs of one colour (static ones may be); lanes and
+// batches follow the pair order within a colour, and colours come in increasing order.
+TEST(SoftSolverGraph, ColoursShareNoMovingBody) {
+    RigidWorld world(PeerPyramid(12));
+    world.system.settings.contactSolver = ContactSolver::Soft;
+    for (int i = 0; i < 60; ++i) world.system.Update(kDt);
+    const SoftContactSolver& solver = world.system.SoftSolver();
+    const std::vector<SoftContactSolver::Pair>& pairs = solver.Pairs();
+    ASSERT_GT(pairs.size(), 78u);
+    std::vector<int> seen(pairs.size(), 0);
+    std::vector<std::vector<int>> bodiesOfColour(SoftContactSolver::kColours);
+    int lastColour = 0, lastPair = -1;
+    for (const SoftContactSolver::WideBatch& batch : solver.Batches()) {
+        ASSERT_GE(batch.colour, lastColour);
+        if (batch.colour != lastColour) lastPair = -1;
+        lastColour = batch.colour;
+        for (int lane = 0; lane < 4; ++lane) {
+            const int p = batch.pair[lane];
+            if (p < 0) continue;
+            EXPECT_GT(p, lastPair) << "pair order within a colour";
+            lastPair = p;
+            ++seen[static_cast<std::size_t>(p)];
+            for (int body : {pairs[static_cast<std::size_t>(p)].a, pairs[static_cast<std::size_t>(p)].b})
+                if (world.Body(static_cast<std::size_t>(body)).mass > 0.0f)
+                    bodiesOfColour[static_cast<std::size_t>(batch.colour)].push_back(body);
+        }
+    }
+    for (int p : solver.OverflowPairs()) ++seen[static_cast<std::size_t>(p)];
+    for (std::size_t p = 0; p < pairs.size(); ++p) EXPECT_EQ(seen[p], 1) << "pair " << p;
+    EXPECT_GT(lastColour, 2) << "a pile needs several colours";
+    for (std::vector<int>& bodies : bodiesOfColour) {
+        std::sort(bodies.begin(), bodies.end());
+        EXPECT_TRUE(std::adjacent_find(bodies.begin(), bodies.end()) == bodies.end());
+    }
+    std::printf("pyramid 12: %zu pairs in %zu batches, %zu overflow\n", pairs.size(), solver.BatchCount(),
+                solver.OverflowCount());
+}
+
+// Four cubes apart on the ground, one dropped, one sliding, one spinning: the four pairs share only the static
+// ground, so they are one batch in pair order, which is the order of the one-by-one solve: both give the same
+// bits. (Where colouring reorders pairs, the results differ as any change of Gauss-Seidel order does.)
+TEST(SoftSolverGraph, OneBatchInPairOrderEqualsTheOneByOneSolveBitForBit) {
+    std::vector<BodySpec> cubes = {Cube(vec3(-6.0f, 0.5f, 0.0f)), Cube(vec3(-2.0f, 1.5f, 0.0f)),
+                                   Cube(vec3(2.0f, 0.5f, 0.0f)), Cube(vec3(6.0f, 0.5f, 0.0f))};
+    cubes[2].velocity = vec3(3.0f, 0.0f, 1.0f);
+    cubes[3].angularVelocity = vec3(0.0f, 4.0f, 0.0f);
+    RigidWorld wide(WithGround(Ground(), cubes)), single(WithGround(Ground(), cubes));
+    for (RigidWorld* w : {&wide, &single}) w->system.settings.contactSolver = ContactSolver::Soft;
+    single.system.settings.softGraphColouring = false;
+    for (int i = 0; i < 120; ++i) {
+        wide.system.Update(kDt);
+        single.system.Update(kDt);
+        ASSERT_EQ(StateOf(wide), StateOf(single)) << "step " << i;
+    }
+    EXPECT_EQ(wide.system.SoftSolver().BatchCount(), 1u);
+    EXPECT_EQ(single.system.SoftSolver().BatchCount(), 0u);
+    EXPECT_GT(wide.Body(3).position.x, 2.5f);  // the slider moved
+}
+
+// A plate carrying 36 cubes is in 37 pairs, more than there are colours: the pairs past the last colour are
+// solved one by one after the batches, and the cubes rest on the plate as the others do.
+TEST(SoftSolverGraph, PairsBeyondTheColoursAreSolvedOneByOne) {
+    BodySpec plate = BoxSpec(vec3(0.0f, 0.25f, 0.0f), vec3(4.0f, 0.25f, 4.0f), 20.0f);
+    plate.restitution = 0.0f;
+    plate.velocityRetention = 1.0f;
+    plate.velocityEpsilon = 0.0f;
+    std::vector<BodySpec> bodies = {plate};
+    for (int i = 0; i < 36; ++i) {
+        BodySpec cube = Cube(vec3(-3.0f + 1.2f * static_cast<float>(i % 6), 1.0f, -3.0f + 1.2f * (i / 6)));
+        bodies.push_back(cube);
+    }
+    RigidWorld world(WithGround(Ground(), bodies));
+    world.system.settings.contactSolver = ContactSolver::Soft;
+    for (int i = 0; i < 120; ++i) world.system.Update(kDt);
+    const SoftContactSolver& solver = world.system.SoftSolver();
+    EXPECT_GT(solver.OverflowCount(), 0u);
+    std::size_t inBatches = 0;
+    for (const SoftContactSolver::WideBatch& batch : solver.Batches())
+        for (int lane = 0; lane < 4; ++lane) inBatches += batch.pair[lane] >= 0 ? 1u : 0u;
+    EXPECT_EQ(inBatches + solver.OverflowCount(), solver.Pairs().size());
+    for (std::size_t i = 2; i < world.Bodies().size(); ++i) {
+        EXPECT_NEAR(world.Body(i).position.y, 1.0f, 0.01f) << "cube " << i - 2;
+        EXPECT_LT(Magnitude(world.Body(i).velocity), 0.01f) << "cube " << i - 2;
+    }
+}
