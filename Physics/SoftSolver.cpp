@@ -123,7 +123,6 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
 
     LoadBodies(volumes, ctx, active);
     Collide(volumes, candidates, ctx, carryOver);
-    Prepare(volumes, ctx);
 
     // Softness from the contact stiffness, capped at a quarter of the substep rate (a stiffer spring than the
     // substep can resolve would overshoot).
@@ -131,8 +130,10 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
     const Softness softness = MakeSoftness(hertz, soft.contactDampingRatio, ctx.h);
     // A contact with a static body has only one body to move, so it is made twice as stiff.
     const Softness staticSoftness = MakeSoftness(2.0f * hertz, soft.contactDampingRatio, ctx.h);
+    // With colouring the batches prepare their own rows, four wide; Prepare does the pairs solved one by one.
     colouring = ctx.settings.softGraphColouring;
     if (colouring) BuildBatches(softness, staticSoftness);
+    Prepare(volumes, ctx);
     UpdateSeparations();
     for (int s = 0; s < ctx.substepCount; ++s) {
         IntegrateVelocities(ctx);
@@ -276,22 +277,28 @@ void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
 }
 
 void SoftContactSolver::Prepare(const std::vector<RigidbodyVolume*>& /*volumes*/, const StepContext& /*ctx*/) {
-    for (const Pair& pair : pairs) {
-        const BodySim& A = sim[pair.a];
-        const BodySim& B = sim[pair.b];
-        const BodyState& sA = state[pair.a];
-        const BodyState& sB = state[pair.b];
-        const float invSum = A.invMass + B.invMass;
-        for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
-            Contact& c = contacts[k];
-            MakeRow(c.rA, c.rB, pair.n, invSum, A.invI, B.invI, &c.normal);
-            MakeRow(c.rA, c.rB, pair.t1, invSum, A.invI, B.invI, &c.tangent1);
-            MakeRow(c.rA, c.rB, pair.t2, invSum, A.invI, B.invI, &c.tangent2);
-            // The separation is tracked through the step from the bodies' motion (Solve), not re-collided.
-            c.baseSeparation = c.separation - Dot(c.rB - c.rA, pair.n);
-            c.relativeVelocity = RowSpeed(sA, sB, pair.n, c.normal);
-            c.maxNormalImpulse = 0.0f;
-        }
+    if (colouring) {
+        for (const int i : overflow) PreparePair(pairs[static_cast<std::size_t>(i)]);
+        return;
+    }
+    for (const Pair& pair : pairs) PreparePair(pair);
+}
+
+void SoftContactSolver::PreparePair(const Pair& pair) {
+    const BodySim& A = sim[pair.a];
+    const BodySim& B = sim[pair.b];
+    const BodyState& sA = state[pair.a];
+    const BodyState& sB = state[pair.b];
+    const float invSum = A.invMass + B.invMass;
+    for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
+        Contact& c = contacts[k];
+        MakeRow(c.rA, c.rB, pair.n, invSum, A.invI, B.invI, &c.normal);
+        MakeRow(c.rA, c.rB, pair.t1, invSum, A.invI, B.invI, &c.tangent1);
+        MakeRow(c.rA, c.rB, pair.t2, invSum, A.invI, B.invI, &c.tangent2);
+        // The separation is tracked through the step from the bodies' motion (Solve), not re-collided.
+        c.baseSeparation = c.separation - Dot(c.rB - c.rA, pair.n);
+        c.relativeVelocity = RowSpeed(sA, sB, pair.n, c.normal);
+        c.maxNormalImpulse = 0.0f;
     }
 }
 

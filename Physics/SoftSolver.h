@@ -157,6 +157,7 @@ private:
     void WarmStartPair(const Pair& pair);
     void SolvePair(const Pair& pair, const Softness& softness, float invH, float maxPushout, float slop, bool useBias);
     void UpdatePairSeparations(const Pair& pair);
+    void PreparePair(const Pair& pair);
 
     /// Current separation of every contact from the bodies' motion since the step began. Poses change only in
     /// IntegratePositions, so this runs once before the substeps and once after each integration, and every

@@ -20,13 +20,19 @@ inline Float4 Splat(float v) { return Float4{v, v, v, v}; }
 /// std::max and std::min lane by lane ((a < b) ? b : a and (b < a) ? b : a).
 inline Float4 Max(Float4 a, Float4 b) { return a < b ? b : a; }
 inline Float4 Min(Float4 a, Float4 b) { return b < a ? b : a; }
-inline Float4 Select(decltype(Float4{} < Float4{}) mask, Float4 a, Float4 b) { return mask ? a : b; }
+using Mask4 = decltype(Float4{} < Float4{});
+inline Float4 Select(Mask4 mask, Float4 a, Float4 b) { return mask ? a : b; }
 
 inline Vec4x3 Sub(const Vec4x3& l, const Vec4x3& r) { return {l.x - r.x, l.y - r.y, l.z - r.z}; }
 inline Vec4x3 Add(const Vec4x3& l, const Vec4x3& r) { return {l.x + r.x, l.y + r.y, l.z + r.z}; }
 inline Vec4x3 Scale(const Vec4x3& v, Float4 s) { return {v.x * s, v.y * s, v.z * s}; }
 /// Dot(l, r) lane by lane, in Dot's order (x, then y, then z).
 inline Float4 Dot(const Vec4x3& l, const Vec4x3& r) { return l.x * r.x + l.y * r.y + l.z * r.z; }
+
+/// Cross(l, r) lane by lane, in Cross's order.
+inline Vec4x3 Cross(const Vec4x3& l, const Vec4x3& r) {
+    return {l.y * r.z - l.z * r.y, l.z * r.x - l.x * r.z, l.x * r.y - l.y * r.x};
+}
 
 /// Velocities of the lanes' bodies.
 struct WideBodies {
@@ -53,90 +59,11 @@ inline void SetLane(Vec4x3* v, int lane, const vec3& value) {
 }
 inline vec3 Lane(const Vec4x3& v, int lane) { return vec3(v.x[lane], v.y[lane], v.z[lane]); }
 
-inline void SetRow(WideRow* wide, int lane, const SoftContactSolver::Row& row) {
-    SetLane(&wide->rAxD, lane, row.rAxD);
-    SetLane(&wide->rBxD, lane, row.rBxD);
-    SetLane(&wide->iArAxD, lane, row.iArAxD);
-    SetLane(&wide->iBrBxD, lane, row.iBrBxD);
-    wide->mass[lane] = row.mass;
-    wide->impulse[lane] = row.impulse;
-}
-
 /// v M four wide (row-vector convention, as SoftSolver.cpp's Mul), M given by its rows m[0..2].
 inline Vec4x3 Mul(const Vec4x3& v, const Vec4x3 (&m)[3]) {
     return {v.x * m[0].x + v.y * m[1].x + v.z * m[2].x, v.x * m[0].y + v.y * m[1].y + v.z * m[2].y,
             v.x * m[0].z + v.y * m[1].z + v.z * m[2].z};
 }
-
-}  // namespace
-
-void SoftContactSolver::BuildBatches(const Softness& softness, const Softness& staticSoftness) {
-    // Colour the pairs: the first colour free at both moving bodies. Capacities are kept from step to step.
-    bodyColours.assign(state.size(), 0u);
-    for (std::vector<int>& list : colourPairs) list.clear();
-    overflow.clear();
-    for (std::size_t i = 0; i < pairs.size(); ++i) {
-        const Pair& pair = pairs[i];
-        const bool movesA = sim[pair.a].dynamic, movesB = sim[pair.b].dynamic;
-        const std::uint32_t taken = (movesA ? bodyColours[pair.a] : 0u) | (movesB ? bodyColours[pair.b] : 0u);
-        int colour = 0;
-        while (colour < kColours && (taken >> colour & 1u) != 0u) ++colour;
-        if (colour == kColours || (!movesA && !movesB)) {
-            overflow.push_back(static_cast<int>(i));
-            continue;
-        }
-        if (movesA) bodyColours[pair.a] |= 1u << colour;
-        if (movesB) bodyColours[pair.b] |= 1u << colour;
-        colourPairs[colour].push_back(static_cast<int>(i));
-    }
-    // Four pairs of a colour per batch; a lane without a pair keeps zeros (no bodies, zero masses: no effect).
-    batches.clear();
-    for (int colour = 0; colour < kColours; ++colour) {
-        const std::vector<int>& list = colourPairs[colour];
-        for (std::size_t first = 0; first < list.size(); first += 4) {
-            batches.emplace_back();
-            WideBatch& batch = batches.back();
-            batch = WideBatch{};
-            batch.colour = colour;
-            batch.pointCount = 0;
-            for (int lane = 0; lane < 4; ++lane) {
-                batch.pair[lane] = batch.a[lane] = batch.b[lane] = -1;
-                if (first + static_cast<std::size_t>(lane) >= list.size()) continue;
-                const int index = list[first + static_cast<std::size_t>(lane)];
-                const Pair& pair = pairs[static_cast<std::size_t>(index)];
-                batch.pair[lane] = index;
-                batch.a[lane] = pair.a;
-                batch.b[lane] = pair.b;
-                SetLane(&batch.n, lane, pair.n);
-                SetLane(&batch.t1, lane, pair.t1);
-                SetLane(&batch.t2, lane, pair.t2);
-                batch.invMassA[lane] = sim[pair.a].invMass;
-                batch.invMassB[lane] = sim[pair.b].invMass;
-                batch.friction[lane] = pair.friction;
-                const Softness& soft = pair.touchesStatic ? staticSoftness : softness;
-                batch.biasRate[lane] = soft.biasRate;
-                batch.massScale[lane] = soft.massScale;
-                batch.impulseScale[lane] = soft.impulseScale;
-                batch.pointCount = std::max(batch.pointCount, static_cast<int>(pair.count));
-                for (std::size_t k = 0; k < pair.count; ++k) {
-                    const Contact& c = contacts[pair.first + k];
-                    WidePoint& p = batch.points[k];
-                    SetLane(&p.rA, lane, c.rA);
-                    SetLane(&p.rB, lane, c.rB);
-                    SetRow(&p.normal, lane, c.normal);
-                    SetRow(&p.tangent1, lane, c.tangent1);
-                    SetRow(&p.tangent2, lane, c.tangent2);
-                    p.baseSeparation[lane] = c.baseSeparation;
-                    p.current[lane] = c.current;
-                    p.relativeVelocity[lane] = c.relativeVelocity;
-                    p.maxNormalImpulse[lane] = c.maxNormalImpulse;
-                }
-            }
-        }
-    }
-}
-
-namespace {
 
 /// The lanes' body velocities (zero for an empty lane).
 WideBodies Gather(const std::vector<SoftContactSolver::BodyState>& state, const WideBatch& batch) {
@@ -170,7 +97,104 @@ void Scatter(std::vector<SoftContactSolver::BodyState>& state, const std::vector
     }
 }
 
+/// SoftSolver.cpp's MakeRow four wide: Jacobians along d, their images under the inverse inertias and the
+/// effective mass; a point that does not exist (valid 0) gets mass 0, which makes its rows do nothing.
+void MakeRow(const Vec4x3& rA, const Vec4x3& rB, const Vec4x3& d, Float4 invSum, const Vec4x3 (&iA)[3],
+             const Vec4x3 (&iB)[3], Mask4 valid, WideRow* row) {
+    row->rAxD = Cross(rA, d);
+    row->rBxD = Cross(rB, d);
+    row->iArAxD = Mul(row->rAxD, iA);
+    row->iBrBxD = Mul(row->rBxD, iB);
+    const Float4 k = invSum + Dot(row->rAxD, row->iArAxD) + Dot(row->rBxD, row->iBrBxD);
+    const Float4 zero = Splat(0.0f);
+    row->mass = Select(valid & (k > zero), Splat(1.0f) / k, zero);
+}
+
 }  // namespace
+
+void SoftContactSolver::BuildBatches(const Softness& softness, const Softness& staticSoftness) {
+    // Colour the pairs: the first colour free at both moving bodies. Capacities are kept from step to step.
+    bodyColours.assign(state.size(), 0u);
+    for (std::vector<int>& list : colourPairs) list.clear();
+    overflow.clear();
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+        const Pair& pair = pairs[i];
+        const bool movesA = sim[pair.a].dynamic, movesB = sim[pair.b].dynamic;
+        const std::uint32_t taken = (movesA ? bodyColours[pair.a] : 0u) | (movesB ? bodyColours[pair.b] : 0u);
+        int colour = 0;
+        while (colour < kColours && (taken >> colour & 1u) != 0u) ++colour;
+        if (colour == kColours || (!movesA && !movesB)) {
+            overflow.push_back(static_cast<int>(i));
+            continue;
+        }
+        if (movesA) bodyColours[pair.a] |= 1u << colour;
+        if (movesB) bodyColours[pair.b] |= 1u << colour;
+        colourPairs[colour].push_back(static_cast<int>(i));
+    }
+    // Four pairs of a colour per batch; a lane without a pair keeps zeros (no bodies, zero masses: no effect).
+    batches.clear();
+    for (int colour = 0; colour < kColours; ++colour) {
+        const std::vector<int>& list = colourPairs[colour];
+        for (std::size_t first = 0; first < list.size(); first += 4) {
+            batches.emplace_back();
+            WideBatch& batch = batches.back();
+            batch = WideBatch{};
+            batch.colour = colour;
+            batch.pointCount = 0;
+            Vec4x3 IA[3] = {}, IB[3] = {};  // the lanes' world inverse inertias, by rows
+            Mask4 valid[4] = {};            // point k of lane l exists
+            for (int lane = 0; lane < 4; ++lane) {
+                batch.pair[lane] = batch.a[lane] = batch.b[lane] = -1;
+                if (first + static_cast<std::size_t>(lane) >= list.size()) continue;
+                const int index = list[first + static_cast<std::size_t>(lane)];
+                const Pair& pair = pairs[static_cast<std::size_t>(index)];
+                batch.pair[lane] = index;
+                batch.a[lane] = pair.a;
+                batch.b[lane] = pair.b;
+                SetLane(&batch.n, lane, pair.n);
+                SetLane(&batch.t1, lane, pair.t1);
+                SetLane(&batch.t2, lane, pair.t2);
+                batch.invMassA[lane] = sim[pair.a].invMass;
+                batch.invMassB[lane] = sim[pair.b].invMass;
+                batch.friction[lane] = pair.friction;
+                const Softness& soft = pair.touchesStatic ? staticSoftness : softness;
+                batch.biasRate[lane] = soft.biasRate;
+                batch.massScale[lane] = soft.massScale;
+                batch.impulseScale[lane] = soft.impulseScale;
+                batch.pointCount = std::max(batch.pointCount, static_cast<int>(pair.count));
+                for (std::size_t k = 0; k < pair.count; ++k) {
+                    const Contact& c = contacts[pair.first + k];
+                    WidePoint& p = batch.points[k];
+                    SetLane(&p.rA, lane, c.rA);
+                    SetLane(&p.rB, lane, c.rB);
+                    p.normal.impulse[lane] = c.normal.impulse;  // the warm start Collide matched
+                    p.tangent1.impulse[lane] = c.tangent1.impulse;
+                    p.tangent2.impulse[lane] = c.tangent2.impulse;
+                    p.baseSeparation[lane] = c.separation;  // minus n . (rB - rA) below
+                    valid[k][lane] = -1;
+                }
+                const mat3& iA = sim[pair.a].invI;
+                const mat3& iB = sim[pair.b].invI;
+                for (int r = 0; r < 3; ++r) {
+                    SetLane(&IA[r], lane, vec3(iA[r][0], iA[r][1], iA[r][2]));
+                    SetLane(&IB[r], lane, vec3(iB[r][0], iB[r][1], iB[r][2]));
+                }
+            }
+            // PreparePair four wide: rows, base separation, normal speed before solving.
+            const Float4 invSum = batch.invMassA + batch.invMassB;
+            const WideBodies bodies = Gather(state, batch);
+            for (int k = 0; k < batch.pointCount; ++k) {
+                WidePoint& p = batch.points[k];
+                MakeRow(p.rA, p.rB, batch.n, invSum, IA, IB, valid[k], &p.normal);
+                MakeRow(p.rA, p.rB, batch.t1, invSum, IA, IB, valid[k], &p.tangent1);
+                MakeRow(p.rA, p.rB, batch.t2, invSum, IA, IB, valid[k], &p.tangent2);
+                p.baseSeparation = p.baseSeparation - Dot(Sub(p.rB, p.rA), batch.n);
+                p.relativeVelocity = RowSpeed(bodies, batch.n, p.normal);
+                p.maxNormalImpulse = Splat(0.0f);
+            }
+        }
+    }
+}
 
 void SoftContactSolver::WideUpdateSeparations() {
     // UpdatePairSeparations four wide: s = s_base + n . ((dpB - dpA) + rB dRB - rA dRA), rows of dR as vectors.
@@ -277,6 +301,13 @@ void SoftContactSolver::StoreBatchImpulses() {
                 c.current = p.current[lane];
                 c.relativeVelocity = p.relativeVelocity[lane];
                 c.maxNormalImpulse = p.maxNormalImpulse[lane];
+                if (pair.restitution != 0.0f) {  // ApplyRestitution solves the normal row once more
+                    c.normal.rAxD = Lane(p.normal.rAxD, lane);
+                    c.normal.rBxD = Lane(p.normal.rBxD, lane);
+                    c.normal.iArAxD = Lane(p.normal.iArAxD, lane);
+                    c.normal.iBrBxD = Lane(p.normal.iBrBxD, lane);
+                    c.normal.mass = p.normal.mass[lane];
+                }
             }
         }
     }
