@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "Physics/RigidbodyVolume.h"
 
@@ -28,53 +29,196 @@ void VolumeBounds(const RigidbodyVolume& body, vec3* outMin, vec3* outMax) {
     *outMax = body.position;
 }
 
+namespace {
+
+/// Cell side over the median body's largest AABB side: most bodies then cover one or two cells per axis.
+constexpr float kCellScale = 1.0f;
+/// Cells per axis a body may cover and still enter the grid; a wider one is compared with every body.
+constexpr float kMaxCellSpan = 4.0f;
+/// Cell coordinates are clamped to [-kCellLimit, kCellLimit - 1] (21 bits each in a cell key), so far bodies
+/// share border cells instead of overflowing.
+constexpr int kCellBits = 21;
+constexpr float kCellLimit = static_cast<float>(1 << (kCellBits - 1));
+
+/// Resizes *v to `size`, growing its capacity geometrically so a count that creeps up step by step does not
+/// reallocate every step.
+template <typename T>
+void GrowTo(std::vector<T>* v, std::size_t size) {
+    if (v->capacity() < size) v->reserve(std::max(size, 2 * v->capacity()));
+    v->resize(size);
+}
+
+/// Cell coordinate of a finite x, offset to be non-negative.
+std::uint64_t CellCoordinate(float x, float inverseCell) {
+    float c = std::floor(x * inverseCell);
+    c = c < -kCellLimit ? -kCellLimit : c;
+    c = c > kCellLimit - 1.0f ? kCellLimit - 1.0f : c;
+    return static_cast<std::uint64_t>(c + kCellLimit);
+}
+
+std::uint64_t CellKey(std::uint64_t x, std::uint64_t y, std::uint64_t z) {
+    return x << (2 * kCellBits) | y << kCellBits | z;
+}
+
+/// The AABB test of an all-pairs loop (separated on an axis when one box ends before the other begins), without
+/// branches.
+template <typename B>
+bool Overlap(const B& a, const B& b) {
+    return (static_cast<int>(!(a.max.x < b.min.x)) & static_cast<int>(!(b.max.x < a.min.x)) &
+            static_cast<int>(!(a.max.y < b.min.y)) & static_cast<int>(!(b.max.y < a.min.y)) &
+            static_cast<int>(!(a.max.z < b.min.z)) & static_cast<int>(!(b.max.z < a.min.z))) != 0;
+}
+
+}  // namespace
+
 void Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::vector<std::pair<int, int>>* pairs,
                            const unsigned char* active, float margin, float sweepTime) {
     pairs->clear();
+    raw.clear();
     const int n = static_cast<int>(volumes.size());
-
-    // Keep the previous order when the body set is unchanged; otherwise start from insertion order.
-    if (static_cast<int>(entries.size()) != n) {
-        entries.resize(n);
-        for (int i = 0; i < n; ++i) entries[i].index = i;
-    }
-    for (Entry& e : entries) {
-        const RigidbodyVolume& body = *volumes[e.index];
-        VolumeBounds(body, &e.min, &e.max);
-        if (margin > 0.0f || sweepTime > 0.0f) {
-            const float grow = margin + std::sqrt(MagnitudeSq(body.velocity)) * sweepTime;
-            e.min -= vec3(grow, grow, grow);
-            e.max += vec3(grow, grow, grow);
-        }
-        e.dynamic = active != nullptr ? active[e.index] != 0 : body.mass > 0.0f;
-    }
-    // Insertion sort on min.x (ties by index, so the order is a pure function of the bounds): O(n) when the
-    // bodies barely moved since the last step.
-    for (int i = 1; i < n; ++i) {
-        const Entry key = entries[i];
-        int j = i - 1;
-        while (j >= 0 &&
-               (entries[j].min.x > key.min.x || (entries[j].min.x == key.min.x && entries[j].index > key.index))) {
-            entries[j + 1] = entries[j];
-            --j;
-        }
-        entries[j + 1] = key;
-    }
-    // Sweep: only bodies whose x intervals overlap are compared on y and z. A body that does not move is paired
-    // only with moving ones, so its sweep jumps from one moving body to the next (nextMoving): static and sleeping
-    // bodies cost O(n) in all, not a pass over their x neighbours.
-    nextMoving.resize(static_cast<std::size_t>(n) + 1);
-    nextMoving[static_cast<std::size_t>(n)] = n;
-    for (int k = n - 1; k >= 0; --k)
-        nextMoving[static_cast<std::size_t>(k)] = entries[k].dynamic ? k : nextMoving[static_cast<std::size_t>(k) + 1];
+    bodies.resize(static_cast<std::size_t>(n));
+    cellRanges.resize(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
-        const Entry& a = entries[i];
-        auto step = [&](int k) { return a.dynamic ? k + 1 : nextMoving[static_cast<std::size_t>(k) + 1]; };
-        for (int k = step(i); k < n && entries[k].min.x <= a.max.x; k = step(k)) {
-            const Entry& b = entries[k];
-            if (a.max.y < b.min.y || b.max.y < a.min.y || a.max.z < b.min.z || b.max.z < a.min.z) continue;
-            pairs->emplace_back(std::min(a.index, b.index), std::max(a.index, b.index));
+        const RigidbodyVolume& volume = *volumes[static_cast<std::size_t>(i)];
+        Body& body = bodies[static_cast<std::size_t>(i)];
+        VolumeBounds(volume, &body.min, &body.max);
+        if (margin > 0.0f || sweepTime > 0.0f) {
+            const float grow = margin + std::sqrt(MagnitudeSq(volume.velocity)) * sweepTime;
+            body.min -= vec3(grow, grow, grow);
+            body.max += vec3(grow, grow, grow);
+        }
+        body.moving = active != nullptr ? active[i] != 0 : volume.mass > 0.0f;
+    }
+    BuildGrid(n);
+    PairsInCells(&raw);
+    PairsWithWideBodies(n, &raw);
+
+    // Increasing (i, j) order: a counting sort on i, then each i's few partners sorted by j.
+    firstCount.assign(static_cast<std::size_t>(n) + 1, 0);
+    for (const std::pair<int, int>& p : raw) ++firstCount[static_cast<std::size_t>(p.first) + 1];
+    for (int i = 0; i < n; ++i) firstCount[static_cast<std::size_t>(i) + 1] += firstCount[static_cast<std::size_t>(i)];
+    GrowTo(pairs, raw.size());
+    for (const std::pair<int, int>& p : raw)
+        (*pairs)[static_cast<std::size_t>(firstCount[static_cast<std::size_t>(p.first)]++)] = p;
+    // firstCount[i] is now the end of i's run.
+    int runBegin = 0;
+    for (int i = 0; i < n; ++i) {
+        const int runEnd = firstCount[static_cast<std::size_t>(i)];
+        if (runEnd - runBegin > 1) std::sort(pairs->begin() + runBegin, pairs->begin() + runEnd);
+        runBegin = runEnd;
+    }
+}
+
+void Broadphase::BuildGrid(int n) {
+    // Cell side: kCellScale times the median largest AABB side of the bodies with finite bounds (1 m if none
+    // has a positive one), a pure function of the bounds.
+    extents.clear();
+    for (const Body& body : bodies) {
+        const float side =
+            std::fmax(body.max.x - body.min.x, std::fmax(body.max.y - body.min.y, body.max.z - body.min.z));
+        if (std::isfinite(side)) extents.push_back(side);
+    }
+    float cell = 0.0f;
+    if (!extents.empty()) {
+        const auto middle = extents.begin() + static_cast<std::ptrdiff_t>(extents.size() / 2);
+        std::nth_element(extents.begin(), middle, extents.end());
+        cell = kCellScale * *middle;
+    }
+    if (!(cell > 0.0f) || !std::isfinite(cell)) cell = 1.0f;
+    const float inverseCell = 1.0f / cell;
+
+    // Cell ranges. Floor and clamp are monotonic, so two AABBs that overlap on an axis get cell ranges that
+    // overlap there too. A body whose range is wider than kMaxCellSpan cells on an axis, inverted (min > max, from
+    // a negative growth) or not finite (the test below fails for NaN and infinity) is compared with every body.
+    wide.clear();
+    std::size_t entryCount = 0;
+    for (int i = 0; i < n; ++i) {
+        Body& body = bodies[static_cast<std::size_t>(i)];
+        body.wide = false;
+        for (int k = 0; k < 3; ++k) {
+            const float first = std::floor(body.min[k] * inverseCell), last = std::floor(body.max[k] * inverseCell);
+            if (!(last - first >= 0.0f && last - first < kMaxCellSpan)) body.wide = true;
+        }
+        if (body.wide) {
+            wide.push_back(i);
+            continue;
+        }
+        CellRange& range = cellRanges[static_cast<std::size_t>(i)];
+        std::size_t cells = 1;
+        for (int k = 0; k < 3; ++k) {
+            range.min[k] = CellCoordinate(body.min[k], inverseCell);
+            range.max[k] = CellCoordinate(body.max[k], inverseCell);
+            cells *= static_cast<std::size_t>(range.max[k] - range.min[k] + 1);
+        }
+        entryCount += cells;
+    }
+
+    // Counting sort of the (cell, body) entries by a hash of the cell, filled backwards so that each bucket lists
+    // its bodies in increasing index order. An entry's flags say on which axes the body's range starts at this
+    // cell (bits 0-2) and whether the body moves (bit 3).
+    int bucketBits = 4;
+    while ((std::size_t{1} << bucketBits) < entryCount) ++bucketBits;
+    const std::size_t bucketCount = std::size_t{1} << bucketBits;
+    auto bucketOf = [bucketBits](std::uint64_t key) {
+        return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> (64 - bucketBits));
+    };
+    bucketStart.assign(bucketCount + 1, 0);
+    auto forEachCell = [](const CellRange& range, auto&& visit) {
+        for (std::uint64_t z = range.max[2] + 1; z-- > range.min[2];)
+            for (std::uint64_t y = range.max[1] + 1; y-- > range.min[1];)
+                for (std::uint64_t x = range.max[0] + 1; x-- > range.min[0];) {
+                    const unsigned starts = static_cast<unsigned>(x == range.min[0]) |
+                                            static_cast<unsigned>(y == range.min[1]) << 1 |
+                                            static_cast<unsigned>(z == range.min[2]) << 2;
+                    visit(CellKey(x, y, z), starts);
+                }
+    };
+    for (int i = 0; i < n; ++i)
+        if (!bodies[static_cast<std::size_t>(i)].wide)
+            forEachCell(cellRanges[static_cast<std::size_t>(i)],
+                        [&](std::uint64_t key, unsigned) { ++bucketStart[bucketOf(key)]; });
+    for (std::size_t b = 1; b <= bucketCount; ++b) bucketStart[b] += bucketStart[b - 1];
+    if (cellEntries.size() < entryCount) GrowTo(&cellEntries, entryCount);
+    for (int i = n - 1; i >= 0; --i) {
+        const Body& body = bodies[static_cast<std::size_t>(i)];
+        if (body.wide) continue;
+        const unsigned moving = body.moving ? 8u : 0u;
+        forEachCell(cellRanges[static_cast<std::size_t>(i)], [&](std::uint64_t key, unsigned starts) {
+            CellEntry& entry = cellEntries[static_cast<std::size_t>(--bucketStart[bucketOf(key)])];
+            entry.key = key;
+            entry.body = i;
+            entry.flags = starts | moving;
+        });
+    }
+    // bucketStart[b] is now the first entry of bucket b, bucketStart[bucketCount] the entry count.
+}
+
+void Broadphase::PairsInCells(std::vector<std::pair<int, int>>* out) const {
+    // Two bodies sharing several cells are reported once, from the low corner of their common range: the cell
+    // where, on every axis, one of the two ranges starts. With the moving bit, the two entries' flags together
+    // must have all four bits set.
+    const std::size_t bucketCount = bucketStart.size() - 1;
+    for (std::size_t b = 0; b < bucketCount; ++b) {
+        const int end = bucketStart[b + 1];
+        for (int p = bucketStart[b]; p < end; ++p) {
+            const CellEntry& ea = cellEntries[static_cast<std::size_t>(p)];
+            const Body& a = bodies[static_cast<std::size_t>(ea.body)];
+            for (int q = p + 1; q < end; ++q) {
+                const CellEntry& eb = cellEntries[static_cast<std::size_t>(q)];
+                if ((ea.flags | eb.flags) != 15u || ea.key != eb.key) continue;
+                if (Overlap(a, bodies[static_cast<std::size_t>(eb.body)])) out->emplace_back(ea.body, eb.body);
+            }
         }
     }
-    std::sort(pairs->begin(), pairs->end());
+}
+
+void Broadphase::PairsWithWideBodies(int n, std::vector<std::pair<int, int>>* out) const {
+    for (const int w : wide) {
+        const Body& a = bodies[static_cast<std::size_t>(w)];
+        for (int j = 0; j < n; ++j) {
+            const Body& b = bodies[static_cast<std::size_t>(j)];
+            if (j == w || (b.wide && j < w) || (!a.moving && !b.moving)) continue;  // a wide pair once, from its first
+            if (Overlap(a, b)) out->emplace_back(std::min(w, j), std::max(w, j));
+        }
+    }
 }

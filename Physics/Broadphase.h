@@ -1,8 +1,11 @@
 #pragma once
-// Sweep-and-prune on the world x axis (Baraff's sort-and-sweep) for scenes with many volumes. The sort order is
-// kept between steps, so an insertion sort of a nearly sorted list costs O(n). Small scenes never use it:
-// PhysicsSystem tests all pairs below WorldSettings::broadphaseMinVolumes.
+// Uniform-grid broadphase for scenes with many volumes: every grown AABB is entered into the cubic cells it covers
+// (a hashed 3-D grid, rebuilt each call by a counting sort), and only bodies sharing a cell are compared, so a pile
+// spread over x and z costs about O(n) instead of a sweep's O(n * bodies in the same x band). A body that covers
+// too many cells (a ground plate, a non-finite AABB) is kept out of the grid and compared with every body.
+// Small scenes never use it: PhysicsSystem tests all pairs below WorldSettings::broadphaseMinVolumes.
 
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -20,16 +23,36 @@ public:
     /// has active[i] != 0. In increasing (i, j) order so the solver sees the same order as an all-pairs loop.
     /// Indices are into `volumes`. Every AABB is first grown on each side by `margin` (m) plus the body's speed
     /// times `sweepTime` (s): the soft solver's speculative margin and the step's travel (both 0 test the bodies'
-    /// own AABBs). Allocation-free once the capacities have grown.
+    /// own AABBs). The result depends only on the arguments (no state carries over between calls). Allocation-free
+    /// once the capacities have grown.
     void FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::vector<std::pair<int, int>>* pairs,
                    const unsigned char* active = nullptr, float margin = 0.0f, float sweepTime = 0.0f);
 
 private:
-    struct Entry {
+    struct Body {
         vec3 min, max;
-        int index = 0;
-        bool dynamic = false;
+        bool moving = false;  // dynamic, or active in the mask
+        bool wide = false;    // out of the grid: compared with every body
     };
-    std::vector<Entry> entries;   // sorted by min.x; order carried over between calls
-    std::vector<int> nextMoving;  // per sorted position k: the first position >= k whose body moves (n if none)
+    struct CellRange {
+        std::uint64_t min[3] = {0, 0, 0};  // first cell covered on each axis, offset to be non-negative
+        std::uint64_t max[3] = {0, 0, 0};  // last cell covered on each axis
+    };
+    struct CellEntry {
+        std::uint64_t key = 0;  // the cell's three coordinates, packed
+        int body = 0;
+        unsigned flags = 0;  // bit k (0-2): the body's range starts at this cell on axis k; bit 3: the body moves
+    };
+    void BuildGrid(int n);
+    void PairsInCells(std::vector<std::pair<int, int>>* pairs) const;
+    void PairsWithWideBodies(int n, std::vector<std::pair<int, int>>* pairs) const;
+
+    std::vector<Body> bodies;              // by volume index
+    std::vector<CellRange> cellRanges;     // by volume index (grid bodies only)
+    std::vector<float> extents;            // scratch: each body's largest AABB side, for the cell size
+    std::vector<int> wide;                 // indices of the bodies kept out of the grid, increasing
+    std::vector<int> bucketStart;          // per hash bucket: first slot in cellEntries (counting sort), + 1 end
+    std::vector<CellEntry> cellEntries;    // (cell, body) for every covered cell, grouped by hash bucket
+    std::vector<std::pair<int, int>> raw;  // pairs as found, before ordering
+    std::vector<int> firstCount;           // scratch: pairs per first index, for the counting sort
 };

@@ -72,7 +72,7 @@ struct WorldSettings {
     int maxVolumeSubsteps = 64;
     /// Fraction (of the half-extent sum) one substep may travel. Not in the book.
     float substepTravelFraction = 0.75f;
-    /// Volume count from which pairs are found by sweep-and-prune (Broadphase.h); all pairs below. Not in the book.
+    /// Volume count from which pairs are found by the grid broadphase (Broadphase.h); all pairs below. Not in the book.
     std::size_t broadphaseMinVolumes = 32;
     /// ContactSolver::Soft solves its pairs in batches of four by constraint-graph colour (pairs of one colour share
     /// no moving body; docs/ch15.md, "Graph colouring"); false solves them one by one in pair order. The same

@@ -84,44 +84,38 @@ int ClipSide(const ClipVertex* in, int n, int k, int sideAxis, float sideSign, f
         const bool prevIn = dPrev <= 0.0f;
         const bool curIn = dCur <= 0.0f;
         if (prevIn != curIn) {
-            const float t = dPrev / (dPrev - dCur);
-            ClipVertex x;
-            for (int c = 0; c < 3; ++c) x.p[c] = prev->p[c] + (cur->p[c] - prev->p[c]) * t;
-            x.p[k] = sideSign * extent;  // exactly on the side plane
-            if (cur->inEdge & kSideTag) {
-                // Along another side plane into this one: a corner of the reference face, on the incident face.
-                float signs[3];
-                signs[face.r] = face.sign;
-                signs[sideAxis] = sideSign;
-                const int other = static_cast<int>((cur->inEdge >> 1) & 3u);
-                signs[other] = (cur->inEdge & 1u) ? -1.0f : 1.0f;
-                x.refFeature = VertexFeature(signs);
-                x.incFeature = face.incFace;
-            } else {
-                // An incident edge through a side plane: that edge against the reference face's rim edge.
-                const int w = 3 - face.r - sideAxis;  // the rim edge runs along the third axis
-                const float sw1 = ((w + 1) % 3 == face.r) ? face.sign : sideSign;
-                const float sw2 = ((w + 2) % 3 == face.r) ? face.sign : sideSign;
-                x.refFeature = EdgeFeature(w, sw1, sw2);
-                x.incFeature = cur->inEdge;
-            }
-            if (prevIn) {
-                // Leaving: the crossing ends the edge that came from inside. Skipped if prev lies on the plane.
-                if (dPrev < 0.0f) {
-                    x.inEdge = cur->inEdge;
-                    out[m++] = x;
-                }
-            } else {
-                // Entering: the polygon runs along the side plane up to the crossing, then on along the edge.
-                if (dCur < 0.0f) {
-                    x.inEdge = sideTag;
-                    out[m++] = x;
-                    out[m++] = *cur;
+            // Leaving: the crossing ends the edge that came from inside (skipped if prev lies on the plane).
+            // Entering: the polygon runs along the side plane up to the crossing (none if cur lies on the plane),
+            // then on along the edge. The crossing is written in place: a vertex built on the stack and then
+            // copied is read back in wider pieces than it was written, which stalls.
+            if (prevIn ? dPrev < 0.0f : dCur < 0.0f) {
+                ClipVertex& x = out[m++];
+                const float t = dPrev / (dPrev - dCur);
+                for (int c = 0; c < 3; ++c) x.p[c] = prev->p[c] + (cur->p[c] - prev->p[c]) * t;
+                x.p[k] = sideSign * extent;  // exactly on the side plane
+                if (cur->inEdge & kSideTag) {
+                    // Along another side plane into this one: a corner of the reference face, on the incident face.
+                    float signs[3];
+                    signs[face.r] = face.sign;
+                    signs[sideAxis] = sideSign;
+                    const int other = static_cast<int>((cur->inEdge >> 1) & 3u);
+                    signs[other] = (cur->inEdge & 1u) ? -1.0f : 1.0f;
+                    x.refFeature = VertexFeature(signs);
+                    x.incFeature = face.incFace;
                 } else {
-                    out[m] = *cur;
-                    out[m].inEdge = sideTag;
-                    ++m;
+                    // An incident edge through a side plane: that edge against the reference face's rim edge.
+                    const int w = 3 - face.r - sideAxis;  // the rim edge runs along the third axis
+                    const float sw1 = ((w + 1) % 3 == face.r) ? face.sign : sideSign;
+                    const float sw2 = ((w + 2) % 3 == face.r) ? face.sign : sideSign;
+                    x.refFeature = EdgeFeature(w, sw1, sw2);
+                    x.incFeature = cur->inEdge;
                 }
+                x.inEdge = prevIn ? cur->inEdge : sideTag;
+                if (!prevIn) out[m++] = *cur;
+            } else if (!prevIn) {
+                out[m] = *cur;
+                out[m].inEdge = sideTag;
+                ++m;
             }
         } else if (curIn) {
             out[m++] = *cur;
@@ -267,19 +261,28 @@ int CollideFaces(const Box& ref, const Box& inc, int r, float sign, bool refIsB,
     const vec3 origin = ref.c + n * ref.e[r];
     int m = 0;
     for (int i = 0; i < count; ++i)
-        if (bufA[i].p[2] <= margin) bufA[m++] = bufA[i];
-    // Few enough points go straight out; more go through a scratch array to the reduction.
-    ManifoldPoint scratch[kMaxPolygon];
-    ManifoldPoint* kept = m <= kMaxManifoldPoints ? out->points : scratch;
-    for (int i = 0; i < m; ++i) {
-        const ClipVertex& c = bufA[i];
-        ManifoldPoint& p = kept[i];
-        // Midway between the reference plane (z = 0) and the incident point.
-        p.point = origin + ref.axis[u] * c.p[0] + ref.axis[v] * c.p[1] + n * (0.5f * c.p[2]);
-        p.separation = c.p[2];
-        p.id = refIsB ? (c.incFeature << 8 | c.refFeature) : (c.refFeature << 8 | c.incFeature);
+        if (bufA[i].p[2] <= margin) {
+            if (m != i) bufA[m] = bufA[i];
+            ++m;
+        }
+    // Few enough points go straight out; more go through a scratch array to the reduction (declared only on that
+    // path: its points are zeroed on construction).
+    auto emit = [&](ManifoldPoint* kept) {
+        for (int i = 0; i < m; ++i) {
+            const ClipVertex& c = bufA[i];
+            ManifoldPoint& p = kept[i];
+            // Midway between the reference plane (z = 0) and the incident point.
+            p.point = origin + ref.axis[u] * c.p[0] + ref.axis[v] * c.p[1] + n * (0.5f * c.p[2]);
+            p.separation = c.p[2];
+            p.id = refIsB ? (c.incFeature << 8 | c.refFeature) : (c.refFeature << 8 | c.incFeature);
+        }
+    };
+    if (m <= kMaxManifoldPoints) {
+        emit(out->points);
+        return m;
     }
-    if (m <= kMaxManifoldPoints) return m;
+    ManifoldPoint kept[kMaxPolygon];
+    emit(kept);
     // Near ties in the reduction go to the first candidate: order by id (its two feature bytes as a set, the same
     // whichever box is A), not by clip order, which depends on which box gave the reference face.
     for (int i = 1; i < m; ++i) {
