@@ -38,15 +38,21 @@ void MakeRow(const vec3& rA, const vec3& rB, const vec3& d, float invSum, const 
     row->mass = k > 0.0f ? 1.0f / k : 0.0f;
 }
 
+/// A body's velocities held in locals while one pair is solved.
+struct BodyVelocity {
+    vec3 v, w;
+};
+
 /// Relative speed of B's contact point against A's along the row's direction d.
-inline float RowSpeed(const SoftContactSolver::BodyState& A, const SoftContactSolver::BodyState& B, const vec3& d,
-                      const SoftContactSolver::Row& row) {
+template <class Body>
+inline float RowSpeed(const Body& A, const Body& B, const vec3& d, const SoftContactSolver::Row& row) {
     return Dot(B.v - A.v, d) + Dot(B.w, row.rBxD) - Dot(A.w, row.rAxD);
 }
 
 /// Applies an impulse of magnitude j along the row (to B, and its opposite to A).
-inline void ApplyRow(SoftContactSolver::BodyState& A, SoftContactSolver::BodyState& B, float invA, float invB,
-                     const vec3& d, const SoftContactSolver::Row& row, float j) {
+template <class Body>
+inline void ApplyRow(Body& A, Body& B, float invA, float invB, const vec3& d, const SoftContactSolver::Row& row,
+                     float j) {
     A.v -= d * (invA * j);
     B.v += d * (invB * j);
     A.w -= row.iArAxD * j;
@@ -347,15 +353,22 @@ void SoftContactSolver::UpdateSeparations() {
 
 void SoftContactSolver::WarmStart() {
     for (const Pair& pair : pairs) {
+        // The pair's two bodies are worked on in locals (no other pair touches them meanwhile): the contacts'
+        // stores cannot alias them, so they stay in registers.
         BodyState& A = state[pair.a];
         BodyState& B = state[pair.b];
+        BodyVelocity vA{A.v, A.w}, vB{B.v, B.w};
         const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
         for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
             const Contact& c = contacts[k];
-            ApplyRow(A, B, invA, invB, pair.n, c.normal, c.normal.impulse);
-            ApplyRow(A, B, invA, invB, pair.t1, c.tangent1, c.tangent1.impulse);
-            ApplyRow(A, B, invA, invB, pair.t2, c.tangent2, c.tangent2.impulse);
+            ApplyRow(vA, vB, invA, invB, pair.n, c.normal, c.normal.impulse);
+            ApplyRow(vA, vB, invA, invB, pair.t1, c.tangent1, c.tangent1.impulse);
+            ApplyRow(vA, vB, invA, invB, pair.t2, c.tangent2, c.tangent2.impulse);
         }
+        A.v = vA.v;
+        A.w = vA.w;
+        B.v = vB.v;
+        B.w = vB.w;
     }
 }
 
@@ -363,8 +376,9 @@ void SoftContactSolver::Solve(float invH, const Softness& dynamicSoftness, const
                               float maxPushout, float slop, bool useBias) {
     for (const Pair& pair : pairs) {
         const Softness& softness = pair.touchesStatic ? staticSoftness : dynamicSoftness;
-        BodyState& A = state[pair.a];
-        BodyState& B = state[pair.b];
+        BodyState& bodyA = state[pair.a];
+        BodyState& bodyB = state[pair.b];
+        BodyVelocity A{bodyA.v, bodyA.w}, B{bodyB.v, bodyB.w};
         const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
         for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
             Contact& c = contacts[k];
@@ -407,6 +421,10 @@ void SoftContactSolver::Solve(float invH, const Softness& dynamicSoftness, const
             ApplyRow(A, B, invA, invB, pair.t1, c.tangent1, d1);
             ApplyRow(A, B, invA, invB, pair.t2, c.tangent2, d2);
         }
+        bodyA.v = A.v;
+        bodyA.w = A.w;
+        bodyB.v = B.v;
+        bodyB.w = B.w;
     }
 }
 
