@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "Physics/Geometry/ContactManifold.h"
 #include "Physics/RigidbodyVolume.h"
@@ -19,6 +22,104 @@ inline vec3 Mul(const vec3& v, const mat3& m) {
             v.x * m[0][2] + v.y * m[1][2] + v.z * m[2][2]};
 }
 
+/// Four float lanes for the solver's hot loops (SoftSolver.h: every hot vec3 is followed by a fourth float). Only
+/// lane-wise operations and the three-term dot (x + y) + z, the scalar Dot's order, so lanes 0-2 carry the same
+/// bits as vec3 arithmetic.
+#if defined(__SSE2__)
+struct V4 {
+    __m128 m;
+};
+inline V4 Load(const vec3& v) { return {_mm_load_ps(&v.x)}; }
+inline V4 Load(const float* f) { return {_mm_load_ps(f)}; }
+inline void Store(vec3& v, V4 a) { _mm_store_ps(&v.x, a.m); }
+inline V4 Splat(float f) { return {_mm_set1_ps(f)}; }
+/// (v.x, v.y, v.z, 0).
+inline V4 Make(const vec3& v) { return {_mm_set_ps(0.0f, v.z, v.y, v.x)}; }
+/// Lane i of a in every lane.
+template <int i>
+inline V4 Broadcast(V4 a) {
+    return {_mm_shuffle_ps(a.m, a.m, _MM_SHUFFLE(i, i, i, i))};
+}
+/// Lane-wise Cross: (l.y r.z - l.z r.y, l.z r.x - l.x r.z, l.x r.y - l.y r.x).
+inline V4 Cross(V4 l, V4 r) {
+    const __m128 lYZX = _mm_shuffle_ps(l.m, l.m, _MM_SHUFFLE(3, 0, 2, 1));
+    const __m128 lZXY = _mm_shuffle_ps(l.m, l.m, _MM_SHUFFLE(3, 1, 0, 2));
+    const __m128 rYZX = _mm_shuffle_ps(r.m, r.m, _MM_SHUFFLE(3, 0, 2, 1));
+    const __m128 rZXY = _mm_shuffle_ps(r.m, r.m, _MM_SHUFFLE(3, 1, 0, 2));
+    return {_mm_sub_ps(_mm_mul_ps(lYZX, rZXY), _mm_mul_ps(lZXY, rYZX))};
+}
+inline V4 operator+(V4 a, V4 b) { return {_mm_add_ps(a.m, b.m)}; }
+inline V4 operator-(V4 a, V4 b) { return {_mm_sub_ps(a.m, b.m)}; }
+inline V4 operator*(V4 a, V4 b) { return {_mm_mul_ps(a.m, b.m)}; }
+/// Lane i of the result is Dot(a_i, b_i) for i < 3, summed as (x + y) + z.
+inline V4 Dot3(V4 a0, V4 b0, V4 a1, V4 b1, V4 a2, V4 b2) {
+    __m128 p0 = _mm_mul_ps(a0.m, b0.m), p1 = _mm_mul_ps(a1.m, b1.m), p2 = _mm_mul_ps(a2.m, b2.m);
+    __m128 p3 = _mm_setzero_ps();
+    _MM_TRANSPOSE4_PS(p0, p1, p2, p3);
+    return {_mm_add_ps(_mm_add_ps(p0, p1), p2)};
+}
+/// Dot(a0, b0) + Dot(a1, b1) - Dot(a2, b2), left to right: the relative speed along a row.
+inline float SumDot3(V4 a0, V4 b0, V4 a1, V4 b1, V4 a2, V4 b2) {
+    const __m128 d = Dot3(a0, b0, a1, b1, a2, b2).m;
+    return (_mm_cvtss_f32(d) + _mm_cvtss_f32(_mm_shuffle_ps(d, d, 1))) - _mm_cvtss_f32(_mm_shuffle_ps(d, d, 2));
+}
+/// (x + y) + z of a's lanes times b's.
+inline float Dot(V4 a, V4 b) {
+    const __m128 p = _mm_mul_ps(a.m, b.m);
+    return (_mm_cvtss_f32(p) + _mm_cvtss_f32(_mm_shuffle_ps(p, p, 1))) + _mm_cvtss_f32(_mm_shuffle_ps(p, p, 2));
+}
+#else
+struct V4 {
+    float f[4];
+};
+inline V4 Load(const float* f) { return {{f[0], f[1], f[2], f[3]}}; }
+inline V4 Load(const vec3& v) { return Load(&v.x); }
+inline void Store(vec3& v, V4 a) {
+    float* f = &v.x;
+    for (int i = 0; i < 4; ++i) f[i] = a.f[i];
+}
+inline V4 Splat(float x) { return {{x, x, x, x}}; }
+inline V4 Make(const vec3& v) { return {{v.x, v.y, v.z, 0.0f}}; }
+template <int i>
+inline V4 Broadcast(V4 a) {
+    return Splat(a.f[i]);
+}
+inline V4 Cross(V4 l, V4 r) {
+    const vec3 c = Cross(vec3(l.f[0], l.f[1], l.f[2]), vec3(r.f[0], r.f[1], r.f[2]));
+    return {{c.x, c.y, c.z, 0.0f}};
+}
+inline V4 operator+(V4 a, V4 b) { return {{a.f[0] + b.f[0], a.f[1] + b.f[1], a.f[2] + b.f[2], a.f[3] + b.f[3]}}; }
+inline V4 operator-(V4 a, V4 b) { return {{a.f[0] - b.f[0], a.f[1] - b.f[1], a.f[2] - b.f[2], a.f[3] - b.f[3]}}; }
+inline V4 operator*(V4 a, V4 b) { return {{a.f[0] * b.f[0], a.f[1] * b.f[1], a.f[2] * b.f[2], a.f[3] * b.f[3]}}; }
+inline float Dot(V4 a, V4 b) { return a.f[0] * b.f[0] + a.f[1] * b.f[1] + a.f[2] * b.f[2]; }
+inline float SumDot3(V4 a0, V4 b0, V4 a1, V4 b1, V4 a2, V4 b2) { return Dot(a0, b0) + Dot(a1, b1) - Dot(a2, b2); }
+#endif
+
+/// A pair's two bodies' velocities as lanes while its contacts are solved.
+struct Velocities {
+    V4 vA, wA, vB, wB;
+};
+inline Velocities LoadVelocities(const SoftContactSolver::BodyState& A, const SoftContactSolver::BodyState& B) {
+    return {Load(A.v), Load(A.w), Load(B.v), Load(B.w)};
+}
+inline void StoreVelocities(const Velocities& x, SoftContactSolver::BodyState& A, SoftContactSolver::BodyState& B) {
+    Store(A.v, x.vA);
+    Store(A.w, x.wA);
+    Store(B.v, x.vB);
+    Store(B.w, x.wB);
+}
+/// RowSpeed on lanes: Dot(vB - vA, d) + Dot(wB, rB x d) - Dot(wA, rA x d).
+inline float RowSpeed(const Velocities& x, V4 d, const SoftContactSolver::Row& row) {
+    return SumDot3(x.vB - x.vA, d, x.wB, Load(row.rBxD), x.wA, Load(row.rAxD));
+}
+/// ApplyRow on lanes.
+inline void ApplyRow(Velocities& x, float invA, float invB, V4 d, const SoftContactSolver::Row& row, float j) {
+    x.vA = x.vA - d * Splat(invA * j);
+    x.vB = x.vB + d * Splat(invB * j);
+    x.wA = x.wA - Load(row.iArAxD) * Splat(j);
+    x.wB = x.wB + Load(row.iBrBxD) * Splat(j);
+}
+
 /// Orthonormal t1, t2 with n x t1 = t2, a fixed function of n (the same normal gives the same basis every step).
 void TangentBasis(const vec3& n, vec3* t1, vec3* t2) {
     vec3 t = std::fabs(n.x) >= 0.57735f ? vec3(n.y, -n.x, 0.0f) : vec3(0.0f, n.z, -n.y);
@@ -27,36 +128,24 @@ void TangentBasis(const vec3& n, vec3* t1, vec3* t2) {
     *t2 = Cross(n, t);
 }
 
+/// v M for a matrix stored as three rows of four floats: (v.x row0 + v.y row1) + v.z row2, Mul's order.
+inline V4 MulRows(V4 v, const float (*m)[4]) {
+    return Broadcast<0>(v) * Load(m[0]) + Broadcast<1>(v) * Load(m[1]) + Broadcast<2>(v) * Load(m[2]);
+}
+
 /// Fills a constraint row along d: Jacobians, their images under the inverse inertias and the effective mass.
-void MakeRow(const vec3& rA, const vec3& rB, const vec3& d, float invSum, const mat3& iA, const mat3& iB,
-             SoftContactSolver::Row* row) {
-    row->rAxD = Cross(rA, d);
-    row->rBxD = Cross(rB, d);
-    row->iArAxD = Mul(row->rAxD, iA);
-    row->iBrBxD = Mul(row->rBxD, iB);
-    const float k = invSum + Dot(row->rAxD, row->iArAxD) + Dot(row->rBxD, row->iBrBxD);
+inline void MakeRow(V4 rA, V4 rB, V4 d, float invSum, const float (*iA)[4], const float (*iB)[4],
+                    SoftContactSolver::Row* row) {
+    const V4 rAxD = Cross(rA, d), rBxD = Cross(rB, d);
+    const V4 iArAxD = MulRows(rAxD, iA), iBrBxD = MulRows(rBxD, iB);
+    const float impulse = row->impulse;  // the fourth lanes of the Jacobians hold mass and impulse
+    Store(row->rAxD, rAxD);
+    Store(row->rBxD, rBxD);
+    row->impulse = impulse;
+    Store(row->iArAxD, iArAxD);
+    Store(row->iBrBxD, iBrBxD);
+    const float k = invSum + Dot(rAxD, iArAxD) + Dot(rBxD, iBrBxD);
     row->mass = k > 0.0f ? 1.0f / k : 0.0f;
-}
-
-/// A body's velocities held in locals while one pair is solved.
-struct BodyVelocity {
-    vec3 v, w;
-};
-
-/// Relative speed of B's contact point against A's along the row's direction d.
-template <class Body>
-inline float RowSpeed(const Body& A, const Body& B, const vec3& d, const SoftContactSolver::Row& row) {
-    return Dot(B.v - A.v, d) + Dot(B.w, row.rBxD) - Dot(A.w, row.rAxD);
-}
-
-/// Applies an impulse of magnitude j along the row (to B, and its opposite to A).
-template <class Body>
-inline void ApplyRow(Body& A, Body& B, float invA, float invB, const vec3& d, const SoftContactSolver::Row& row,
-                     float j) {
-    A.v -= d * (invA * j);
-    B.v += d * (invB * j);
-    A.w -= row.iArAxD * j;
-    B.w += row.iBrBxD * j;
 }
 
 /// Pairs of static bodies never move, so they are never tested.
@@ -168,14 +257,14 @@ void SoftContactSolver::LoadBodies(const std::vector<RigidbodyVolume*>& volumes,
         bs.p = body.position;
         bs.q = body.orientation;
         bs.q0 = body.orientation;
-        st.dp = vec3();
-        st.dR = mat3();
+        st = BodyState();
         if (!bs.dynamic) {
             // Static bodies are immovable here: no velocity, never integrated.
             st.v = vec3();
             st.w = vec3();
             bs.invMass = 0.0f;
-            bs.invI = ZeroMat3();
+            for (auto& row : bs.invI)
+                for (float& f : row) f = 0.0f;
             bs.gravity = vec3();
             bs.angularAccel = vec3();
             bs.retention = 1.0f;
@@ -185,11 +274,15 @@ void SoftContactSolver::LoadBodies(const std::vector<RigidbodyVolume*>& volumes,
         st.v = body.velocity;
         st.w = body.angVel;
         bs.invMass = body.InvMass();
-        bs.invI = body.InvTensor();
+        const mat3 invI = body.InvTensor();
+        for (int r = 0; r < 3; ++r) {
+            for (int k = 0; k < 3; ++k) bs.invI[r][k] = invI[r][k];
+            bs.invI[r][3] = 0.0f;
+        }
         bs.inertia = body.LocalInertia();
         // The book's force model: forces = gravity * mass (ApplyForces), plus any torque the body carries.
         bs.gravity = body.gravity;
-        bs.angularAccel = Mul(body.torques, bs.invI);
+        bs.angularAccel = Mul(body.torques, invI);
         bs.retention = body.StepRetention(ctx.h);
         bs.epsilon = body.StepVelocityEpsilon(ctx.h);
     }
@@ -282,17 +375,18 @@ void SoftContactSolver::Prepare(const std::vector<RigidbodyVolume*>& /*volumes*/
     for (const Pair& pair : pairs) {
         const BodySim& A = sim[pair.a];
         const BodySim& B = sim[pair.b];
-        const BodyState& sA = state[pair.a];
-        const BodyState& sB = state[pair.b];
+        const Velocities x = LoadVelocities(state[pair.a], state[pair.b]);
+        const V4 n = Load(pair.n), t1 = Load(pair.t1), t2 = Load(pair.t2);
         const float invSum = A.invMass + B.invMass;
         for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
             Contact& c = contacts[k];
-            MakeRow(c.rA, c.rB, pair.n, invSum, A.invI, B.invI, &c.normal);
-            MakeRow(c.rA, c.rB, pair.t1, invSum, A.invI, B.invI, &c.tangent1);
-            MakeRow(c.rA, c.rB, pair.t2, invSum, A.invI, B.invI, &c.tangent2);
+            const V4 rA = Make(c.rA), rB = Make(c.rB);
+            MakeRow(rA, rB, n, invSum, A.invI, B.invI, &c.normal);
+            MakeRow(rA, rB, t1, invSum, A.invI, B.invI, &c.tangent1);
+            MakeRow(rA, rB, t2, invSum, A.invI, B.invI, &c.tangent2);
             // The separation is tracked through the step from the bodies' motion (Solve), not re-collided.
             c.baseSeparation = c.separation - Dot(c.rB - c.rA, pair.n);
-            c.relativeVelocity = RowSpeed(sA, sB, pair.n, c.normal);
+            c.relativeVelocity = RowSpeed(x, n, c.normal);
             c.maxNormalImpulse = 0.0f;
         }
     }
@@ -332,7 +426,9 @@ void SoftContactSolver::IntegratePositions(const StepContext& ctx) {
         // (Solve).
         if (MagnitudeSq(st.w) > 0.0f) {
             bs.q = AdvanceRotation(bs.q, &st.w, bs.inertia, h);
-            st.dR = ToMat3(bs.q * Conjugate(bs.q0));
+            const mat3 dR = ToMat3(bs.q * Conjugate(bs.q0));
+            for (int r = 0; r < 3; ++r)
+                for (int k = 0; k < 3; ++k) st.dR[r][k] = dR[r][k];
         }
     }
 }
@@ -341,34 +437,35 @@ void SoftContactSolver::UpdateSeparations() {
     for (const Pair& pair : pairs) {
         const BodyState& A = state[pair.a];
         const BodyState& B = state[pair.b];
-        const vec3 dp = B.dp - A.dp;
+        const V4 dp = Load(B.dp) - Load(A.dp);
+        const V4 n = Load(pair.n);
+        const V4 a0 = Load(A.dR[0]), a1 = Load(A.dR[1]), a2 = Load(A.dR[2]);
+        const V4 b0 = Load(B.dR[0]), b1 = Load(B.dR[1]), b2 = Load(B.dR[2]);
         for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
             Contact& c = contacts[k];
-            // The base separation plus the motion of both anchors since the step began.
-            const vec3 d = dp + Mul(c.rB, B.dR) - Mul(c.rA, A.dR);
-            c.current = Dot(d, pair.n) + c.baseSeparation;
+            // The base separation plus the motion of both anchors since the step began: dp + rB dR_B - rA dR_A.
+            const V4 rBdR = Splat(c.rB.x) * b0 + Splat(c.rB.y) * b1 + Splat(c.rB.z) * b2;
+            const V4 rAdR = Splat(c.rA.x) * a0 + Splat(c.rA.y) * a1 + Splat(c.rA.z) * a2;
+            c.current = Dot(dp + rBdR - rAdR, n) + c.baseSeparation;
         }
     }
 }
 
 void SoftContactSolver::WarmStart() {
     for (const Pair& pair : pairs) {
-        // The pair's two bodies are worked on in locals (no other pair touches them meanwhile): the contacts'
-        // stores cannot alias them, so they stay in registers.
+        // The pair's two bodies are worked on in locals (no other pair touches them meanwhile).
         BodyState& A = state[pair.a];
         BodyState& B = state[pair.b];
-        BodyVelocity vA{A.v, A.w}, vB{B.v, B.w};
+        Velocities x = LoadVelocities(A, B);
         const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
+        const V4 n = Load(pair.n), t1 = Load(pair.t1), t2 = Load(pair.t2);
         for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
             const Contact& c = contacts[k];
-            ApplyRow(vA, vB, invA, invB, pair.n, c.normal, c.normal.impulse);
-            ApplyRow(vA, vB, invA, invB, pair.t1, c.tangent1, c.tangent1.impulse);
-            ApplyRow(vA, vB, invA, invB, pair.t2, c.tangent2, c.tangent2.impulse);
+            ApplyRow(x, invA, invB, n, c.normal, c.normal.impulse);
+            ApplyRow(x, invA, invB, t1, c.tangent1, c.tangent1.impulse);
+            ApplyRow(x, invA, invB, t2, c.tangent2, c.tangent2.impulse);
         }
-        A.v = vA.v;
-        A.w = vA.w;
-        B.v = vB.v;
-        B.w = vB.w;
+        StoreVelocities(x, A, B);
     }
 }
 
@@ -376,10 +473,11 @@ void SoftContactSolver::Solve(float invH, const Softness& dynamicSoftness, const
                               float maxPushout, float slop, bool useBias) {
     for (const Pair& pair : pairs) {
         const Softness& softness = pair.touchesStatic ? staticSoftness : dynamicSoftness;
-        BodyState& bodyA = state[pair.a];
-        BodyState& bodyB = state[pair.b];
-        BodyVelocity A{bodyA.v, bodyA.w}, B{bodyB.v, bodyB.w};
+        BodyState& A = state[pair.a];
+        BodyState& B = state[pair.b];
+        Velocities x = LoadVelocities(A, B);
         const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
+        const V4 n = Load(pair.n), t1 = Load(pair.t1), t2 = Load(pair.t2);
         for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
             Contact& c = contacts[k];
             const float s = c.current;
@@ -392,7 +490,7 @@ void SoftContactSolver::Solve(float invH, const Softness& dynamicSoftness, const
                 impulseScale = softness.impulseScale;
             }
             // Normal: the TOTAL impulse stays >= 0 (contacts push).
-            const float vn = RowSpeed(A, B, pair.n, c.normal);
+            const float vn = RowSpeed(x, n, c.normal);
             // Restitution works from the fastest closing speed met before solving (the impact substep), not from
             // the step's start, which misses up to g dt of the fall.
             if (useBias) c.relativeVelocity = std::min(c.relativeVelocity, vn);
@@ -401,14 +499,14 @@ void SoftContactSolver::Solve(float invH, const Softness& dynamicSoftness, const
             const float dn = jn - c.normal.impulse;
             c.normal.impulse = jn;
             c.maxNormalImpulse = std::max(c.maxNormalImpulse, jn);
-            ApplyRow(A, B, invA, invB, pair.n, c.normal, dn);
+            ApplyRow(x, invA, invB, n, c.normal, dn);
         }
         for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
             Contact& c = contacts[k];
             // Friction: the TOTAL stays inside the Coulomb cone mu * jn (book §15, Coulomb clamp).
             const float limit = pair.friction * c.normal.impulse;
-            float j1 = c.tangent1.impulse - c.tangent1.mass * RowSpeed(A, B, pair.t1, c.tangent1);
-            float j2 = c.tangent2.impulse - c.tangent2.mass * RowSpeed(A, B, pair.t2, c.tangent2);
+            float j1 = c.tangent1.impulse - c.tangent1.mass * RowSpeed(x, t1, c.tangent1);
+            float j2 = c.tangent2.impulse - c.tangent2.mass * RowSpeed(x, t2, c.tangent2);
             const float sq = j1 * j1 + j2 * j2;
             if (sq > limit * limit) {
                 const float scale = limit > 0.0f ? limit / std::sqrt(sq) : 0.0f;
@@ -418,13 +516,10 @@ void SoftContactSolver::Solve(float invH, const Softness& dynamicSoftness, const
             const float d1 = j1 - c.tangent1.impulse, d2 = j2 - c.tangent2.impulse;
             c.tangent1.impulse = j1;
             c.tangent2.impulse = j2;
-            ApplyRow(A, B, invA, invB, pair.t1, c.tangent1, d1);
-            ApplyRow(A, B, invA, invB, pair.t2, c.tangent2, d2);
+            ApplyRow(x, invA, invB, t1, c.tangent1, d1);
+            ApplyRow(x, invA, invB, t2, c.tangent2, d2);
         }
-        bodyA.v = A.v;
-        bodyA.w = A.w;
-        bodyB.v = B.v;
-        bodyB.w = B.w;
+        StoreVelocities(x, A, B);
     }
 }
 
@@ -433,19 +528,22 @@ void SoftContactSolver::ApplyRestitution(float threshold) {
         if (pair.restitution == 0.0f) continue;
         BodyState& A = state[pair.a];
         BodyState& B = state[pair.b];
+        Velocities x = LoadVelocities(A, B);
         const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
+        const V4 n = Load(pair.n);
         for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
             Contact& c = contacts[k];
             // Only a real impact (closing faster than the threshold before solving) that the solver pushed on.
             if (c.relativeVelocity > -threshold || c.maxNormalImpulse == 0.0f) continue;
-            const float vn = RowSpeed(A, B, pair.n, c.normal);
+            const float vn = RowSpeed(x, n, c.normal);
             const float jn =
                 std::max(c.normal.impulse - c.normal.mass * (vn + pair.restitution * c.relativeVelocity), 0.0f);
             const float dn = jn - c.normal.impulse;
             c.normal.impulse = jn;
             c.maxNormalImpulse = std::max(c.maxNormalImpulse, jn);
-            ApplyRow(A, B, invA, invB, pair.n, c.normal, dn);
+            ApplyRow(x, invA, invB, n, c.normal, dn);
         }
+        StoreVelocities(x, A, B);
     }
 }
 
