@@ -340,7 +340,8 @@ void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
 
         for (std::size_t k = 0; k < pair.count; ++k) {
             const ManifoldPoint& mp = manifold.points[k];
-            Contact c;
+            contacts.emplace_back();  // built in place: the copy of a whole Contact showed in the profile
+            Contact& c = contacts.back();
             c.rA = mp.point - sim[pair.a].p;
             c.rB = mp.point - sim[pair.b].p;
             c.separation = mp.separation;
@@ -365,7 +366,6 @@ void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
                     ++warmStarted;
                 }
             }
-            contacts.push_back(c);
         }
         pairs.push_back(pair);
     }
@@ -481,14 +481,14 @@ void SoftContactSolver::Solve(float invH, const Softness& dynamicSoftness, const
         for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
             Contact& c = contacts[k];
             const float s = c.current;
-            float bias = 0.0f, massScale = 1.0f, impulseScale = 0.0f;
-            if (s > 0.0f) {
-                bias = s * invH;  // speculative: may close the gap this substep, no more
-            } else if (useBias) {
-                bias = std::max(softness.biasRate * std::min(s + slop, 0.0f), -maxPushout);
-                massScale = softness.massScale;
-                impulseScale = softness.impulseScale;
-            }
+            // Speculative (s > 0): may close the gap this substep, no more. Penetrating, biased pass: the soft
+            // push-out. Written as selects, not branches: whether a contact is speculative is hard to predict.
+            const bool speculative = s > 0.0f;
+            const bool pushOut = !speculative && useBias;
+            const float pushOutBias = std::max(softness.biasRate * std::min(s + slop, 0.0f), -maxPushout);
+            const float bias = speculative ? s * invH : (pushOut ? pushOutBias : 0.0f);
+            const float massScale = pushOut ? softness.massScale : 1.0f;
+            const float impulseScale = pushOut ? softness.impulseScale : 0.0f;
             // Normal: the TOTAL impulse stays >= 0 (contacts push).
             const float vn = RowSpeed(x, n, c.normal);
             // Restitution works from the fastest closing speed met before solving (the impact substep), not from
