@@ -112,6 +112,23 @@ inline void StoreVelocities(const Velocities& x, SoftContactSolver::BodyState& A
 inline float RowSpeed(const Velocities& x, V4 d, const SoftContactSolver::Row& row) {
     return SumDot3(x.vB - x.vA, d, x.wB, Load(row.rBxD), x.wA, Load(row.rAxD));
 }
+/// RowSpeed of two rows (the friction pair) from the same velocities, sharing the lane transposes.
+inline void RowSpeeds(const Velocities& x, V4 d1, const SoftContactSolver::Row& r1, V4 d2,
+                      const SoftContactSolver::Row& r2, float* s1, float* s2) {
+#if defined(__SSE2__)
+    const __m128 dv = _mm_sub_ps(x.vB.m, x.vA.m);
+    __m128 p0 = _mm_mul_ps(dv, d1.m), p1 = _mm_mul_ps(x.wB.m, Load(r1.rBxD).m);
+    __m128 p2 = _mm_mul_ps(x.wA.m, Load(r1.rAxD).m), p3 = _mm_mul_ps(dv, d2.m);
+    _MM_TRANSPOSE4_PS(p0, p1, p2, p3);
+    const __m128 a = _mm_add_ps(_mm_add_ps(p0, p1), p2);  // dv.d1, wB.rB1, wA.rA1, dv.d2
+    const __m128 b = Dot3(x.wB, Load(r2.rBxD), x.wA, Load(r2.rAxD), V4{_mm_setzero_ps()}, V4{_mm_setzero_ps()}).m;
+    *s1 = (_mm_cvtss_f32(a) + _mm_cvtss_f32(_mm_shuffle_ps(a, a, 1))) - _mm_cvtss_f32(_mm_shuffle_ps(a, a, 2));
+    *s2 = (_mm_cvtss_f32(_mm_shuffle_ps(a, a, 3)) + _mm_cvtss_f32(b)) - _mm_cvtss_f32(_mm_shuffle_ps(b, b, 1));
+#else
+    *s1 = RowSpeed(x, d1, r1);
+    *s2 = RowSpeed(x, d2, r2);
+#endif
+}
 /// ApplyRow on lanes.
 inline void ApplyRow(Velocities& x, float invA, float invB, V4 d, const SoftContactSolver::Row& row, float j) {
     x.vA = x.vA - d * Splat(invA * j);
@@ -505,8 +522,10 @@ void SoftContactSolver::Solve(float invH, const Softness& dynamicSoftness, const
             Contact& c = contacts[k];
             // Friction: the TOTAL stays inside the Coulomb cone mu * jn (book §15, Coulomb clamp).
             const float limit = pair.friction * c.normal.impulse;
-            float j1 = c.tangent1.impulse - c.tangent1.mass * RowSpeed(x, t1, c.tangent1);
-            float j2 = c.tangent2.impulse - c.tangent2.mass * RowSpeed(x, t2, c.tangent2);
+            float speed1, speed2;
+            RowSpeeds(x, t1, c.tangent1, t2, c.tangent2, &speed1, &speed2);
+            float j1 = c.tangent1.impulse - c.tangent1.mass * speed1;
+            float j2 = c.tangent2.impulse - c.tangent2.mass * speed2;
             const float sq = j1 * j1 + j2 * j2;
             if (sq > limit * limit) {
                 const float scale = limit > 0.0f ? limit / std::sqrt(sq) : 0.0f;
