@@ -107,8 +107,8 @@ public:
         float padW = 0.0f;
         vec3 dp;  // position change since the step began, m
         float padP = 0.0f;
-        float dR[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};  // rotation since the step began (row-vector
-                                                                      // form), rows padded to four floats
+        // Rotation since the step began (row-vector form), rows padded to four floats.
+        float dR[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
     };
     /// Per-body constants of the step and its pose.
     struct alignas(16) BodySim {
