@@ -2,21 +2,11 @@
 
 #include <cmath>
 
-quat operator*(const quat& a, const quat& b) {
-    return {a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y, a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
-            a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w, a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z};
-}
-quat operator*(const quat& q, float s) { return {q.x * s, q.y * s, q.z * s, q.w * s}; }
-quat operator+(const quat& a, const quat& b) { return {a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w}; }
-float Dot(const quat& a, const quat& b) { return a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w; }
-float Magnitude(const quat& q) { return std::sqrt(Dot(q, q)); }
-
 quat Normalized(const quat& q) {
     const float len = Magnitude(q);
     if (!(len > 0.0f) || !std::isfinite(len)) return quat();
     return q * (1.0f / len);
 }
-quat Conjugate(const quat& q) { return {-q.x, -q.y, -q.z, q.w}; }
 quat Inverse(const quat& q) {
     const float lenSq = Dot(q, q);
     if (!(lenSq > 0.0f)) return quat();
@@ -35,16 +25,6 @@ vec3 Rotate(const quat& q, const vec3& v) {
     const vec3 u(q.x, q.y, q.z);
     const vec3 t = Cross(u, v) * 2.0f;
     return v + t * q.w + Cross(u, t);
-}
-
-mat3 ToMat3(const quat& q) {
-    // Rows are the images of the unit axes: row i = Rotate(q, e_i).
-    const float xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z;
-    const float xy = q.x * q.y, xz = q.x * q.z, yz = q.y * q.z;
-    const float wx = q.w * q.x, wy = q.w * q.y, wz = q.w * q.z;
-    return mat3(1 - 2 * (yy + zz), 2 * (xy + wz), 2 * (xz - wy),  //
-                2 * (xy - wz), 1 - 2 * (xx + zz), 2 * (yz + wx),  //
-                2 * (xz + wy), 2 * (yz - wx), 1 - 2 * (xx + yy));
 }
 
 quat FromMat3ToQuat(const mat3& m) {

@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "Physics/Geometry/ContactManifold.h"
 #include "Physics/RigidbodyVolume.h"
@@ -19,6 +22,121 @@ inline vec3 Mul(const vec3& v, const mat3& m) {
             v.x * m[0][2] + v.y * m[1][2] + v.z * m[2][2]};
 }
 
+/// Four float lanes for the solver's hot loops (SoftSolver.h: every hot vec3 is followed by a fourth float). Only
+/// lane-wise operations and the three-term dot (x + y) + z, the scalar Dot's order, so lanes 0-2 carry the same
+/// bits as vec3 arithmetic.
+#if defined(__SSE2__)
+struct V4 {
+    __m128 m;
+};
+inline V4 Load(const vec3& v) { return {_mm_load_ps(&v.x)}; }
+inline V4 Load(const float* f) { return {_mm_load_ps(f)}; }
+inline void Store(vec3& v, V4 a) { _mm_store_ps(&v.x, a.m); }
+inline V4 Splat(float f) { return {_mm_set1_ps(f)}; }
+/// (v.x, v.y, v.z, 0).
+inline V4 Make(const vec3& v) { return {_mm_set_ps(0.0f, v.z, v.y, v.x)}; }
+/// Lane i of a in every lane.
+template <int i>
+inline V4 Broadcast(V4 a) {
+    return {_mm_shuffle_ps(a.m, a.m, _MM_SHUFFLE(i, i, i, i))};
+}
+/// Lane-wise Cross: (l.y r.z - l.z r.y, l.z r.x - l.x r.z, l.x r.y - l.y r.x).
+inline V4 Cross(V4 l, V4 r) {
+    const __m128 lYZX = _mm_shuffle_ps(l.m, l.m, _MM_SHUFFLE(3, 0, 2, 1));
+    const __m128 lZXY = _mm_shuffle_ps(l.m, l.m, _MM_SHUFFLE(3, 1, 0, 2));
+    const __m128 rYZX = _mm_shuffle_ps(r.m, r.m, _MM_SHUFFLE(3, 0, 2, 1));
+    const __m128 rZXY = _mm_shuffle_ps(r.m, r.m, _MM_SHUFFLE(3, 1, 0, 2));
+    return {_mm_sub_ps(_mm_mul_ps(lYZX, rZXY), _mm_mul_ps(lZXY, rYZX))};
+}
+inline V4 operator+(V4 a, V4 b) { return {_mm_add_ps(a.m, b.m)}; }
+inline V4 operator-(V4 a, V4 b) { return {_mm_sub_ps(a.m, b.m)}; }
+inline V4 operator*(V4 a, V4 b) { return {_mm_mul_ps(a.m, b.m)}; }
+/// Lane i of the result is Dot(a_i, b_i) for i < 3, summed as (x + y) + z.
+inline V4 Dot3(V4 a0, V4 b0, V4 a1, V4 b1, V4 a2, V4 b2) {
+    __m128 p0 = _mm_mul_ps(a0.m, b0.m), p1 = _mm_mul_ps(a1.m, b1.m), p2 = _mm_mul_ps(a2.m, b2.m);
+    __m128 p3 = _mm_setzero_ps();
+    _MM_TRANSPOSE4_PS(p0, p1, p2, p3);
+    return {_mm_add_ps(_mm_add_ps(p0, p1), p2)};
+}
+/// Dot(a0, b0) + Dot(a1, b1) - Dot(a2, b2), left to right: the relative speed along a row.
+inline float SumDot3(V4 a0, V4 b0, V4 a1, V4 b1, V4 a2, V4 b2) {
+    const __m128 d = Dot3(a0, b0, a1, b1, a2, b2).m;
+    return (_mm_cvtss_f32(d) + _mm_cvtss_f32(_mm_shuffle_ps(d, d, 1))) - _mm_cvtss_f32(_mm_shuffle_ps(d, d, 2));
+}
+/// (x + y) + z of a's lanes times b's.
+inline float Dot(V4 a, V4 b) {
+    const __m128 p = _mm_mul_ps(a.m, b.m);
+    return (_mm_cvtss_f32(p) + _mm_cvtss_f32(_mm_shuffle_ps(p, p, 1))) + _mm_cvtss_f32(_mm_shuffle_ps(p, p, 2));
+}
+#else
+struct V4 {
+    float f[4];
+};
+inline V4 Load(const float* f) { return {{f[0], f[1], f[2], f[3]}}; }
+inline V4 Load(const vec3& v) { return Load(&v.x); }
+inline void Store(vec3& v, V4 a) {
+    float* f = &v.x;
+    for (int i = 0; i < 4; ++i) f[i] = a.f[i];
+}
+inline V4 Splat(float x) { return {{x, x, x, x}}; }
+inline V4 Make(const vec3& v) { return {{v.x, v.y, v.z, 0.0f}}; }
+template <int i>
+inline V4 Broadcast(V4 a) {
+    return Splat(a.f[i]);
+}
+inline V4 Cross(V4 l, V4 r) {
+    const vec3 c = Cross(vec3(l.f[0], l.f[1], l.f[2]), vec3(r.f[0], r.f[1], r.f[2]));
+    return {{c.x, c.y, c.z, 0.0f}};
+}
+inline V4 operator+(V4 a, V4 b) { return {{a.f[0] + b.f[0], a.f[1] + b.f[1], a.f[2] + b.f[2], a.f[3] + b.f[3]}}; }
+inline V4 operator-(V4 a, V4 b) { return {{a.f[0] - b.f[0], a.f[1] - b.f[1], a.f[2] - b.f[2], a.f[3] - b.f[3]}}; }
+inline V4 operator*(V4 a, V4 b) { return {{a.f[0] * b.f[0], a.f[1] * b.f[1], a.f[2] * b.f[2], a.f[3] * b.f[3]}}; }
+inline float Dot(V4 a, V4 b) { return a.f[0] * b.f[0] + a.f[1] * b.f[1] + a.f[2] * b.f[2]; }
+inline float SumDot3(V4 a0, V4 b0, V4 a1, V4 b1, V4 a2, V4 b2) { return Dot(a0, b0) + Dot(a1, b1) - Dot(a2, b2); }
+#endif
+
+/// A pair's two bodies' velocities as lanes while its contacts are solved.
+struct Velocities {
+    V4 vA, wA, vB, wB;
+};
+inline Velocities LoadVelocities(const SoftContactSolver::BodyState& A, const SoftContactSolver::BodyState& B) {
+    return {Load(A.v), Load(A.w), Load(B.v), Load(B.w)};
+}
+inline void StoreVelocities(const Velocities& x, SoftContactSolver::BodyState& A, SoftContactSolver::BodyState& B) {
+    Store(A.v, x.vA);
+    Store(A.w, x.wA);
+    Store(B.v, x.vB);
+    Store(B.w, x.wB);
+}
+/// RowSpeed on lanes: Dot(vB - vA, d) + Dot(wB, rB x d) - Dot(wA, rA x d).
+inline float RowSpeed(const Velocities& x, V4 d, const SoftContactSolver::Row& row) {
+    return SumDot3(x.vB - x.vA, d, x.wB, Load(row.rBxD), x.wA, Load(row.rAxD));
+}
+/// RowSpeed of two rows (the friction pair) from the same velocities, sharing the lane transposes.
+inline void RowSpeeds(const Velocities& x, V4 d1, const SoftContactSolver::Row& r1, V4 d2,
+                      const SoftContactSolver::Row& r2, float* s1, float* s2) {
+#if defined(__SSE2__)
+    const __m128 dv = _mm_sub_ps(x.vB.m, x.vA.m);
+    __m128 p0 = _mm_mul_ps(dv, d1.m), p1 = _mm_mul_ps(x.wB.m, Load(r1.rBxD).m);
+    __m128 p2 = _mm_mul_ps(x.wA.m, Load(r1.rAxD).m), p3 = _mm_mul_ps(dv, d2.m);
+    _MM_TRANSPOSE4_PS(p0, p1, p2, p3);
+    const __m128 a = _mm_add_ps(_mm_add_ps(p0, p1), p2);  // dv.d1, wB.rB1, wA.rA1, dv.d2
+    const __m128 b = Dot3(x.wB, Load(r2.rBxD), x.wA, Load(r2.rAxD), V4{_mm_setzero_ps()}, V4{_mm_setzero_ps()}).m;
+    *s1 = (_mm_cvtss_f32(a) + _mm_cvtss_f32(_mm_shuffle_ps(a, a, 1))) - _mm_cvtss_f32(_mm_shuffle_ps(a, a, 2));
+    *s2 = (_mm_cvtss_f32(_mm_shuffle_ps(a, a, 3)) + _mm_cvtss_f32(b)) - _mm_cvtss_f32(_mm_shuffle_ps(b, b, 1));
+#else
+    *s1 = RowSpeed(x, d1, r1);
+    *s2 = RowSpeed(x, d2, r2);
+#endif
+}
+/// ApplyRow on lanes.
+inline void ApplyRow(Velocities& x, float invA, float invB, V4 d, const SoftContactSolver::Row& row, float j) {
+    x.vA = x.vA - d * Splat(invA * j);
+    x.vB = x.vB + d * Splat(invB * j);
+    x.wA = x.wA - Load(row.iArAxD) * Splat(j);
+    x.wB = x.wB + Load(row.iBrBxD) * Splat(j);
+}
+
 /// Orthonormal t1, t2 with n x t1 = t2, a fixed function of n (the same normal gives the same basis every step).
 void TangentBasis(const vec3& n, vec3* t1, vec3* t2) {
     vec3 t = std::fabs(n.x) >= 0.57735f ? vec3(n.y, -n.x, 0.0f) : vec3(0.0f, n.z, -n.y);
@@ -27,30 +145,24 @@ void TangentBasis(const vec3& n, vec3* t1, vec3* t2) {
     *t2 = Cross(n, t);
 }
 
+/// v M for a matrix stored as three rows of four floats: (v.x row0 + v.y row1) + v.z row2, Mul's order.
+inline V4 MulRows(V4 v, const float (*m)[4]) {
+    return Broadcast<0>(v) * Load(m[0]) + Broadcast<1>(v) * Load(m[1]) + Broadcast<2>(v) * Load(m[2]);
+}
+
 /// Fills a constraint row along d: Jacobians, their images under the inverse inertias and the effective mass.
-void MakeRow(const vec3& rA, const vec3& rB, const vec3& d, float invSum, const mat3& iA, const mat3& iB,
-             SoftContactSolver::Row* row) {
-    row->rAxD = Cross(rA, d);
-    row->rBxD = Cross(rB, d);
-    row->iArAxD = Mul(row->rAxD, iA);
-    row->iBrBxD = Mul(row->rBxD, iB);
-    const float k = invSum + Dot(row->rAxD, row->iArAxD) + Dot(row->rBxD, row->iBrBxD);
+inline void MakeRow(V4 rA, V4 rB, V4 d, float invSum, const float (*iA)[4], const float (*iB)[4],
+                    SoftContactSolver::Row* row) {
+    const V4 rAxD = Cross(rA, d), rBxD = Cross(rB, d);
+    const V4 iArAxD = MulRows(rAxD, iA), iBrBxD = MulRows(rBxD, iB);
+    const float impulse = row->impulse;  // the fourth lanes of the Jacobians hold mass and impulse
+    Store(row->rAxD, rAxD);
+    Store(row->rBxD, rBxD);
+    row->impulse = impulse;
+    Store(row->iArAxD, iArAxD);
+    Store(row->iBrBxD, iBrBxD);
+    const float k = invSum + Dot(rAxD, iArAxD) + Dot(rBxD, iBrBxD);
     row->mass = k > 0.0f ? 1.0f / k : 0.0f;
-}
-
-/// Relative speed of B's contact point against A's along the row's direction d.
-inline float RowSpeed(const SoftContactSolver::BodyState& A, const SoftContactSolver::BodyState& B, const vec3& d,
-                      const SoftContactSolver::Row& row) {
-    return Dot(B.v - A.v, d) + Dot(B.w, row.rBxD) - Dot(A.w, row.rAxD);
-}
-
-/// Applies an impulse of magnitude j along the row (to B, and its opposite to A).
-inline void ApplyRow(SoftContactSolver::BodyState& A, SoftContactSolver::BodyState& B, float invA, float invB,
-                     const vec3& d, const SoftContactSolver::Row& row, float j) {
-    A.v -= d * (invA * j);
-    B.v += d * (invB * j);
-    A.w -= row.iArAxD * j;
-    B.w += row.iBrBxD * j;
 }
 
 /// Pairs of static bodies never move, so they are never tested.
@@ -166,14 +278,14 @@ void SoftContactSolver::LoadBodies(const std::vector<RigidbodyVolume*>& volumes,
         bs.p = body.position;
         bs.q = body.orientation;
         bs.q0 = body.orientation;
-        st.dp = vec3();
-        st.dR = mat3();
+        st = BodyState();
         if (!bs.dynamic) {
             // Static bodies are immovable here: no velocity, never integrated.
             st.v = vec3();
             st.w = vec3();
             bs.invMass = 0.0f;
-            bs.invI = ZeroMat3();
+            for (auto& row : bs.invI)
+                for (float& f : row) f = 0.0f;
             bs.gravity = vec3();
             bs.angularAccel = vec3();
             bs.retention = 1.0f;
@@ -183,11 +295,15 @@ void SoftContactSolver::LoadBodies(const std::vector<RigidbodyVolume*>& volumes,
         st.v = body.velocity;
         st.w = body.angVel;
         bs.invMass = body.InvMass();
-        bs.invI = body.InvTensor();
+        const mat3 invI = body.InvTensor();
+        for (int r = 0; r < 3; ++r) {
+            for (int k = 0; k < 3; ++k) bs.invI[r][k] = invI[r][k];
+            bs.invI[r][3] = 0.0f;
+        }
         bs.inertia = body.LocalInertia();
         // The book's force model: forces = gravity * mass (ApplyForces), plus any torque the body carries.
         bs.gravity = body.gravity;
-        bs.angularAccel = Mul(body.torques, bs.invI);
+        bs.angularAccel = Mul(body.torques, invI);
         bs.retention = body.StepRetention(ctx.h);
         bs.epsilon = body.StepVelocityEpsilon(ctx.h);
     }
@@ -245,7 +361,8 @@ void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
 
         for (std::size_t k = 0; k < pair.count; ++k) {
             const ManifoldPoint& mp = manifold.points[k];
-            Contact c;
+            contacts.emplace_back();  // built in place: the copy of a whole Contact showed in the profile
+            Contact& c = contacts.back();
             c.rA = mp.point - sim[pair.a].p;
             c.rB = mp.point - sim[pair.b].p;
             c.separation = mp.separation;
@@ -270,7 +387,6 @@ void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
                     ++warmStarted;
                 }
             }
-            contacts.push_back(c);
         }
         pairs.push_back(pair);
     }
@@ -287,17 +403,18 @@ void SoftContactSolver::Prepare(const std::vector<RigidbodyVolume*>& /*volumes*/
 void SoftContactSolver::PreparePair(const Pair& pair) {
     const BodySim& A = sim[pair.a];
     const BodySim& B = sim[pair.b];
-    const BodyState& sA = state[pair.a];
-    const BodyState& sB = state[pair.b];
+    const Velocities x = LoadVelocities(state[pair.a], state[pair.b]);
+    const V4 n = Load(pair.n), t1 = Load(pair.t1), t2 = Load(pair.t2);
     const float invSum = A.invMass + B.invMass;
     for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
         Contact& c = contacts[k];
-        MakeRow(c.rA, c.rB, pair.n, invSum, A.invI, B.invI, &c.normal);
-        MakeRow(c.rA, c.rB, pair.t1, invSum, A.invI, B.invI, &c.tangent1);
-        MakeRow(c.rA, c.rB, pair.t2, invSum, A.invI, B.invI, &c.tangent2);
+        const V4 rA = Make(c.rA), rB = Make(c.rB);
+        MakeRow(rA, rB, n, invSum, A.invI, B.invI, &c.normal);
+        MakeRow(rA, rB, t1, invSum, A.invI, B.invI, &c.tangent1);
+        MakeRow(rA, rB, t2, invSum, A.invI, B.invI, &c.tangent2);
         // The separation is tracked through the step from the bodies' motion (Solve), not re-collided.
         c.baseSeparation = c.separation - Dot(c.rB - c.rA, pair.n);
-        c.relativeVelocity = RowSpeed(sA, sB, pair.n, c.normal);
+        c.relativeVelocity = RowSpeed(x, n, c.normal);
         c.maxNormalImpulse = 0.0f;
     }
 }
@@ -336,7 +453,9 @@ void SoftContactSolver::IntegratePositions(const StepContext& ctx) {
         // (Solve).
         if (MagnitudeSq(st.w) > 0.0f) {
             bs.q = AdvanceRotation(bs.q, &st.w, bs.inertia, h);
-            st.dR = ToMat3(bs.q * Conjugate(bs.q0));
+            const mat3 dR = ToMat3(bs.q * Conjugate(bs.q0));
+            for (int r = 0; r < 3; ++r)
+                for (int k = 0; k < 3; ++k) st.dR[r][k] = dR[r][k];
         }
     }
 }
@@ -344,7 +463,7 @@ void SoftContactSolver::IntegratePositions(const StepContext& ctx) {
 void SoftContactSolver::UpdateSeparations() {
     if (colouring) {
         WideUpdateSeparations();
-        for (const int i : overflow) UpdatePairSeparations(pairs[i]);
+        for (const int i : overflow) UpdatePairSeparations(pairs[static_cast<std::size_t>(i)]);
         return;
     }
     for (const Pair& pair : pairs) UpdatePairSeparations(pair);
@@ -353,34 +472,42 @@ void SoftContactSolver::UpdateSeparations() {
 void SoftContactSolver::UpdatePairSeparations(const Pair& pair) {
     const BodyState& A = state[pair.a];
     const BodyState& B = state[pair.b];
-    const vec3 dp = B.dp - A.dp;
+    const V4 dp = Load(B.dp) - Load(A.dp);
+    const V4 n = Load(pair.n);
+    const V4 a0 = Load(A.dR[0]), a1 = Load(A.dR[1]), a2 = Load(A.dR[2]);
+    const V4 b0 = Load(B.dR[0]), b1 = Load(B.dR[1]), b2 = Load(B.dR[2]);
     for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
         Contact& c = contacts[k];
-        // The base separation plus the motion of both anchors since the step began.
-        const vec3 d = dp + Mul(c.rB, B.dR) - Mul(c.rA, A.dR);
-        c.current = Dot(d, pair.n) + c.baseSeparation;
+        // The base separation plus the motion of both anchors since the step began: dp + rB dR_B - rA dR_A.
+        const V4 rBdR = Splat(c.rB.x) * b0 + Splat(c.rB.y) * b1 + Splat(c.rB.z) * b2;
+        const V4 rAdR = Splat(c.rA.x) * a0 + Splat(c.rA.y) * a1 + Splat(c.rA.z) * a2;
+        c.current = Dot(dp + rBdR - rAdR, n) + c.baseSeparation;
     }
 }
 
 void SoftContactSolver::WarmStart() {
     if (colouring) {
         WideWarmStart();
-        for (const int i : overflow) WarmStartPair(pairs[i]);
+        for (const int i : overflow) WarmStartPair(pairs[static_cast<std::size_t>(i)]);
         return;
     }
     for (const Pair& pair : pairs) WarmStartPair(pair);
 }
 
 void SoftContactSolver::WarmStartPair(const Pair& pair) {
+    // The pair's two bodies are worked on in locals (no other pair touches them meanwhile).
     BodyState& A = state[pair.a];
     BodyState& B = state[pair.b];
+    Velocities x = LoadVelocities(A, B);
     const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
+    const V4 n = Load(pair.n), t1 = Load(pair.t1), t2 = Load(pair.t2);
     for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
         const Contact& c = contacts[k];
-        ApplyRow(A, B, invA, invB, pair.n, c.normal, c.normal.impulse);
-        ApplyRow(A, B, invA, invB, pair.t1, c.tangent1, c.tangent1.impulse);
-        ApplyRow(A, B, invA, invB, pair.t2, c.tangent2, c.tangent2.impulse);
+        ApplyRow(x, invA, invB, n, c.normal, c.normal.impulse);
+        ApplyRow(x, invA, invB, t1, c.tangent1, c.tangent1.impulse);
+        ApplyRow(x, invA, invB, t2, c.tangent2, c.tangent2.impulse);
     }
+    StoreVelocities(x, A, B);
 }
 
 void SoftContactSolver::Solve(float invH, const Softness& dynamicSoftness, const Softness& staticSoftness,
@@ -388,7 +515,7 @@ void SoftContactSolver::Solve(float invH, const Softness& dynamicSoftness, const
     if (colouring) {
         WideSolve(invH, maxPushout, slop, useBias);
         for (const int i : overflow) {
-            const Pair& pair = pairs[i];
+            const Pair& pair = pairs[static_cast<std::size_t>(i)];
             SolvePair(pair, pair.touchesStatic ? staticSoftness : dynamicSoftness, invH, maxPushout, slop, useBias);
         }
         return;
@@ -401,20 +528,22 @@ void SoftContactSolver::SolvePair(const Pair& pair, const Softness& softness, fl
                                   bool useBias) {
     BodyState& A = state[pair.a];
     BodyState& B = state[pair.b];
+    Velocities x = LoadVelocities(A, B);
     const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
+    const V4 n = Load(pair.n), t1 = Load(pair.t1), t2 = Load(pair.t2);
     for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
         Contact& c = contacts[k];
         const float s = c.current;
-        float bias = 0.0f, massScale = 1.0f, impulseScale = 0.0f;
-        if (s > 0.0f) {
-            bias = s * invH;  // speculative: may close the gap this substep, no more
-        } else if (useBias) {
-            bias = std::max(softness.biasRate * std::min(s + slop, 0.0f), -maxPushout);
-            massScale = softness.massScale;
-            impulseScale = softness.impulseScale;
-        }
+        // Speculative (s > 0): may close the gap this substep, no more. Penetrating, biased pass: the soft
+        // push-out. Written as selects, not branches: whether a contact is speculative is hard to predict.
+        const bool speculative = s > 0.0f;
+        const bool pushOut = !speculative && useBias;
+        const float pushOutBias = std::max(softness.biasRate * std::min(s + slop, 0.0f), -maxPushout);
+        const float bias = speculative ? s * invH : (pushOut ? pushOutBias : 0.0f);
+        const float massScale = pushOut ? softness.massScale : 1.0f;
+        const float impulseScale = pushOut ? softness.impulseScale : 0.0f;
         // Normal: the TOTAL impulse stays >= 0 (contacts push).
-        const float vn = RowSpeed(A, B, pair.n, c.normal);
+        const float vn = RowSpeed(x, n, c.normal);
         // Restitution works from the fastest closing speed met before solving (the impact substep), not from
         // the step's start, which misses up to g dt of the fall.
         if (useBias) c.relativeVelocity = std::min(c.relativeVelocity, vn);
@@ -423,29 +552,33 @@ void SoftContactSolver::SolvePair(const Pair& pair, const Softness& softness, fl
         const float dn = jn - c.normal.impulse;
         c.normal.impulse = jn;
         c.maxNormalImpulse = std::max(c.maxNormalImpulse, jn);
-        ApplyRow(A, B, invA, invB, pair.n, c.normal, dn);
+        ApplyRow(x, invA, invB, n, c.normal, dn);
     }
     // Friction only in the relax pass, as Box2D's soft step does since 2026: the biased pass's friction was undone
     // by the relax pass's anyway, at a third of the solve's rows (docs/ch15.md, "The soft-step solver").
-    if (useBias) return;
-    for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
-        Contact& c = contacts[k];
-        // Friction: the TOTAL stays inside the Coulomb cone mu * jn (book §15, Coulomb clamp).
-        const float limit = pair.friction * c.normal.impulse;
-        float j1 = c.tangent1.impulse - c.tangent1.mass * RowSpeed(A, B, pair.t1, c.tangent1);
-        float j2 = c.tangent2.impulse - c.tangent2.mass * RowSpeed(A, B, pair.t2, c.tangent2);
-        const float sq = j1 * j1 + j2 * j2;
-        if (sq > limit * limit) {
-            const float scale = limit > 0.0f ? limit / std::sqrt(sq) : 0.0f;
-            j1 *= scale;
-            j2 *= scale;
+    if (!useBias) {
+        for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
+            Contact& c = contacts[k];
+            // Friction: the TOTAL stays inside the Coulomb cone mu * jn (book §15, Coulomb clamp).
+            const float limit = pair.friction * c.normal.impulse;
+            float speed1, speed2;
+            RowSpeeds(x, t1, c.tangent1, t2, c.tangent2, &speed1, &speed2);
+            float j1 = c.tangent1.impulse - c.tangent1.mass * speed1;
+            float j2 = c.tangent2.impulse - c.tangent2.mass * speed2;
+            const float sq = j1 * j1 + j2 * j2;
+            if (sq > limit * limit) {
+                const float scale = limit > 0.0f ? limit / std::sqrt(sq) : 0.0f;
+                j1 *= scale;
+                j2 *= scale;
+            }
+            const float d1 = j1 - c.tangent1.impulse, d2 = j2 - c.tangent2.impulse;
+            c.tangent1.impulse = j1;
+            c.tangent2.impulse = j2;
+            ApplyRow(x, invA, invB, t1, c.tangent1, d1);
+            ApplyRow(x, invA, invB, t2, c.tangent2, d2);
         }
-        const float d1 = j1 - c.tangent1.impulse, d2 = j2 - c.tangent2.impulse;
-        c.tangent1.impulse = j1;
-        c.tangent2.impulse = j2;
-        ApplyRow(A, B, invA, invB, pair.t1, c.tangent1, d1);
-        ApplyRow(A, B, invA, invB, pair.t2, c.tangent2, d2);
     }
+    StoreVelocities(x, A, B);
 }
 
 void SoftContactSolver::ApplyRestitution(float threshold) {
@@ -453,19 +586,22 @@ void SoftContactSolver::ApplyRestitution(float threshold) {
         if (pair.restitution == 0.0f) continue;
         BodyState& A = state[pair.a];
         BodyState& B = state[pair.b];
+        Velocities x = LoadVelocities(A, B);
         const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
+        const V4 n = Load(pair.n);
         for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
             Contact& c = contacts[k];
             // Only a real impact (closing faster than the threshold before solving) that the solver pushed on.
             if (c.relativeVelocity > -threshold || c.maxNormalImpulse == 0.0f) continue;
-            const float vn = RowSpeed(A, B, pair.n, c.normal);
+            const float vn = RowSpeed(x, n, c.normal);
             const float jn =
                 std::max(c.normal.impulse - c.normal.mass * (vn + pair.restitution * c.relativeVelocity), 0.0f);
             const float dn = jn - c.normal.impulse;
             c.normal.impulse = jn;
             c.maxNormalImpulse = std::max(c.maxNormalImpulse, jn);
-            ApplyRow(A, B, invA, invB, pair.n, c.normal, dn);
+            ApplyRow(x, invA, invB, n, c.normal, dn);
         }
+        StoreVelocities(x, A, B);
     }
 }
 

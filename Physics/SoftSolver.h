@@ -57,45 +57,64 @@ public:
     /// Deepest penetration (m, >= 0) over the contacts found at the start of the last Step.
     float DeepestPenetration() const;
 
+    // The solver's hot data keeps every vec3 on a 16-byte boundary followed by a fourth float, so the inner loops
+    // work on four lanes at once (the fourth lane never reaches a result); each lane does the scalar operations
+    // in the scalar order, so results are the same bits as plain vec3 arithmetic.
+
     /// One row of a contact (normal or tangent direction d): the angular Jacobians and their images under the
     /// world inverse inertias, so solving needs no matrix product.
-    struct Row {
-        vec3 rAxD, rBxD;       // rA x d, rB x d
-        vec3 iArAxD, iBrBxD;   // IA^-1 (rA x d), IB^-1 (rB x d)
+    struct alignas(16) Row {
+        vec3 rAxD;             // rA x d
         float mass = 0.0f;     // 1 / effective inverse mass along d, kg
+        vec3 rBxD;             // rB x d
         float impulse = 0.0f;  // accumulated this substep, N s
+        vec3 iArAxD;           // IA^-1 (rA x d)
+        float padA = 0.0f;
+        vec3 iBrBxD;  // IB^-1 (rB x d)
+        float padB = 0.0f;
     };
     struct Contact {
-        vec3 rA, rB;  // anchors from the body centres at the start of the step, world, m
         Row normal, tangent1, tangent2;
-        float baseSeparation = 0.0f;    // separation - n . (rB - rA): the separation with the step's offsets removed
-        float separation = 0.0f;        // from the manifold, m (< 0 penetrating)
         float current = 0.0f;           // separation at the bodies' present poses (UpdateSeparations), m
         float relativeVelocity = 0.0f;  // normal speed before solving, m/s (restitution)
         float maxNormalImpulse = 0.0f;  // largest total normal impulse of the step, N s
-        std::uint32_t id = 0;           // feature id (ContactManifold.h)
+        float baseSeparation = 0.0f;    // separation - n . (rB - rA): the separation with the step's offsets removed
+        vec3 rA;                        // anchors from the body centres at the start of the step, world, m
+        float separation = 0.0f;        // from the manifold, m (< 0 penetrating)
+        vec3 rB;
+        std::uint32_t id = 0;  // feature id (ContactManifold.h)
     };
-    struct Pair {
+    struct alignas(16) Pair {
+        vec3 n;  // normal from a to b
+        float padN = 0.0f;
+        vec3 t1;  // tangent basis
+        float padT1 = 0.0f;
+        vec3 t2;
+        float padT2 = 0.0f;
         int a = -1, b = -1;                      // indices into the volumes
+        float friction = 0.0f;                   // sqrt(muA muB)
+        float restitution = 0.0f;                // min(eA, eB)
         const RigidbodyVolume* bodyA = nullptr;  // identity check only (a changed body list inherits nothing)
         const RigidbodyVolume* bodyB = nullptr;
-        vec3 n, t1, t2;                    // normal from a to b, tangent basis
-        float friction = 0.0f;             // sqrt(muA muB)
-        float restitution = 0.0f;          // min(eA, eB)
-        bool touchesStatic = false;        // one body is static: the stiffer static softness applies
         std::size_t first = 0, count = 0;  // contacts[first, first + count)
+        bool touchesStatic = false;        // one body is static: the stiffer static softness applies
     };
     /// Per-body solver state of the step (hot: read and written every pass).
-    struct BodyState {
-        vec3 v, w;  // linear (m/s) and angular (rad/s) velocity, world
-        vec3 dp;    // position change since the step began, m
-        mat3 dR;    // rotation since the step began (row-vector form)
+    struct alignas(16) BodyState {
+        vec3 v;  // linear velocity, world, m/s
+        float padV = 0.0f;
+        vec3 w;  // angular velocity, world, rad/s
+        float padW = 0.0f;
+        vec3 dp;  // position change since the step began, m
+        float padP = 0.0f;
+        // Rotation since the step began (row-vector form), rows padded to four floats.
+        float dR[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
     };
     /// Per-body constants of the step and its pose.
-    struct BodySim {
+    struct alignas(16) BodySim {
+        float invI[3][4];   // world inverse inertia at the start of the step (zero for static), rows padded to four
         vec3 p;             // position, m
         quat q, q0;         // orientation now and at the start of the step
-        mat3 invI;          // world inverse inertia at the start of the step (zero for static)
         vec3 inertia;       // principal moments, kg m^2 (body frame): torque-free rotation keeps L (AdvanceRotation)
         vec3 gravity;       // m/s^2 (zero for static)
         vec3 angularAccel;  // I^-1 torque, rad/s^2

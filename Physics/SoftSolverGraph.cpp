@@ -173,8 +173,8 @@ void SoftContactSolver::BuildBatches(const Softness& softness, const Softness& s
                     p.baseSeparation[lane] = c.separation;  // minus n . (rB - rA) below
                     valid[k][lane] = -1;
                 }
-                const mat3& iA = sim[pair.a].invI;
-                const mat3& iB = sim[pair.b].invI;
+                const auto& iA = sim[pair.a].invI;
+                const auto& iB = sim[pair.b].invI;
                 for (int r = 0; r < 3; ++r) {
                     SetLane(&IA[r], lane, vec3(iA[r][0], iA[r][1], iA[r][2]));
                     SetLane(&IB[r], lane, vec3(iB[r][0], iB[r][1], iB[r][2]));
