@@ -152,6 +152,10 @@ private:
     std::size_t resultCount = 0;
     Broadphase broadphase;                            // used only from settings.broadphaseMinVolumes volumes up
     std::vector<std::pair<int, int>> candidatePairs;  // broadphase output, capacity reused
+    struct GrownBounds {
+        vec3 min, max;
+    };
+    std::vector<GrownBounds> smallWorldBounds;  // soft step below broadphaseMinVolumes: grown boxes, capacity reused
     long long stepCount = 0;
     AccumulatedContactSolver accumulatedSolver;  // ch15: arbiter state of ContactSolver::Accumulated
     Islands islands;                             // settings.sleep: islands, sleep times, sleeping bodies

@@ -91,18 +91,25 @@ void PhysicsSystem::StepSoftVolumes(StepContext& ctx) {
     // The all-pairs loop asks for overlapping grown boxes, as the broadphase does: so a small world and a large
     // one find the same pairs, and the solver collides only pairs that can touch this step (in a column of 20
     // cubes, 19 + 1 of its 210 pairs). With sleep on, these pairs also decide which islands wake.
+    // Each body's box grown by the margin and its travel over the step, once per search (not once per pair).
     auto near = [&](std::size_t i, std::size_t j) {
-        vec3 minA, maxA, minB, maxB;
-        VolumeBounds(*volumes[i], &minA, &maxA);
-        VolumeBounds(*volumes[j], &minB, &maxB);
-        const float grow = 2.0f * margin + (Magnitude(volumes[i]->velocity) + Magnitude(volumes[j]->velocity)) * ctx.dt;
+        const GrownBounds& a = smallWorldBounds[i];
+        const GrownBounds& b = smallWorldBounds[j];
         for (int k = 0; k < 3; ++k)
-            if (minA[k] - grow > maxB[k] || minB[k] - grow > maxA[k]) return false;
+            if (a.min[k] > b.max[k] || b.min[k] > a.max[k]) return false;
         return true;
     };
     auto search = [&] {
         candidatePairs.clear();
         if (count < settings.broadphaseMinVolumes) {
+            smallWorldBounds.resize(count);
+            for (std::size_t i = 0; i < count; ++i) {
+                GrownBounds& g = smallWorldBounds[i];
+                VolumeBounds(*volumes[i], &g.min, &g.max);
+                const float grow = margin + Magnitude(volumes[i]->velocity) * ctx.dt;
+                g.min -= vec3(grow, grow, grow);
+                g.max += vec3(grow, grow, grow);
+            }
             for (std::size_t i = 0; i < count; ++i)
                 for (std::size_t j = i + 1; j < count; ++j)
                     if (CanInteract(*volumes[i], *volumes[j]) && (active == nullptr || active[i] || active[j]) &&
