@@ -13,11 +13,9 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
-#include <thread>
 
 #include "Platform/Files/AtomicFile.h"
 #include "Platform/Files/TempRegistry.h"
-#include "Platform/GifFile.h"
 
 namespace {
 
@@ -108,7 +106,6 @@ bool VideoEncoder::Open(const std::string& target, int w, int h, double framesPe
     if (tempPath.empty()) return false;
     logPath = CreateTemporaryBeside(path, &logId, error);
     if (logPath.empty()) return Cleanup(), false;
-    gifMappers = 0;
     if (format == Format::Gif) {
         // The palette needs every frame before the first can be mapped: keep them raw on disk, not in memory, and
         // feed them to palettegen while the run goes on (its statistics are ready when the run ends; only the
@@ -162,8 +159,7 @@ bool VideoEncoder::Open(const std::string& target, int w, int h, double framesPe
     return true;
 }
 
-bool VideoEncoder::Spawn(const std::vector<std::string>& args, bool pipeIn, const std::string& logFile, pid_t* out,
-                         std::string* error) {
+bool VideoEncoder::Spawn(const std::vector<std::string>& args, bool pipeIn, std::string* error) {
     int fds[2] = {-1, -1};
     if (pipeIn && pipe2(fds, O_CLOEXEC) != 0) {
         *error = std::string("pipe failed: ") + std::strerror(errno);
@@ -172,7 +168,7 @@ bool VideoEncoder::Spawn(const std::vector<std::string>& args, bool pipeIn, cons
     std::vector<char*> argv;
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
-    const int log = open(logFile.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+    const int log = open(logPath.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
     const pid_t pid = fork();
     if (pid == 0) {
         // Child: stdin from the pipe (or /dev/null), stdout and stderr to the log, then ffmpeg.
@@ -190,21 +186,21 @@ bool VideoEncoder::Spawn(const std::vector<std::string>& args, bool pipeIn, cons
         *error = std::string("cannot start ffmpeg: ") + std::strerror(errno);
         return false;
     }
-    *out = pid;
+    child = pid;
     RegisterChildProcess(pid);
-    if (pipeIn) pipeFd = fds[1];
+    pipeFd = pipeIn ? fds[1] : -1;
     return true;
 }
 
-bool VideoEncoder::Wait(pid_t* pid, const std::string& logFile, std::string* error) {
+bool VideoEncoder::Wait(std::string* error) {
     int status = 0;
     pid_t r;
-    do r = waitpid(*pid, &status, 0);
+    do r = waitpid(child, &status, 0);
     while (r < 0 && errno == EINTR);
-    UnregisterChildProcess(*pid);
-    *pid = -1;
+    UnregisterChildProcess(child);
+    child = -1;
     if (r > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0) return true;
-    const std::string last = LastLine(logFile);
+    const std::string last = LastLine(logPath);
     *error = "ffmpeg failed" +
              (r > 0 && WIFEXITED(status) ? " with exit code " + std::to_string(WEXITSTATUS(status))
                                          : std::string(" (killed by a signal)")) +
@@ -249,58 +245,19 @@ std::string VideoEncoder::GifResample() const {
     return fps > 50.0 ? "fps=50," : "";
 }
 
-std::vector<std::string> VideoEncoder::GifMapping(int first, int end, const std::string& target) const {
-    // trim counts the frames after the resampling, so the halves split the GIF's own frames; the second half's
-    // timestamps restart at zero (setpts), as its frames' delays are differences of them.
-    std::string range;
-    if (first > 0) range += "trim=start_frame=" + std::to_string(first) + ",setpts=PTS-STARTPTS,";
-    if (end >= 0) range += "trim=end_frame=" + std::to_string(end) + ",";
-    std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y"};
-    for (const std::string& a : GifInput(rawPath)) args.push_back(a);
-    for (const std::string& a :
-         {std::string("-i"), palettePath, std::string("-lavfi"),
-          "[0:v]" + GifResample() + range + "null[v];[v][1:v]paletteuse=dither=none:diff_mode=rectangle",
-          std::string("-loop"), std::string("0"), std::string("-f"), std::string("gif"), target})
-        args.push_back(a);
-    return args;
-}
-
-bool VideoEncoder::EncodeGifInTwo(int split, std::string* error) {
-    partPath = CreateTemporaryBeside(path, &partId, error);
-    if (partPath.empty()) return false;
-    partLogPath = CreateTemporaryBeside(path, &partLogId, error);
-    if (partLogPath.empty()) return false;
-    if (!Spawn(GifMapping(0, split, tempPath), false, logPath, &child, error)) return false;
-    if (!Spawn(GifMapping(split, -1, partPath), false, partLogPath, &partChild, error)) return false;
-    std::string second;
-    const bool firstOk = Wait(&child, logPath, error);
-    const bool secondOk = Wait(&partChild, partLogPath, &second);
-    if (!firstOk) return false;
-    if (!secondOk) return *error = second, false;
-    // Both halves start with the same screen and colour table (one palette): the second's frames go after the
-    // first's. A half that cannot be joined (none is expected) leaves *error empty: one process maps it all.
-    std::string why;
-    if (AppendGifFrames(tempPath, partPath, &why)) return true;
-    error->clear();
-    return false;
-}
-
 bool VideoEncoder::EncodeGif(std::string* error) {
     // Pass 1 (palettegen) has read every frame from its pipe: close it and wait for the palette.
     close(pipeFd);
     pipeFd = -1;
     if (!Wait(error)) return false;
-    // Pass 2 maps every frame to the palette after the run, the one part of a GIF recording that cannot overlap
-    // rendering: two processes each map half of the frames on their own core (the second reads past the first
-    // half without mapping it). Below 2 x kMinHalf frames, or on one core, one process maps them all.
-    constexpr int kMinHalf = 10;
-    const int output = fps > 50.0 ? static_cast<int>(frames * 50.0 / fps) : frames;  // frames after GifResample
-    if (output >= 2 * kMinHalf && std::thread::hardware_concurrency() >= 2) {
-        if (EncodeGifInTwo(output / 2, error)) return gifMappers = 2, true;
-        if (!error->empty()) return false;
-    }
-    gifMappers = 1;
-    return Spawn(GifMapping(0, -1, tempPath), false, error) && Wait(error);
+    std::vector<std::string> pass2 = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y"};
+    for (const std::string& a : GifInput(rawPath)) pass2.push_back(a);
+    for (const std::string& a :
+         {std::string("-i"), palettePath, std::string("-lavfi"),
+          "[0:v]" + GifResample() + "null[v];[v][1:v]paletteuse=dither=none:diff_mode=rectangle", std::string("-loop"),
+          std::string("0"), std::string("-f"), std::string("gif"), tempPath})
+        pass2.push_back(a);
+    return Spawn(pass2, false, error) && Wait(error);
 }
 
 bool VideoEncoder::Finish(std::string* error) {
@@ -338,23 +295,21 @@ bool VideoEncoder::Finish(std::string* error) {
 
 void VideoEncoder::Abort() {
     if (pipeFd >= 0) close(pipeFd), pipeFd = -1;
-    for (pid_t* pid : {&child, &partChild}) {
-        if (*pid <= 0) continue;
-        kill(*pid, SIGKILL);
+    if (child > 0) {
+        kill(child, SIGKILL);
         int status = 0;
-        while (waitpid(*pid, &status, 0) < 0 && errno == EINTR) {
+        while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
         }
-        UnregisterChildProcess(*pid);
-        *pid = -1;
+        UnregisterChildProcess(child);
+        child = -1;
     }
     Cleanup();
 }
 
 void VideoEncoder::Cleanup() {
     if (rawFd >= 0) close(rawFd), rawFd = -1;
-    const std::pair<std::string*, int*> temporaries[] = {{&tempPath, &tempId},       {&rawPath, &rawId},
-                                                         {&palettePath, &paletteId}, {&logPath, &logId},
-                                                         {&partPath, &partId},       {&partLogPath, &partLogId}};
+    const std::pair<std::string*, int*> temporaries[] = {
+        {&tempPath, &tempId}, {&rawPath, &rawId}, {&palettePath, &paletteId}, {&logPath, &logId}};
     for (const auto& [path, id] : temporaries) {
         if (!path->empty()) unlink(path->c_str());
         path->clear();

@@ -3,8 +3,7 @@
 // pipe to an ffmpeg process, which encodes on its own core while the caller renders the next frames.
 // .mp4 is H.264 (libx264 ultrafast), .webm is VP9 (libvpx-vp9 realtime), .gif uses a palette generated from
 // all the frames (palettegen, then paletteuse without dithering, so the demos' flat colours stay exact): a
-// second pass after the run, split over two ffmpeg processes, so a GIF costs more than the other two
-// (bench/video_bench.sh).
+// second pass after the run, so a GIF costs more than the other two (bench/video_bench.sh).
 // The file appears only when the recording is complete: ffmpeg writes a temporary file beside it, renamed at
 // Finish; Abort (or the destructor) removes it, and so does SIGINT/SIGTERM (Platform/Files/TempRegistry.h),
 // after killing ffmpeg. docs/app.md, "Video".
@@ -43,28 +42,12 @@ public:
     void Abort();
     bool IsOpen() const { return child > 0 || !rawPath.empty(); }
     int FramesWritten() const { return frames; }
-    /// GIF: how many ffmpeg processes mapped the frames to the palette at the last Finish (2 when the halves were
-    /// joined, 1 otherwise; 0 before a GIF was finished).
-    int GifMappingProcesses() const { return gifMappers; }
 
 private:
-    /// Starts ffmpeg with `args`, its output to `log`, stdin from a new pipe (pipeFd) or /dev/null; *pid its id.
-    bool Spawn(const std::vector<std::string>& args, bool pipeIn, const std::string& log, pid_t* pid,
-               std::string* error);
-    /// Waits for *pid (then -1); false with the last line of `log` if it failed.
-    bool Wait(pid_t* pid, const std::string& log, std::string* error);
-    bool Spawn(const std::vector<std::string>& args, bool pipeIn, std::string* error) {
-        return Spawn(args, pipeIn, logPath, &child, error);
-    }
-    bool Wait(std::string* error) { return Wait(&child, logPath, error); }
-    /// GIF: closes palettegen's pipe, waits for the palette, then maps the raw frames with paletteuse: in two
-    /// processes at once, each mapping half of the frames, joined (Platform/GifFile.h); in one if that fails.
+    bool Spawn(const std::vector<std::string>& args, bool pipeIn, std::string* error);
+    bool Wait(std::string* error);
+    /// GIF: closes palettegen's pipe, waits for the palette, then maps the raw frames with paletteuse.
     bool EncodeGif(std::string* error);
-    /// paletteuse over the output frames [first, end) (end -1: to the last) into `target`.
-    std::vector<std::string> GifMapping(int first, int end, const std::string& target) const;
-    /// The two-process mapping: true when the joined GIF is in tempPath; false, with *error, if ffmpeg failed;
-    /// false with *error empty if the halves could not be joined (the caller maps in one process).
-    bool EncodeGifInTwo(int split, std::string* error);
     /// ffmpeg arguments reading this recording's raw RGB frames from `source` (a file or pipe:0).
     std::vector<std::string> GifInput(const std::string& source) const;
     /// "fps=50," above 50 fps (GIF delays are hundredths of a second), else "".
@@ -73,12 +56,10 @@ private:
 
     Format format = Format::Mp4;
     std::string path, tempPath, rawPath, palettePath, logPath;
-    std::string partPath, partLogPath;  // GIF: the second half's file and ffmpeg log
-    int tempId = -1, rawId = -1, paletteId = -1, logId = -1, partId = -1, partLogId = -1;  // TempRegistry slots
-    int width = 0, height = 0, frames = 0, gifMappers = 0;
+    int tempId = -1, rawId = -1, paletteId = -1, logId = -1;  // TempRegistry slots of the temporaries
+    int width = 0, height = 0, frames = 0;
     double fps = 60.0;
     pid_t child = -1;
-    pid_t partChild = -1;  // GIF: the process mapping the second half
     int pipeFd = -1;
     int rawFd = -1;
 };

@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
-#include <thread>
 
 namespace {
 
@@ -51,7 +50,7 @@ protected:
         if (!dir.empty()) fs::remove_all(dir);
     }
     /// Records `count` frames of w x h at fps; returns the path (empty on failure, with a test failure).
-    std::string Record(const std::string& name, int w, int h, int count, double fps, int* gifMappers = nullptr) {
+    std::string Record(const std::string& name, int w, int h, int count, double fps) {
         const std::string path = (dir / name).string();
         VideoEncoder video;
         std::string error;
@@ -59,7 +58,6 @@ protected:
         for (int i = 0; i < count; ++i) EXPECT_TRUE(video.WriteFrame(Frame(w, h, i), &error)) << error;
         EXPECT_FALSE(fs::exists(path)) << "the file must appear only when complete";
         EXPECT_TRUE(video.Finish(&error)) << error;
-        if (gifMappers != nullptr) *gifMappers = video.GifMappingProcesses();
         return path;
     }
     std::string Probe(const std::string& path, const std::string& entries) {
@@ -112,32 +110,6 @@ TEST_F(VideoEncoderTest, GifKeepsTheExactColoursAndResamplesSixtyToFifty) {
     ASSERT_EQ(std::fread(decoded.rgb.data(), 1, decoded.rgb.size(), f), decoded.rgb.size());
     std::fclose(f);
     EXPECT_TRUE(decoded == Frame(64, 48, 0));
-}
-
-// From 20 frames on, the GIF's frames are mapped to the palette in two ffmpeg processes, each half joined after
-// the other (Platform/GifFile.h): every frame decodes back exactly, once, in order, with its 2/100 s.
-TEST_F(VideoEncoderTest, GifMappedInTwoHalvesHoldsEveryFrameOnceInOrder) {
-    const int count = 41;  // at 50 fps: no resampling; halves of 20 and 21 frames
-    int mappers = 0;
-    const std::string path = Record("halves.gif", 64, 48, count, 50.0, &mappers);
-    if (std::thread::hardware_concurrency() >= 2) {
-        EXPECT_EQ(mappers, 2) << "the halves were not joined";
-    }
-    EXPECT_EQ(Probe(path, "stream=nb_read_frames"), std::to_string(count));
-    EXPECT_NEAR(std::stod(Probe(path, "format=duration")), count / 50.0, 0.011);
-    const std::string raw = (dir / "all.rgb").string();
-    Shell("ffmpeg -v error -y -i '" + path + "' -f rawvideo -pix_fmt rgb24 '" + raw + "'");
-    std::FILE* f = std::fopen(raw.c_str(), "rb");
-    ASSERT_NE(f, nullptr);
-    Image decoded(64, 48);
-    for (int i = 0; i < count; ++i) {
-        ASSERT_EQ(std::fread(decoded.rgb.data(), 1, decoded.rgb.size(), f), decoded.rgb.size()) << "frame " << i;
-        EXPECT_TRUE(decoded == Frame(64, 48, i)) << "frame " << i;
-    }
-    EXPECT_EQ(std::fgetc(f), EOF) << "more frames than recorded";
-    std::fclose(f);
-    fs::remove(raw);
-    EXPECT_EQ(Leftovers("halves.gif"), 0);
 }
 
 TEST_F(VideoEncoderTest, AbortAndFailuresLeaveNothingBehind) {
