@@ -76,6 +76,11 @@ void Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::ve
     pairs->clear();
     raw.clear();
     const int n = static_cast<int>(volumes.size());
+    // Every pair needs a moving body: a world that is all asleep (or all static) has none, and costs one pass.
+    bool anyMoving = false;
+    for (int i = 0; i < n && !anyMoving; ++i)
+        anyMoving = active != nullptr ? active[i] != 0 : volumes[static_cast<std::size_t>(i)]->mass > 0.0f;
+    if (!anyMoving) return;
     bodies.resize(static_cast<std::size_t>(n));
     cellRanges.resize(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
