@@ -187,6 +187,16 @@ void CollideVolumes(const RigidbodyVolume& a, const RigidbodyVolume& b, float ma
     }
 }
 
+/// The pairs a pass solves one by one, in order: with colouring the overflow (after the batches), else every pair.
+template <typename Pair, typename F>
+void ForSerialPairs(bool colouring, const std::vector<int>& overflow, const std::vector<Pair>& pairs, F&& f) {
+    if (colouring) {
+        for (const int i : overflow) f(pairs[static_cast<std::size_t>(i)]);
+    } else {
+        for (const Pair& pair : pairs) f(pair);
+    }
+}
+
 }  // namespace
 
 Softness MakeSoftness(float hertz, float zeta, float h) {
@@ -393,11 +403,7 @@ void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
 }
 
 void SoftContactSolver::Prepare(const std::vector<RigidbodyVolume*>& /*volumes*/, const StepContext& /*ctx*/) {
-    if (colouring) {
-        for (const int i : overflow) PreparePair(pairs[static_cast<std::size_t>(i)]);
-        return;
-    }
-    for (const Pair& pair : pairs) PreparePair(pair);
+    ForSerialPairs(colouring, overflow, pairs, [this](const Pair& pair) { PreparePair(pair); });
 }
 
 void SoftContactSolver::PreparePair(const Pair& pair) {
@@ -461,12 +467,8 @@ void SoftContactSolver::IntegratePositions(const StepContext& ctx) {
 }
 
 void SoftContactSolver::UpdateSeparations() {
-    if (colouring) {
-        WideUpdateSeparations();
-        for (const int i : overflow) UpdatePairSeparations(pairs[static_cast<std::size_t>(i)]);
-        return;
-    }
-    for (const Pair& pair : pairs) UpdatePairSeparations(pair);
+    if (colouring) WideUpdateSeparations();
+    ForSerialPairs(colouring, overflow, pairs, [this](const Pair& pair) { UpdatePairSeparations(pair); });
 }
 
 void SoftContactSolver::UpdatePairSeparations(const Pair& pair) {
@@ -486,12 +488,8 @@ void SoftContactSolver::UpdatePairSeparations(const Pair& pair) {
 }
 
 void SoftContactSolver::WarmStart() {
-    if (colouring) {
-        WideWarmStart();
-        for (const int i : overflow) WarmStartPair(pairs[static_cast<std::size_t>(i)]);
-        return;
-    }
-    for (const Pair& pair : pairs) WarmStartPair(pair);
+    if (colouring) WideWarmStart();
+    ForSerialPairs(colouring, overflow, pairs, [this](const Pair& pair) { WarmStartPair(pair); });
 }
 
 void SoftContactSolver::WarmStartPair(const Pair& pair) {
@@ -512,16 +510,10 @@ void SoftContactSolver::WarmStartPair(const Pair& pair) {
 
 void SoftContactSolver::Solve(float invH, const Softness& dynamicSoftness, const Softness& staticSoftness,
                               float maxPushout, float slop, bool useBias) {
-    if (colouring) {
-        WideSolve(invH, maxPushout, slop, useBias);
-        for (const int i : overflow) {
-            const Pair& pair = pairs[static_cast<std::size_t>(i)];
-            SolvePair(pair, pair.touchesStatic ? staticSoftness : dynamicSoftness, invH, maxPushout, slop, useBias);
-        }
-        return;
-    }
-    for (const Pair& pair : pairs)
+    if (colouring) WideSolve(invH, maxPushout, slop, useBias);
+    ForSerialPairs(colouring, overflow, pairs, [&](const Pair& pair) {
         SolvePair(pair, pair.touchesStatic ? staticSoftness : dynamicSoftness, invH, maxPushout, slop, useBias);
+    });
 }
 
 void SoftContactSolver::SolvePair(const Pair& pair, const Softness& softness, float invH, float maxPushout, float slop,
