@@ -136,11 +136,9 @@ void SoftContactSolver::BuildBatches(const Softness& softness, const Softness& s
     for (int colour = 0; colour < kColours; ++colour) {
         const std::vector<int>& list = colourPairs[colour];
         for (std::size_t first = 0; first < list.size(); first += 4) {
-            batches.emplace_back();
+            batches.emplace_back();  // value-initialised: every lane and point zero
             WideBatch& batch = batches.back();
-            batch = WideBatch{};
             batch.colour = colour;
-            batch.pointCount = 0;
             Vec4x3 IA[3] = {}, IB[3] = {};  // the lanes' world inverse inertias, by rows
             Mask4 valid[4] = {};            // point k of lane l exists
             for (int lane = 0; lane < 4; ++lane) {
