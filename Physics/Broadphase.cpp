@@ -76,10 +76,13 @@ void Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::ve
     pairs->clear();
     raw.clear();
     const int n = static_cast<int>(volumes.size());
-    // Every pair needs a moving body: a world that is all asleep (or all static) has none, and costs one pass.
+    // A body moves when it is active (with sleep) or dynamic. Every pair needs a moving body: a world that is all
+    // asleep (or all static) has none, and costs one pass.
+    auto moves = [&](int i) {
+        return active != nullptr ? active[i] != 0 : volumes[static_cast<std::size_t>(i)]->mass > 0.0f;
+    };
     bool anyMoving = false;
-    for (int i = 0; i < n && !anyMoving; ++i)
-        anyMoving = active != nullptr ? active[i] != 0 : volumes[static_cast<std::size_t>(i)]->mass > 0.0f;
+    for (int i = 0; i < n && !anyMoving; ++i) anyMoving = moves(i);
     if (!anyMoving) return;
     bodies.resize(static_cast<std::size_t>(n));
     cellRanges.resize(static_cast<std::size_t>(n));
@@ -92,7 +95,7 @@ void Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::ve
             body.min -= vec3(grow, grow, grow);
             body.max += vec3(grow, grow, grow);
         }
-        body.moving = active != nullptr ? active[i] != 0 : volume.mass > 0.0f;
+        body.moving = moves(i);
     }
     BuildGrid(n);
     PairsInCells(&raw);

@@ -156,12 +156,10 @@ public:
 
     /// Colours of the constraint graph: a pair takes the first colour neither of its moving bodies has.
     static constexpr int kColours = 24;
-    /// Batches of the last Step and the pairs left over (both bodies already in every colour), for tests.
+    /// The last Step's pairs, its batches, and the pairs left over (a moving body already in every colour).
     const std::vector<Pair>& Pairs() const { return pairs; }
     const std::vector<WideBatch>& Batches() const { return batches; }
     const std::vector<int>& OverflowPairs() const { return overflow; }
-    std::size_t BatchCount() const { return batches.size(); }
-    std::size_t OverflowCount() const { return overflow.size(); }
 
 private:
     // Graph colouring (SoftSolverGraph.cpp): batches built once per step after Prepare; each pass runs the

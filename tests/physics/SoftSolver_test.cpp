@@ -248,8 +248,8 @@ TEST(SoftSolverGraph, ColoursShareNoMovingBody) {
         std::sort(bodies.begin(), bodies.end());
         EXPECT_TRUE(std::adjacent_find(bodies.begin(), bodies.end()) == bodies.end());
     }
-    std::printf("pyramid 12: %zu pairs in %zu batches, %zu overflow\n", pairs.size(), solver.BatchCount(),
-                solver.OverflowCount());
+    std::printf("pyramid 12: %zu pairs in %zu batches, %zu overflow\n", pairs.size(), solver.Batches().size(),
+                solver.OverflowPairs().size());
 }
 
 // Four cubes apart on the ground, one dropped, one sliding, one spinning: the four pairs share only the static
@@ -268,8 +268,8 @@ TEST(SoftSolverGraph, OneBatchInPairOrderEqualsTheOneByOneSolveBitForBit) {
         single.system.Update(kDt);
         ASSERT_EQ(StateOf(wide), StateOf(single)) << "step " << i;
     }
-    EXPECT_EQ(wide.system.SoftSolver().BatchCount(), 1u);
-    EXPECT_EQ(single.system.SoftSolver().BatchCount(), 0u);
+    EXPECT_EQ(wide.system.SoftSolver().Batches().size(), 1u);
+    EXPECT_EQ(single.system.SoftSolver().Batches().size(), 0u);
     EXPECT_GT(wide.Body(3).position.x, 2.5f);  // the slider moved
 }
 
@@ -289,11 +289,11 @@ TEST(SoftSolverGraph, PairsBeyondTheColoursAreSolvedOneByOne) {
     world.system.settings.contactSolver = ContactSolver::Soft;
     for (int i = 0; i < 120; ++i) world.system.Update(kDt);
     const SoftContactSolver& solver = world.system.SoftSolver();
-    EXPECT_GT(solver.OverflowCount(), 0u);
+    EXPECT_GT(solver.OverflowPairs().size(), 0u);
     std::size_t inBatches = 0;
     for (const SoftContactSolver::WideBatch& batch : solver.Batches())
         for (int lane = 0; lane < 4; ++lane) inBatches += batch.pair[lane] >= 0 ? 1u : 0u;
-    EXPECT_EQ(inBatches + solver.OverflowCount(), solver.Pairs().size());
+    EXPECT_EQ(inBatches + solver.OverflowPairs().size(), solver.Pairs().size());
     for (std::size_t i = 2; i < world.Bodies().size(); ++i) {
         EXPECT_NEAR(world.Body(i).position.y, 1.0f, 0.01f) << "cube " << i - 2;
         EXPECT_LT(Magnitude(world.Body(i).velocity), 0.01f) << "cube " << i - 2;
