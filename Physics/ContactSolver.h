@@ -42,15 +42,15 @@ constexpr ContactSolver kAllContactSolvers[] = {ContactSolver::Book, ContactSolv
 /// Settings of ContactSolver::Soft (WorldSettings::soft). Its friction and restitution combine as the book's do.
 struct SoftSolverSettings {
     /// Substeps per step, count (each: integrate velocities, warm start, solve, integrate positions, relax).
-    int substeps = 4;
+    int substeps = 6;
     /// Biased solve passes per substep, count (Box2D's soft step: 1).
     int iterations = 1;
     /// Relax passes (no bias) per substep, count (Box2D's soft step: 1).
     int relaxIterations = 1;
     /// Hz: stiffness of the contact constraint; capped at a quarter of the substep rate.
-    float contactHertz = 30.0f;
+    float contactHertz = 90.0f;
     /// Damping ratio of the contact spring, dimensionless (1 critical; larger is stiffer to push-out overshoot).
-    float contactDampingRatio = 10.0f;
+    float contactDampingRatio = 1.0f;
     /// m/s: the fastest a penetrating contact is pushed apart by the position bias.
     float maxPushoutSpeed = 3.0f;
     /// m: contacts are created while the surfaces are within this distance (speculative contacts).

@@ -156,6 +156,8 @@ public:
 
     /// Colours of the constraint graph: a pair takes the first colour neither of its moving bodies has.
     static constexpr int kColours = 24;
+    /// Passes of the restitution solve over a pair's impact points (ApplyRestitution).
+    static constexpr int kRestitutionPasses = 4;
     /// The last Step's pairs, its batches, and the pairs left over (a moving body already in every colour).
     const std::vector<Pair>& Pairs() const { return pairs; }
     const std::vector<WideBatch>& Batches() const { return batches; }

@@ -236,31 +236,8 @@ void SoftContactSolver::WideSolve(float invH, float maxPushout, float slop, bool
     const Float4 invH4 = Splat(invH), slop4 = Splat(slop), pushout = Splat(-maxPushout);
     for (WideBatch& batch : batches) {
         WideBodies s = Gather(state, batch);
-        for (int k = 0; k < batch.pointCount; ++k) {
-            WidePoint& p = batch.points[k];
-            // SolvePair's normal row: speculative (s > 0) rigid with bias s/h; penetrating with the soft bias and
-            // scales when biased; rigid without bias in the relax pass.
-            const Float4 sep = p.current;
-            const auto speculative = sep > zero;
-            Float4 bias = zero, massScale = one, impulseScale = zero;
-            if (useBias) {
-                bias = Max(batch.biasRate * Min(sep + slop4, zero), pushout);
-                massScale = batch.massScale;
-                impulseScale = batch.impulseScale;
-            }
-            bias = Select(speculative, sep * invH4, bias);
-            massScale = Select(speculative, one, massScale);
-            impulseScale = Select(speculative, zero, impulseScale);
-            const Float4 vn = RowSpeed(s, batch.n, p.normal);
-            if (useBias) p.relativeVelocity = Min(p.relativeVelocity, vn);
-            const Float4 J = p.normal.impulse;
-            const Float4 jn = Max(J - p.normal.mass * massScale * (vn + bias) - impulseScale * J, zero);
-            p.normal.impulse = jn;
-            p.maxNormalImpulse = Max(p.maxNormalImpulse, jn);
-            ApplyRow(s, batch.invMassA, batch.invMassB, batch.n, p.normal, jn - J);
-        }
         if (!useBias) {
-            // Friction in the relax pass only, as in SolvePair.
+            // Friction in the relax pass only, and before the normal rows, as in SolvePair.
             for (int k = 0; k < batch.pointCount; ++k) {
                 WidePoint& p = batch.points[k];
                 const Float4 limit = batch.friction * p.normal.impulse;
@@ -280,6 +257,29 @@ void SoftContactSolver::WideSolve(float invH, float maxPushout, float slop, bool
                 ApplyRow(s, batch.invMassA, batch.invMassB, batch.t1, p.tangent1, d1);
                 ApplyRow(s, batch.invMassA, batch.invMassB, batch.t2, p.tangent2, d2);
             }
+        }
+        for (int k = 0; k < batch.pointCount; ++k) {
+            WidePoint& p = batch.points[k];
+            // SolvePair's normal row: speculative (s > 0) rigid with bias s/h; penetrating with the soft bias and
+            // scales when biased; rigid without bias in the relax pass.
+            const Float4 sep = p.current;
+            const auto speculative = sep > zero;
+            Float4 bias = zero, massScale = one, impulseScale = zero;
+            if (useBias) {
+                bias = Max(batch.biasRate * Min(sep + slop4, zero), pushout);
+                massScale = batch.massScale;
+                impulseScale = batch.impulseScale;
+            }
+            bias = Select(speculative, sep * invH4, bias);
+            massScale = Select(speculative, one, massScale);
+            impulseScale = Select(speculative, zero, impulseScale);
+            const Float4 vn = RowSpeed(s, batch.n, p.normal);
+            const Float4 J = p.normal.impulse;
+            if (useBias) p.relativeVelocity = Select(J == zero, Min(p.relativeVelocity, vn), p.relativeVelocity);
+            const Float4 jn = Max(J - p.normal.mass * massScale * (vn + bias) - impulseScale * J, zero);
+            p.normal.impulse = jn;
+            p.maxNormalImpulse = Max(p.maxNormalImpulse, jn);
+            ApplyRow(s, batch.invMassA, batch.invMassB, batch.n, p.normal, jn - J);
         }
         Scatter(state, sim, batch, s);
     }

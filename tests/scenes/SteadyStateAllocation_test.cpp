@@ -96,11 +96,14 @@ TEST(SteadyStateAllocation, Ch15BoxesAccumulatedSolver) {
 }
 
 // The soft solver (solver=soft) on a pile of 200 boxes found by the broadphase: its contact and body arrays, the
-// broadphase's and the candidate list are reused, not regrown, once the pile has settled.
+// broadphase's and the candidate list are reused, not regrown, once the pile has settled. The cubes are inelastic
+// (as the peer benchmark's): columns of ten cubes dropped onto each other with e = 0.5 bounce, and some topple long
+// after the warm-up, which is motion, not a steady state.
 TEST(SteadyStateAllocation, BoxpileSoftSolver) {
     BodySpec cube = BoxSpec(vec3(), vec3(0.5f, 0.5f, 0.5f), 1.0f);
     cube.velocityRetention = 1.0f;
     cube.velocityEpsilon = 0.0f;
+    cube.restitution = 0.0f;
     RigidWorld world(WithGround(GroundSpec(vec3(50.0f, 0.5f, 50.0f)), Boxpile(200, cube)));
     world.system.settings.contactSolver = ContactSolver::Soft;
     ASSERT_GE(world.system.Volumes().size(), world.system.settings.broadphaseMinVolumes);
