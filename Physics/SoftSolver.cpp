@@ -565,7 +565,7 @@ void SoftContactSolver::SolvePair(const Pair& pair, const Softness& softness, fl
         const float vn = RowSpeed(x, n, c.normal);
         // Restitution works from the fastest closing speed met before solving (the impact substep), not from
         // the step's start, which misses up to g dt of the fall.
-        if (useBias && c.normal.impulse == 0.0f) c.relativeVelocity = std::min(c.relativeVelocity, vn);
+        if (useBias) c.relativeVelocity = std::min(c.relativeVelocity, vn);
         const float jn = std::max(
             c.normal.impulse - c.normal.mass * massScale * (vn + bias) - impulseScale * c.normal.impulse, 0.0f);
         const float dn = jn - c.normal.impulse;

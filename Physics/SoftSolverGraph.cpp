@@ -274,8 +274,8 @@ void SoftContactSolver::WideSolve(float invH, float maxPushout, float slop, bool
             massScale = Select(speculative, one, massScale);
             impulseScale = Select(speculative, zero, impulseScale);
             const Float4 vn = RowSpeed(s, batch.n, p.normal);
+            if (useBias) p.relativeVelocity = Min(p.relativeVelocity, vn);
             const Float4 J = p.normal.impulse;
-            if (useBias) p.relativeVelocity = Select(J == zero, Min(p.relativeVelocity, vn), p.relativeVelocity);
             const Float4 jn = Max(J - p.normal.mass * massScale * (vn + bias) - impulseScale * J, zero);
             p.normal.impulse = jn;
             p.maxNormalImpulse = Max(p.maxNormalImpulse, jn);
