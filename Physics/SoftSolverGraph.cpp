@@ -6,6 +6,8 @@
 // solve order is a fixed function of the pairs (deterministic).
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 
 #include "Physics/SoftSolver.h"
 
@@ -65,34 +67,77 @@ inline Vec4x3 Mul(const Vec4x3& v, const Vec4x3 (&m)[3]) {
             v.x * m[0].z + v.y * m[1].z + v.z * m[2].z};
 }
 
+static_assert(sizeof(vec3) == 12 && offsetof(SoftContactSolver::BodyState, v) == 0 &&
+                  offsetof(SoftContactSolver::BodyState, w) == 16,
+              "BodyState's v and w must each fill 16 bytes with their padding (Load4, Scatter)");
+
+/// A vec3 with its padding float (16 bytes, 16-aligned in BodyState) as one Float4.
+inline Float4 Load4(const vec3& v) {
+    Float4 r;
+    std::memcpy(&r, &v.x, sizeof(r));
+    return r;
+}
+
+/// Four rows (x, y, z, pad) of lanes 0..3 turned into the lanes' x, y and z (a 4x4 transpose: data moves only).
+inline Vec4x3 Transpose(Float4 r0, Float4 r1, Float4 r2, Float4 r3) {
+    const Float4 xy01 = __builtin_shufflevector(r0, r1, 0, 4, 1, 5);  // x0 x1 y0 y1
+    const Float4 xy23 = __builtin_shufflevector(r2, r3, 0, 4, 1, 5);
+    const Float4 zp01 = __builtin_shufflevector(r0, r1, 2, 6, 3, 7);  // z0 z1 p0 p1
+    const Float4 zp23 = __builtin_shufflevector(r2, r3, 2, 6, 3, 7);
+    return {__builtin_shufflevector(xy01, xy23, 0, 1, 4, 5), __builtin_shufflevector(xy01, xy23, 2, 3, 6, 7),
+            __builtin_shufflevector(zp01, zp23, 0, 1, 4, 5)};
+}
+
+/// The inverse: lane l's (x, y, z, 0) as row l.
+inline void Untranspose(const Vec4x3& v, Float4 (&row)[4]) {
+    const Float4 zero = {0.0f, 0.0f, 0.0f, 0.0f};
+    const Float4 xy01 = __builtin_shufflevector(v.x, v.y, 0, 4, 1, 5);  // x0 y0 x1 y1
+    const Float4 xy23 = __builtin_shufflevector(v.x, v.y, 2, 6, 3, 7);
+    const Float4 z01 = __builtin_shufflevector(v.z, zero, 0, 4, 1, 5);  // z0 0 z1 0
+    const Float4 z23 = __builtin_shufflevector(v.z, zero, 2, 6, 3, 7);
+    row[0] = __builtin_shufflevector(xy01, z01, 0, 1, 4, 5);
+    row[1] = __builtin_shufflevector(xy01, z01, 2, 3, 6, 7);
+    row[2] = __builtin_shufflevector(xy23, z23, 0, 1, 4, 5);
+    row[3] = __builtin_shufflevector(xy23, z23, 2, 3, 6, 7);
+}
+
 /// The lanes' body velocities (zero for an empty lane).
 WideBodies Gather(const std::vector<SoftContactSolver::BodyState>& state, const WideBatch& batch) {
-    WideBodies s = {};
+    const Float4 zero = {0.0f, 0.0f, 0.0f, 0.0f};
+    Float4 vA[4], wA[4], vB[4], wB[4];
     for (int lane = 0; lane < 4; ++lane) {
-        if (batch.pair[lane] < 0) continue;
+        if (batch.pair[lane] < 0) {
+            vA[lane] = wA[lane] = vB[lane] = wB[lane] = zero;
+            continue;
+        }
         const SoftContactSolver::BodyState& A = state[static_cast<std::size_t>(batch.a[lane])];
         const SoftContactSolver::BodyState& B = state[static_cast<std::size_t>(batch.b[lane])];
-        SetLane(&s.vA, lane, A.v);
-        SetLane(&s.wA, lane, A.w);
-        SetLane(&s.vB, lane, B.v);
-        SetLane(&s.wB, lane, B.w);
+        vA[lane] = Load4(A.v);
+        wA[lane] = Load4(A.w);
+        vB[lane] = Load4(B.v);
+        wB[lane] = Load4(B.w);
     }
-    return s;
+    return {Transpose(vA[0], vA[1], vA[2], vA[3]), Transpose(wA[0], wA[1], wA[2], wA[3]),
+            Transpose(vB[0], vB[1], vB[2], vB[3]), Transpose(wB[0], wB[1], wB[2], wB[3])};
 }
 
 /// Writes the lanes' velocities back to their moving bodies (static and sleeping ones are never written).
-void Scatter(std::vector<SoftContactSolver::BodyState>& state, const std::vector<SoftContactSolver::BodySim>& sim,
-             const WideBatch& batch, const WideBodies& s) {
+void Scatter(std::vector<SoftContactSolver::BodyState>& state, const WideBatch& batch, const WideBodies& s) {
+    Float4 vA[4], wA[4], vB[4], wB[4];
+    Untranspose(s.vA, vA);
+    Untranspose(s.wA, wA);
+    Untranspose(s.vB, vB);
+    Untranspose(s.wB, wB);
     for (int lane = 0; lane < 4; ++lane) {
-        if (batch.pair[lane] < 0) continue;
-        const std::size_t a = static_cast<std::size_t>(batch.a[lane]), b = static_cast<std::size_t>(batch.b[lane]);
-        if (sim[a].dynamic) {
-            state[a].v = Lane(s.vA, lane);
-            state[a].w = Lane(s.wA, lane);
+        if ((batch.movesA >> lane & 1u) != 0u) {
+            SoftContactSolver::BodyState& A = state[static_cast<std::size_t>(batch.a[lane])];
+            std::memcpy(&A.v.x, &vA[lane], sizeof(Float4));
+            std::memcpy(&A.w.x, &wA[lane], sizeof(Float4));
         }
-        if (sim[b].dynamic) {
-            state[b].v = Lane(s.vB, lane);
-            state[b].w = Lane(s.wB, lane);
+        if ((batch.movesB >> lane & 1u) != 0u) {
+            SoftContactSolver::BodyState& B = state[static_cast<std::size_t>(batch.b[lane])];
+            std::memcpy(&B.v.x, &vB[lane], sizeof(Float4));
+            std::memcpy(&B.w.x, &wB[lane], sizeof(Float4));
         }
     }
 }
@@ -149,6 +194,8 @@ void SoftContactSolver::BuildBatches(const Softness& softness, const Softness& s
                 batch.pair[lane] = index;
                 batch.a[lane] = pair.a;
                 batch.b[lane] = pair.b;
+                if (sim[pair.a].dynamic) batch.movesA |= static_cast<std::uint8_t>(1u << lane);
+                if (sim[pair.b].dynamic) batch.movesB |= static_cast<std::uint8_t>(1u << lane);
                 SetLane(&batch.n, lane, pair.n);
                 SetLane(&batch.t1, lane, pair.t1);
                 SetLane(&batch.t2, lane, pair.t2);
@@ -227,7 +274,7 @@ void SoftContactSolver::WideWarmStart() {
             ApplyRow(s, batch.invMassA, batch.invMassB, batch.t1, p.tangent1, p.tangent1.impulse);
             ApplyRow(s, batch.invMassA, batch.invMassB, batch.t2, p.tangent2, p.tangent2.impulse);
         }
-        Scatter(state, sim, batch, s);
+        Scatter(state, batch, s);
     }
 }
 
@@ -281,7 +328,7 @@ void SoftContactSolver::WideSolve(float invH, float maxPushout, float slop, bool
             p.maxNormalImpulse = Max(p.maxNormalImpulse, jn);
             ApplyRow(s, batch.invMassA, batch.invMassB, batch.n, p.normal, jn - J);
         }
-        Scatter(state, sim, batch, s);
+        Scatter(state, batch, s);
     }
 }
 
