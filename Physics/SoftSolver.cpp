@@ -263,9 +263,11 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
         for (int k = 0; k < soft.iterations; ++k)
             Solve(ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, true);
         IntegratePositions(ctx);
-        UpdateSeparations();
+        // The first relax pass brings each pair's separations up to date as it reaches the pair (the same values
+        // UpdateSeparations gives: poses do not change during a pass); without one, UpdateSeparations does.
+        if (soft.relaxIterations == 0) UpdateSeparations();
         for (int k = 0; k < soft.relaxIterations; ++k)
-            Solve(ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, false);
+            Solve(ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, false, k == 0);
     }
     if (colouring) StoreBatchImpulses();
     ApplyRestitution(soft.restitutionThreshold);
@@ -509,9 +511,10 @@ void SoftContactSolver::WarmStartPair(const Pair& pair) {
 }
 
 void SoftContactSolver::Solve(float invH, const Softness& dynamicSoftness, const Softness& staticSoftness,
-                              float maxPushout, float slop, bool useBias) {
-    if (colouring) WideSolve(invH, maxPushout, slop, useBias);
+                              float maxPushout, float slop, bool useBias, bool updateSeparations) {
+    if (colouring) WideSolve(invH, maxPushout, slop, useBias, updateSeparations);
     ForSerialPairs(colouring, overflow, pairs, [&](const Pair& pair) {
+        if (updateSeparations) UpdatePairSeparations(pair);
         SolvePair(pair, pair.touchesStatic ? staticSoftness : dynamicSoftness, invH, maxPushout, slop, useBias);
     });
 }

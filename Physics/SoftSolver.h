@@ -170,8 +170,11 @@ private:
     // restitution.
     void BuildBatches(const Softness& softness, const Softness& staticSoftness);
     void WideUpdateSeparations();
+    void UpdateBatchSeparations(WideBatch& batch) const;
     void WideWarmStart();
-    void WideSolve(float invH, float maxPushout, float slop, bool useBias);
+    /// One pass over the batches; `updateSeparations`: each batch first brings its separations up to date (the
+    /// first relax pass after IntegratePositions does UpdateSeparations' work on the batches it visits anyway).
+    void WideSolve(float invH, float maxPushout, float slop, bool useBias, bool updateSeparations);
     void StoreBatchImpulses();
     /// One pair of the scalar passes (the overflow, or every pair without colouring).
     void WarmStartPair(const Pair& pair);
@@ -192,7 +195,7 @@ private:
     void IntegratePositions(const StepContext& ctx);
     void WarmStart();
     void Solve(float invH, const Softness& softness, const Softness& staticSoftness, float maxPushout, float slop,
-               bool useBias);
+               bool useBias, bool updateSeparations = false);
     void ApplyRestitution(float threshold);
     void StoreBodies(const std::vector<RigidbodyVolume*>& volumes);
 

@@ -68,8 +68,8 @@ inline Vec4x3 Mul(const Vec4x3& v, const Vec4x3 (&m)[3]) {
 }
 
 static_assert(sizeof(vec3) == 12 && offsetof(SoftContactSolver::BodyState, v) == 0 &&
-                  offsetof(SoftContactSolver::BodyState, w) == 16,
-              "BodyState's v and w must each fill 16 bytes with their padding (Load4, Scatter)");
+                  offsetof(SoftContactSolver::BodyState, w) == 16 && offsetof(SoftContactSolver::BodyState, dp) == 32,
+              "BodyState's v, w and dp must each fill 16 bytes with their padding (Load4, Scatter)");
 
 /// A vec3 with its padding float (16 bytes, 16-aligned in BodyState) as one Float4.
 inline Float4 Load4(const vec3& v) {
@@ -242,26 +242,38 @@ void SoftContactSolver::BuildBatches(const Softness& softness, const Softness& s
 }
 
 void SoftContactSolver::WideUpdateSeparations() {
+    for (WideBatch& batch : batches) UpdateBatchSeparations(batch);
+}
+
+void SoftContactSolver::UpdateBatchSeparations(WideBatch& batch) const {
     // UpdatePairSeparations four wide: s = s_base + n . ((dpB - dpA) + rB dRB - rA dRA), rows of dR as vectors.
-    for (WideBatch& batch : batches) {
-        Vec4x3 dpA = {}, dpB = {}, RA[3] = {}, RB[3] = {};
-        for (int lane = 0; lane < 4; ++lane) {
-            if (batch.pair[lane] < 0) continue;
-            const BodyState& A = state[static_cast<std::size_t>(batch.a[lane])];
-            const BodyState& B = state[static_cast<std::size_t>(batch.b[lane])];
-            SetLane(&dpA, lane, A.dp);
-            SetLane(&dpB, lane, B.dp);
-            for (int r = 0; r < 3; ++r) {
-                SetLane(&RA[r], lane, vec3(A.dR[r][0], A.dR[r][1], A.dR[r][2]));
-                SetLane(&RB[r], lane, vec3(B.dR[r][0], B.dR[r][1], B.dR[r][2]));
-            }
+    // The lanes' dp and dR rows, each a padded 16-byte row of BodyState, transposed (an empty lane: zeros).
+    const Float4 zero = Splat(0.0f);
+    Float4 rows[2][4][4];  // [A, B][dp, dR row 0, 1, 2][lane]
+    for (int lane = 0; lane < 4; ++lane) {
+        if (batch.pair[lane] < 0) {
+            for (auto& body : rows)
+                for (auto& row : body) row[lane] = zero;
+            continue;
         }
-        const Vec4x3 dp = Sub(dpB, dpA);
-        for (int k = 0; k < batch.pointCount; ++k) {
-            WidePoint& p = batch.points[k];
-            const Vec4x3 d = Sub(Add(dp, Mul(p.rB, RB)), Mul(p.rA, RA));
-            p.current = Dot(d, batch.n) + p.baseSeparation;
+        const BodyState* bodies[2] = {&state[static_cast<std::size_t>(batch.a[lane])],
+                                      &state[static_cast<std::size_t>(batch.b[lane])]};
+        for (int i = 0; i < 2; ++i) {
+            rows[i][0][lane] = Load4(bodies[i]->dp);
+            for (int r = 0; r < 3; ++r) std::memcpy(&rows[i][r + 1][lane], bodies[i]->dR[r], sizeof(Float4));
         }
+    }
+    auto lanes = [&rows](int body, int row) {
+        const Float4(&r)[4] = rows[body][row];
+        return Transpose(r[0], r[1], r[2], r[3]);
+    };
+    const Vec4x3 RA[3] = {lanes(0, 1), lanes(0, 2), lanes(0, 3)};
+    const Vec4x3 RB[3] = {lanes(1, 1), lanes(1, 2), lanes(1, 3)};
+    const Vec4x3 dp = Sub(lanes(1, 0), lanes(0, 0));
+    for (int k = 0; k < batch.pointCount; ++k) {
+        WidePoint& p = batch.points[k];
+        const Vec4x3 d = Sub(Add(dp, Mul(p.rB, RB)), Mul(p.rA, RA));
+        p.current = Dot(d, batch.n) + p.baseSeparation;
     }
 }
 
@@ -278,10 +290,11 @@ void SoftContactSolver::WideWarmStart() {
     }
 }
 
-void SoftContactSolver::WideSolve(float invH, float maxPushout, float slop, bool useBias) {
+void SoftContactSolver::WideSolve(float invH, float maxPushout, float slop, bool useBias, bool updateSeparations) {
     const Float4 zero = Splat(0.0f), one = Splat(1.0f);
     const Float4 invH4 = Splat(invH), slop4 = Splat(slop), pushout = Splat(-maxPushout);
     for (WideBatch& batch : batches) {
+        if (updateSeparations) UpdateBatchSeparations(batch);
         WideBodies s = Gather(state, batch);
         if (!useBias) {
             // Friction in the relax pass only, and before the normal rows, as in SolvePair.
