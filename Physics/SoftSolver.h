@@ -159,7 +159,8 @@ public:
     static constexpr int kColours = 24;
     /// Passes of the restitution solve over a pair's impact points (ApplyRestitution).
     static constexpr int kRestitutionPasses = 4;
-    /// The last Step's pairs, its batches, and the pairs left over (a moving body already in every colour).
+    /// The last Step's pairs, its batches, and the pairs solved one by one after them (a moving body already in
+    /// every colour, or the one pair of a colour's last batch).
     const std::vector<Pair>& Pairs() const { return pairs; }
     const std::vector<WideBatch>& Batches() const { return batches; }
     const std::vector<int>& OverflowPairs() const { return overflow; }
@@ -204,7 +205,7 @@ private:
     std::vector<Pair> pairs, previousPairs;
     std::vector<Contact> contacts, previousContacts;
     std::vector<WideBatch> batches;
-    std::vector<int> overflow;               // pair indices solved one by one after the batches
+    std::vector<int> overflow;               // pair indices solved one by one after the batches (OverflowPairs)
     std::vector<std::uint32_t> bodyColours;  // per body: the colours it has this step (bit c)
     std::vector<int> colourPairs[kColours];  // pair indices of each colour, in pair order
     bool colouring = false;                  // this step solves by batches
