@@ -35,6 +35,6 @@ struct SoftSolverLimits {
 void AddContactSolverParameters(ParameterSet* set, int* solverIndex, SoftSolverSettings* soft, bool* sleep,
                                 const std::string& solverHelp, const std::function<void()>& onChange);
 
-/// The panel row naming a non-book solver in effect ("Contact solver: accumulated", "Contact solver: soft, 4
-/// substeps, 30 Hz"); "" for the book's (its panels stay the book's).
+/// The panel row naming a non-book solver in effect ("Contact solver: accumulated", "Contact solver: soft, 6
+/// substeps, 90 Hz"); "" for the book's (its panels stay the book's).
 std::string ContactSolverRow(ContactSolver solver, const SoftSolverSettings& soft);
