@@ -95,6 +95,19 @@ inline float Dot(V4 a, V4 b) { return a.f[0] * b.f[0] + a.f[1] * b.f[1] + a.f[2]
 inline float SumDot3(V4 a0, V4 b0, V4 a1, V4 b1, V4 a2, V4 b2) { return Dot(a0, b0) + Dot(a1, b1) - Dot(a2, b2); }
 #endif
 
+/// Below this square of half a substep's turn (x = |w| h / 2 < 0.1 rad), SmallTurn replaces Integrate.
+constexpr float kSmallHalfTurnSq = 0.01f;
+
+/// Integrate (Math/quaternion.h: q' = exp(w h / 2) q, normalised) for an isotropic body's small turn, with sin x / x
+/// and cos x of the half angle from their Taylor series to x^6 and x^8 (the first terms left out are below 3e-15
+/// at x = 0.1, far under float's rounding): the substep loop then pays no sin, cos or square root of the axis for
+/// the small turns a substep makes (they were a tenth of a 100-box pile's step). x2 = x^2.
+inline quat SmallTurn(const quat& q, const vec3& w, float h, float x2) {
+    const float k = 0.5f * h * (1.0f - x2 / 6.0f * (1.0f - x2 / 20.0f * (1.0f - x2 / 42.0f)));  // (h / 2) sin x / x
+    const float c = 1.0f - x2 / 2.0f * (1.0f - x2 / 12.0f * (1.0f - x2 / 30.0f * (1.0f - x2 / 56.0f)));  // cos x
+    return Normalized(quat(w.x * k, w.y * k, w.z * k, c) * q);
+}
+
 /// A pair's two bodies' velocities as lanes while its contacts are solved.
 struct Velocities {
     V4 vA, wA, vB, wB;
@@ -313,6 +326,7 @@ void SoftContactSolver::LoadBodies(const std::vector<RigidbodyVolume*>& volumes,
             bs.invI[r][3] = 0.0f;
         }
         bs.inertia = body.LocalInertia();
+        bs.isotropic = bs.inertia.x == bs.inertia.y && bs.inertia.y == bs.inertia.z;
         // The book's force model: forces = gravity * mass (ApplyForces), plus any torque the body carries.
         bs.gravity = body.gravity;
         bs.angularAccel = Mul(body.torques, invI);
@@ -459,8 +473,11 @@ void SoftContactSolver::IntegratePositions(const StepContext& ctx) {
         // angular momentum of a body whose principal moments differ (AdvanceRotation: between contacts a box turns
         // as a free body does, not at a constant w); the rotation since the step began moves the fixed anchors
         // (Solve).
-        if (MagnitudeSq(st.w) > 0.0f) {
-            bs.q = AdvanceRotation(bs.q, &st.w, bs.inertia, h);
+        const float w2 = MagnitudeSq(st.w);
+        if (w2 > 0.0f) {
+            const float x2 = 0.25f * h * h * w2;  // the square of half the substep's turn, rad^2
+            bs.q = bs.isotropic && x2 < kSmallHalfTurnSq ? SmallTurn(bs.q, st.w, h, x2)
+                                                          : AdvanceRotation(bs.q, &st.w, bs.inertia, h);
             const mat3 dR = ToMat3(bs.q * Conjugate(bs.q0));
             for (int r = 0; r < 3; ++r)
                 for (int k = 0; k < 3; ++k) st.dR[r][k] = dR[r][k];

@@ -122,6 +122,7 @@ public:
         float retention = 1.0f;  // velocity kept per substep (FactorOverStep of the body's retention)
         float epsilon = 0.0f;    // velocity components below this are zeroed per substep
         bool dynamic = false;
+        bool isotropic = false;  // equal principal moments: a free turn keeps w (IntegratePositions' SmallTurn)
     };
 
     /// Four floats, one per lane of a wide batch (GCC/Clang vector extension: element-wise arithmetic).
