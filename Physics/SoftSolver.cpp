@@ -477,7 +477,7 @@ void SoftContactSolver::IntegratePositions(const StepContext& ctx) {
         if (w2 > 0.0f) {
             const float x2 = 0.25f * h * h * w2;  // the square of half the substep's turn, rad^2
             bs.q = bs.isotropic && x2 < kSmallHalfTurnSq ? SmallTurn(bs.q, st.w, h, x2)
-                                                          : AdvanceRotation(bs.q, &st.w, bs.inertia, h);
+                                                         : AdvanceRotation(bs.q, &st.w, bs.inertia, h);
             const mat3 dR = ToMat3(bs.q * Conjugate(bs.q0));
             for (int r = 0; r < 3; ++r)
                 for (int k = 0; k < 3; ++k) st.dR[r][k] = dR[r][k];

@@ -148,7 +148,7 @@ public:
         int colour = 0;
         int pair[4];
         int a[4], b[4];
-        int pointCount;  // most points of any lane
+        int pointCount;               // most points of any lane
         std::uint8_t movesA, movesB;  // bit l: lane l's body a (b) moves, so the batch writes its velocities back
         Vec4x3 n, t1, t2;
         Float4 invMassA, invMassB, friction;
