@@ -185,8 +185,9 @@ private:
     void PreparePair(const Pair& pair);
 
     /// Current separation of every contact from the bodies' motion since the step began. Poses change only in
-    /// IntegratePositions, so this runs once before the substeps and once after each integration, and every
-    /// solve pass in between reads it.
+    /// IntegratePositions, so separations are brought up to date once before the substeps (here) and once after
+    /// each integration (by the first relax pass, pair by pair as it reaches them; here when there is no relax
+    /// pass), and every solve pass in between reads them.
     void UpdateSeparations();
     void LoadBodies(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx, const unsigned char* active);
     void Collide(const std::vector<RigidbodyVolume*>& volumes, const std::vector<std::pair<int, int>>& candidates,

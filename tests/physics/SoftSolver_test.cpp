@@ -318,6 +318,25 @@ TEST(SoftSolverGraph, OneBatchInPairOrderEqualsTheOneByOneSolveBitForBit) {
     EXPECT_GT(wide.Body(3).position.x, 2.5f);  // the slider moved
 }
 
+// A column of 10 cubes is 10 pairs in two colours of five (ground-cube 0, cubes 1-2, ... and cubes 0-1, 2-3, ...):
+// each colour is a batch of four and a lone fifth pair, which is solved one by one with the overflow instead of
+// as a batch of four lanes with three empty. The column still stands.
+TEST(SoftSolverGraph, ALonePairIsSolvedOneByOne) {
+    RigidWorld world(PeerTower(10));
+    world.system.settings.contactSolver = ContactSolver::Soft;
+    for (int i = 0; i < 120; ++i) world.system.Update(kDt);
+    const SoftContactSolver& solver = world.system.SoftSolver();
+    ASSERT_EQ(solver.Pairs().size(), 10u);
+    EXPECT_EQ(solver.Batches().size(), 2u);
+    for (const SoftContactSolver::WideBatch& batch : solver.Batches()) {
+        int lanes = 0;
+        for (int lane = 0; lane < 4; ++lane) lanes += batch.pair[lane] >= 0 ? 1 : 0;
+        EXPECT_EQ(lanes, 4);
+    }
+    EXPECT_EQ(solver.OverflowPairs().size(), 2u);
+    EXPECT_LT(world.MaxDisplacement(), 0.01f);
+}
+
 // A plate carrying 36 cubes is in 37 pairs, more than there are colours: the pairs past the last colour are
 // solved one by one after the batches, and the cubes rest on the plate as the others do.
 TEST(SoftSolverGraph, PairsBeyondTheColoursAreSolvedOneByOne) {
