@@ -8,14 +8,19 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "Platform/Files/AtomicFile.h"
 #include "Platform/Files/TempRegistry.h"
+#include "Platform/GifJoin.h"
+#include "Platform/PngCodec.h"
+#include "Platform/Yuv420.h"
 
 namespace {
 
@@ -43,6 +48,21 @@ bool WriteAll(int fd, const std::uint8_t* data, std::size_t size, std::string* e
         size -= std::size_t(n);
     }
     return true;
+}
+
+/// Writes bytes into the file at path (an existing temporary), replacing its contents.
+bool WriteWhole(const std::string& path, const std::vector<std::uint8_t>& bytes, std::string* error) {
+    const int fd = open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+    if (fd < 0) {
+        *error = "cannot open " + path + ": " + std::strerror(errno);
+        return false;
+    }
+    const bool ok = WriteAll(fd, bytes.data(), bytes.size(), error, path.c_str());
+    if (close(fd) != 0 && ok) {
+        *error = "writing " + path + " failed: " + std::strerror(errno);
+        return false;
+    }
+    return ok;
 }
 
 /// The last non-empty line of a text file ("" if none).
@@ -107,50 +127,23 @@ bool VideoEncoder::Open(const std::string& target, int w, int h, double framesPe
     logPath = CreateTemporaryBeside(path, &logId, error);
     if (logPath.empty()) return Cleanup(), false;
     if (format == Format::Gif) {
-        // The palette needs every frame before the first can be mapped: keep them raw on disk, not in memory, and
-        // feed them to palettegen while the run goes on (its statistics are ready when the run ends; only the
-        // mapping pass, paletteuse, runs after it).
-        rawPath = CreateTemporaryBeside(path, &rawId, error);
-        if (rawPath.empty()) return Cleanup(), false;
-        rawFd = open(rawPath.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
-        if (rawFd < 0) {
-            *error = "cannot open " + rawPath + ": " + std::strerror(errno);
-            return Cleanup(), false;
-        }
-        palettePath = CreateTemporaryBeside(path, &paletteId, error);
-        if (palettePath.empty()) return Cleanup(), false;
-        std::vector<std::string> pass1 = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y"};
-        for (const std::string& a : GifInput("pipe:0")) pass1.push_back(a);
-        for (const std::string& a :
-             {std::string("-vf"), GifResample() + "palettegen=stats_mode=full:reserve_transparent=0",
-              std::string("-c:v"), std::string("png"), std::string("-f"), std::string("image2"), palettePath})
-            pass1.push_back(a);
-        if (!Spawn(pass1, true, error)) return Cleanup(), false;
+        // A palette generated from all the frames could only be applied after the run. Instead the GIF is made
+        // in parts of gifPartFrames frames, each with a palette generated from its own frames and mapped by
+        // its own ffmpeg while the next part renders; JoinGifs puts the parts together at Finish.
+        if (gifPartFrames < 1) gifPartFrames = DefaultGifPartFrames(width, height);
         return true;
     }
-    std::vector<std::string> args = {"ffmpeg",
-                                     "-hide_banner",
-                                     "-loglevel",
-                                     "error",
-                                     "-y",
-                                     "-f",
-                                     "rawvideo",
-                                     "-pix_fmt",
-                                     "rgb24",
-                                     "-video_size",
-                                     std::to_string(w) + "x" + std::to_string(h),
-                                     "-framerate",
-                                     Number(fps),
-                                     "-i",
-                                     "pipe:0",
-                                     "-vf",
-                                     "pad=ceil(iw/2)*2:ceil(ih/2)*2"};
+    std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y", "-f", "rawvideo",
+                                     // Frames arrive as yuv420p, converted by WriteFrame (Platform/Yuv420.h).
+                                     "-pix_fmt", "yuv420p", "-video_size",
+                                     std::to_string(EvenSide(w)) + "x" + std::to_string(EvenSide(h)), "-framerate",
+                                     Number(fps), "-i", "pipe:0"};
     if (format == Format::Mp4) {
         for (const char* a : {"-c:v", "libx264", "-preset", "ultrafast", "-crf", "18", "-pix_fmt", "yuv420p",
                               "-movflags", "+faststart", "-f", "mp4"})
             args.push_back(a);
     } else {
-        for (const char* a : {"-c:v", "libvpx-vp9", "-deadline", "realtime", "-cpu-used", "8", "-row-mt", "1", "-b:v",
+        for (const char* a : {"-c:v", "libvpx-vp9", "-deadline", "realtime", "-cpu-used", "8", "-threads", "1", "-b:v",
                               "0", "-crf", "30", "-pix_fmt", "yuv420p", "-f", "webm"})
             args.push_back(a);
     }
@@ -168,7 +161,7 @@ bool VideoEncoder::Spawn(const std::vector<std::string>& args, bool pipeIn, std:
     std::vector<char*> argv;
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
-    const int log = open(logPath.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+    const int log = open(logPath.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);  // parts share it
     const pid_t pid = fork();
     if (pid == 0) {
         // Child: stdin from the pipe (or /dev/null), stdout and stderr to the log, then ffmpeg.
@@ -214,13 +207,17 @@ bool VideoEncoder::WriteFrame(const Image& frame, std::string* error) {
                  ", the recording " + std::to_string(width) + "x" + std::to_string(height);
         return false;
     }
-    if (pipeFd < 0 || (format == Format::Gif && rawFd < 0)) {
+    if (!IsOpen()) {
         *error = "video recording is not open";
         return false;
     }
-    if (format == Format::Gif && !WriteAll(rawFd, frame.rgb.data(), frame.rgb.size(), error, rawPath.c_str()))
+    if (format == Format::Gif) return WriteGifFrame(frame, error);
+    if (pipeFd < 0) {
+        *error = "video recording is not open";
         return false;
-    if (!WriteAll(pipeFd, frame.rgb.data(), frame.rgb.size(), error, "ffmpeg")) {
+    }
+    RgbToYuv420(frame, &yuv);
+    if (!WriteAll(pipeFd, yuv.data(), yuv.size(), error, "ffmpeg")) {
         // ffmpeg went away: its own message says why.
         close(pipeFd);
         pipeFd = -1;
@@ -233,31 +230,210 @@ bool VideoEncoder::WriteFrame(const Image& frame, std::string* error) {
     return true;
 }
 
-std::vector<std::string> VideoEncoder::GifInput(const std::string& source) const {
-    return {"-f",         "rawvideo",    "-pix_fmt",
-            "rgb24",      "-video_size", std::to_string(width) + "x" + std::to_string(height),
-            "-framerate", Number(fps),   "-i",
-            source};
+int VideoEncoder::DefaultGifPartFrames(int w, int h) {
+    // A part's frames wait in a raw file (4 bytes a pixel) until the part is complete, and the run waits for the
+    // last part's mapping: at most 100 frames (2 s at GIF's 50 fps; 70 to 150 measured alike at 800x600) and
+    // 192 MiB, at least 10.
+    const long long bytes = 4LL * w * h;
+    return int(std::clamp<long long>((192LL << 20) / bytes, 10, 100));
 }
 
-std::string VideoEncoder::GifResample() const {
-    // GIF delays are whole hundredths of a second: above 50 fps, resample to 50 (2/100 s per frame).
-    return fps > 50.0 ? "fps=50," : "";
+double VideoEncoder::GifFramesPerSecond() const { return std::min(fps, 50.0); }
+
+bool VideoEncoder::KeepGifFrame(int i) const {
+    // GIF delays are whole hundredths of a second: above 50 fps, frames are resampled to 50. Output frame j
+    // shows the input frame nearest its time j / 50 (as ffmpeg's fps filter does): frame i is kept when an
+    // output time falls in [(i - 1/2) / fps, (i + 1/2) / fps).
+    if (fps <= 50.0) return true;
+    const double ratio = 50.0 / fps;
+    return std::ceil((i + 0.5) * ratio) > std::ceil((i - 0.5) * ratio);
 }
 
-bool VideoEncoder::EncodeGif(std::string* error) {
-    // Pass 1 (palettegen) has read every frame from its pipe: close it and wait for the palette.
-    close(pipeFd);
+bool VideoEncoder::AddGifColour(std::uint32_t rgb) {
+    // Open addressing in 512 slots for at most 256 colours (0: empty; colours are stored with bit 24 set).
+    const std::uint32_t key = rgb | 0x1000000u;
+    for (std::uint32_t h = (rgb * 2654435761u) >> 23;; h = (h + 1) & 511u) {
+        if (gifColourSlots[h] == key) return true;
+        if (gifColourSlots[h] == 0) {
+            if (gifColours.size() == 256) return false;
+            gifColourSlots[h] = key;
+            gifColours.push_back(rgb);
+            return true;
+        }
+    }
+}
+
+void VideoEncoder::TrackGifColours(const Image& frame) {
+    // The colours of a part: every pixel of its first frame, then those that differ from the previous frame
+    // (the demos change a fraction of a percent of their pixels a frame). Stops counting past 256.
+    if (gifColoursOverflow) return;
+    const std::uint8_t* p = frame.rgb.data();
+    const std::uint8_t* q = gifPartFrameCount > 0 ? gifPrevious.rgb.data() : nullptr;
+    const std::size_t n = frame.rgb.size();
+    constexpr std::size_t kRun = 48;  // 16 pixels compared at once
+    for (std::size_t i = 0; i < n;) {
+        if (q && i + kRun <= n && std::memcmp(p + i, q + i, kRun) == 0) {
+            i += kRun;
+            continue;
+        }
+        const std::size_t end = q ? std::min(n, i + kRun) : n;
+        for (; i < end; i += 3) {
+            if (q && p[i] == q[i] && p[i + 1] == q[i + 1] && p[i + 2] == q[i + 2]) continue;
+            if (!AddGifColour(std::uint32_t(p[i]) << 16 | std::uint32_t(p[i + 1]) << 8 | p[i + 2])) {
+                gifColoursOverflow = true;
+                return;
+            }
+        }
+    }
+}
+
+bool VideoEncoder::WriteGifFrame(const Image& frame, std::string* error) {
+    if (!KeepGifFrame(frames)) return ++frames, true;
+    if (gifPartFrameCount == gifPartFrames && !EndGifPart(error)) return false;
+    if (gifPartFrameCount == 0 && !BeginGifPart(error)) return false;
+    TrackGifColours(frame);
+    // Stored as BGRA, the only format paletteuse takes: converting here costs less than ffmpeg's conversion.
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    gifBgra.resize(4 * pixels);
+    const std::uint8_t* in = frame.rgb.data();
+    std::uint8_t* out = gifBgra.data();
+    for (std::size_t i = 0; i < pixels; ++i, in += 3, out += 4)
+        out[0] = in[2], out[1] = in[1], out[2] = in[0], out[3] = 255;
+    if (!WriteAll(gifRawFd, gifBgra.data(), gifBgra.size(), error, gifRaw[gifRawIndex].path.c_str())) return false;
+    gifPrevious.rgb.assign(frame.rgb.begin(), frame.rgb.end());
+    ++gifPartFrameCount;
+    ++frames;
+    return true;
+}
+
+bool VideoEncoder::BeginGifPart(std::string* error) {
+    // Parts take turns over three raw files, rewritten in place (new pages for every part cost more than the
+    // copy). The part that last used this file must have finished reading it.
+    gifRawIndex = (gifRawIndex + 1) % 3;
+    TempFile& raw = gifRaw[gifRawIndex];
+    for (std::size_t k = 0; k < gifParts.size(); ++k)
+        if (gifParts[k].rawIndex == gifRawIndex && !WaitGifPart(k, error)) return false;
+    if (raw.path.empty() && (raw.path = CreateTemporaryBeside(path, &raw.id, error)).empty()) return false;
+    gifRawFd = open(raw.path.c_str(), O_WRONLY | O_CLOEXEC);
+    if (gifRawFd < 0) {
+        *error = "cannot open " + raw.path + ": " + std::strerror(errno);
+        return false;
+    }
+    gifColours.clear();
+    std::fill(std::begin(gifColourSlots), std::end(gifColourSlots), 0u);
+    gifColoursOverflow = false;
+    // The part's ffmpeg starts now, so that its start-up (about 0.07 s of loading libraries) overlaps the
+    // part's frames: it waits for the palette on its standard input, which EndGifPart writes, and only then
+    // opens the raw file, complete by then.
+    GifPart part;
+    part.rawIndex = gifRawIndex;
+    part.gif.path = CreateTemporaryBeside(path, &part.gif.id, error);
+    gifParts.push_back(part);
+    if (part.gif.path.empty()) return false;
+    std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y",
+                                     "-f",     "png_pipe",     "-i",        "pipe:0"};
+    for (const std::string& a : GifRawInput(raw.path)) args.push_back(a);
+    // paletteuse maps without dithering, so the demos' flat colours stay exact, and only the rectangle that
+    // changed since the previous frame.
+    for (const std::string& a : std::vector<std::string>{"-filter_complex", "[1:v][0:v]" + GifMapping()})
+        args.push_back(a);
+    for (const std::string& a : GifOutput(part.gif.path)) args.push_back(a);
+    if (!Spawn(args, true, error)) return false;
+    gifParts.back().pid = child;
+    gifParts.back().paletteFd = pipeFd;
+    child = -1;
     pipeFd = -1;
-    if (!Wait(error)) return false;
-    std::vector<std::string> pass2 = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y"};
-    for (const std::string& a : GifInput(rawPath)) pass2.push_back(a);
-    for (const std::string& a :
-         {std::string("-i"), palettePath, std::string("-lavfi"),
-          "[0:v]" + GifResample() + "null[v];[v][1:v]paletteuse=dither=none:diff_mode=rectangle", std::string("-loop"),
-          std::string("0"), std::string("-f"), std::string("gif"), tempPath})
-        pass2.push_back(a);
-    return Spawn(pass2, false, error) && Wait(error);
+    return true;
+}
+
+std::vector<std::string> VideoEncoder::GifRawInput(const std::string& raw) const {
+    return {"-f",          "rawvideo",
+            "-pix_fmt",    "bgra",
+            "-video_size", std::to_string(width) + "x" + std::to_string(height),
+            "-framerate",  Number(GifFramesPerSecond()),
+            "-i",          raw};
+}
+
+std::vector<std::string> VideoEncoder::GifOutput(const std::string& gif) const {
+    // The delay after a part's last frame is one frame's: ffmpeg cannot know it for a part of one frame, and
+    // would write 0 (which players and ffmpeg's own reader take as a tenth of a second).
+    const long delay = std::lround(100.0 / GifFramesPerSecond());
+    return {"-final_delay", std::to_string(delay), "-loop", "0", "-f", "gif", gif};
+}
+
+std::string VideoEncoder::GifMapping() { return "paletteuse=dither=none:diff_mode=rectangle"; }
+
+bool VideoEncoder::EndGifPart(std::string* error) {
+    const TempFile& raw = gifRaw[gifRawIndex];
+    GifPart& part = gifParts.back();
+    const int fd = gifRawFd;
+    gifRawFd = -1;
+    const bool truncated = ftruncate(fd, off_t(4LL * width * height * gifPartFrameCount)) == 0;  // shorter?
+    gifPartFrameCount = 0;
+    if (close(fd) != 0 || !truncated) {
+        *error = "writing " + raw.path + " failed: " + std::strerror(errno);
+        return false;
+    }
+    const int paletteFd = part.paletteFd;
+    part.paletteFd = -1;
+    if (!gifColoursOverflow) {
+        // At most 256 colours: the palette is exactly the part's colours (what palettegen would find, without
+        // reading the frames again), in increasing order, as the 16x16 image paletteuse reads.
+        std::sort(gifColours.begin(), gifColours.end());
+        Image image(16, 16);
+        for (std::size_t k = 0; k < 256; ++k) {
+            const std::uint32_t c = gifColours[std::min(k, gifColours.size() - 1)];
+            std::uint8_t* px = &image.rgb[3 * k];
+            px[0] = std::uint8_t(c >> 16), px[1] = std::uint8_t(c >> 8), px[2] = std::uint8_t(c);
+        }
+        std::vector<std::uint8_t> png;
+        if (!EncodePng(image, PngOptions{}, &png, error)) return close(paletteFd), false;
+        const bool sent = WriteAll(paletteFd, png.data(), png.size(), error, "ffmpeg");
+        close(paletteFd);
+        if (sent) return true;
+        // ffmpeg went away before reading its palette: its own message says why.
+        child = part.pid;
+        part.pid = -1;
+        Wait(error);
+        return false;
+    }
+    // More than 256: palettegen chooses them from the part's frames (stats_mode=full: weighted by area), in an
+    // ffmpeg of its own instead of the waiting one.
+    close(paletteFd);
+    kill(part.pid, SIGKILL);
+    child = part.pid;
+    part.pid = -1;
+    std::string ignored;
+    Wait(&ignored);
+    std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y"};
+    for (const std::string& a : GifRawInput(raw.path)) args.push_back(a);
+    args.push_back("-filter_complex");
+    args.push_back("[0:v]split[keep][stats];[stats]palettegen=stats_mode=full:reserve_transparent=0[p];[keep][p]" +
+                   GifMapping());
+    for (const std::string& a : GifOutput(part.gif.path)) args.push_back(a);
+    if (!Spawn(args, false, error)) return false;
+    part.pid = child;
+    child = -1;
+    return true;
+}
+
+bool VideoEncoder::WaitGifPart(std::size_t k, std::string* error) {
+    GifPart& part = gifParts[k];
+    if (part.pid <= 0) return true;
+    child = part.pid;
+    part.pid = -1;
+    part.rawIndex = -1;  // done with its raw file
+    return Wait(error);
+}
+
+bool VideoEncoder::JoinGifParts(std::string* error) {
+    if (gifPartFrameCount > 0 && !EndGifPart(error)) return false;
+    std::vector<std::vector<std::uint8_t>> bytes(gifParts.size());
+    for (std::size_t k = 0; k < gifParts.size(); ++k)
+        if (!WaitGifPart(k, error) || !ReadFileBytes(gifParts[k].gif.path, &bytes[k], error)) return false;
+    std::vector<std::uint8_t> joined;
+    if (!JoinGifs(bytes, &joined, error)) return false;
+    return WriteWhole(tempPath, joined, error);
 }
 
 bool VideoEncoder::Finish(std::string* error) {
@@ -267,11 +443,8 @@ bool VideoEncoder::Finish(std::string* error) {
     }
     bool ok = true;
     if (format == Format::Gif) {
-        ok = close(rawFd) == 0;
-        rawFd = -1;
-        if (!ok) *error = "writing " + rawPath + " failed: " + std::strerror(errno);
-        ok = ok && (frames > 0 || (*error = "no frames were recorded", false)) && EncodeGif(error);
-        if (!ok && child > 0) {  // palettegen still reading its pipe (the run failed before EncodeGif)
+        ok = (frames > 0 || (*error = "no frames were recorded", false)) && JoinGifParts(error);
+        if (!ok) {  // parts may still be running (the run failed before JoinGifParts)
             Abort();
             return false;
         }
@@ -295,25 +468,40 @@ bool VideoEncoder::Finish(std::string* error) {
 
 void VideoEncoder::Abort() {
     if (pipeFd >= 0) close(pipeFd), pipeFd = -1;
-    if (child > 0) {
-        kill(child, SIGKILL);
+    std::vector<pid_t> running = {child};
+    for (GifPart& part : gifParts) {
+        running.push_back(part.pid), part.pid = -1;
+        if (part.paletteFd >= 0) close(part.paletteFd), part.paletteFd = -1;
+    }
+    if (gifRawFd >= 0) close(gifRawFd), gifRawFd = -1;
+    child = -1;
+    for (const pid_t pid : running) {
+        if (pid <= 0) continue;
+        kill(pid, SIGKILL);
         int status = 0;
-        while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
         }
-        UnregisterChildProcess(child);
-        child = -1;
+        UnregisterChildProcess(pid);
     }
     Cleanup();
 }
 
 void VideoEncoder::Cleanup() {
-    if (rawFd >= 0) close(rawFd), rawFd = -1;
-    const std::pair<std::string*, int*> temporaries[] = {
-        {&tempPath, &tempId}, {&rawPath, &rawId}, {&palettePath, &paletteId}, {&logPath, &logId}};
-    for (const auto& [path, id] : temporaries) {
-        if (!path->empty()) unlink(path->c_str());
-        path->clear();
+    std::vector<TempFile*> temporaries = {&gifRaw[0], &gifRaw[1], &gifRaw[2]};
+    for (GifPart& part : gifParts) temporaries.push_back(&part.gif);
+    for (TempFile* file : temporaries) {
+        if (!file->path.empty()) unlink(file->path.c_str());
+        file->path.clear();
+        UnregisterTemporary(file->id);
+        file->id = -1;
+    }
+    for (auto [file, id] : {std::pair<std::string*, int*>{&tempPath, &tempId}, {&logPath, &logId}}) {
+        if (!file->empty()) unlink(file->c_str());
+        file->clear();
         UnregisterTemporary(*id);
         *id = -1;
     }
+    gifParts.clear();
+    gifPartFrameCount = 0;
+    gifRawIndex = -1;
 }

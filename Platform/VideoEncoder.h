@@ -1,15 +1,20 @@
 #pragma once
-// Records frames as a video through the ffmpeg program (Debian's `ffmpeg`): frames go as raw RGB down a
-// pipe to an ffmpeg process, which encodes on its own core while the caller renders the next frames.
-// .mp4 is H.264 (libx264 ultrafast), .webm is VP9 (libvpx-vp9 realtime), .gif uses a palette generated from
-// all the frames (palettegen, then paletteuse without dithering, so the demos' flat colours stay exact): a
-// second pass after the run, so a GIF costs more than the other two (bench/video_bench.sh).
+// Records frames as a video through the ffmpeg program (Debian's `ffmpeg`), which encodes in processes of its
+// own while the caller renders the next frames.
+// - .mp4 is H.264 (libx264 ultrafast), .webm VP9 (libvpx-vp9 realtime, one thread): frames go down a pipe to one
+//   ffmpeg, converted here to yuv420p (Platform/Yuv420.h; ffmpeg's own conversion cost as much as encoding).
+// - .gif is made in parts of up to 100 frames. Each part's palette is generated from its own frames: exactly
+//   its colours when there are at most 256 (counted here as the frames arrive), else by palettegen. Each part
+//   is mapped by paletteuse (no dithering, so the demos' flat colours stay exact) in an ffmpeg started with the
+//   part, while the next part renders; the parts are joined at Finish (Platform/GifJoin.h).
 // The file appears only when the recording is complete: ffmpeg writes a temporary file beside it, renamed at
 // Finish; Abort (or the destructor) removes it, and so does SIGINT/SIGTERM (Platform/Files/TempRegistry.h),
 // after killing ffmpeg. docs/app.md, "Video".
 
 #include <sys/types.h>
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -40,26 +45,72 @@ public:
     bool Finish(std::string* error);
     /// Stops ffmpeg if it runs and removes every temporary file. Safe to call at any time.
     void Abort();
-    bool IsOpen() const { return child > 0 || !rawPath.empty(); }
+    bool IsOpen() const { return !tempPath.empty(); }
     int FramesWritten() const { return frames; }
+    /// GIF: frames per part (each part has its own palette); set before Open, for tests. 0: by frame size.
+    void SetGifPartFrames(int n) { gifPartFrames = n; }
 
 private:
     bool Spawn(const std::vector<std::string>& args, bool pipeIn, std::string* error);
     bool Wait(std::string* error);
-    /// GIF: closes palettegen's pipe, waits for the palette, then maps the raw frames with paletteuse.
-    bool EncodeGif(std::string* error);
-    /// ffmpeg arguments reading this recording's raw RGB frames from `source` (a file or pipe:0).
-    std::vector<std::string> GifInput(const std::string& source) const;
-    /// "fps=50," above 50 fps (GIF delays are hundredths of a second), else "".
-    std::string GifResample() const;
+    /// GIF: records one frame (after resampling) into the current part, ending the part when it is full.
+    bool WriteGifFrame(const Image& frame, std::string* error);
+    /// GIF: adds the frame's new colours (all of the part's first frame, then pixels that changed) to the part's.
+    void TrackGifColours(const Image& frame);
+    /// GIF: adds one colour (0xRRGGBB) to the part's set; false if it already holds 256 others.
+    bool AddGifColour(std::uint32_t rgb);
+    /// GIF: opens the next raw file for a new part (waiting for the part that read it last) and starts the
+    /// part's ffmpeg, which waits for the palette.
+    bool BeginGifPart(std::string* error);
+    /// GIF: closes the current part's frames and sends its palette to its ffmpeg, which maps them in the
+    /// background (a part of more than 256 colours gets an ffmpeg that generates its palette instead).
+    bool EndGifPart(std::string* error);
+    /// GIF: ffmpeg's input arguments for a raw file of this recording's frames.
+    std::vector<std::string> GifRawInput(const std::string& raw) const;
+    /// GIF: ffmpeg's output arguments for a part's GIF.
+    std::vector<std::string> GifOutput(const std::string& gif) const;
+    /// GIF: the paletteuse filter.
+    static std::string GifMapping();
+    /// GIF: waits for part k's ffmpeg if it still runs.
+    bool WaitGifPart(std::size_t k, std::string* error);
+    /// GIF: ends the last part, waits for every part and joins them into tempPath.
+    bool JoinGifParts(std::string* error);
+    /// GIF: whether input frame i is recorded (all of them up to 50 fps; above, those nearest 1/50 s steps).
+    bool KeepGifFrame(int i) const;
+    /// GIF: the recorded frame rate, fps up to 50 (GIF delays are whole hundredths of a second).
+    double GifFramesPerSecond() const;
+    /// GIF: frames per part by default for this frame size (about 128 MiB of raw frames, 10 to 100).
+    static int DefaultGifPartFrames(int width, int height);
     void Cleanup();
 
     Format format = Format::Mp4;
-    std::string path, tempPath, rawPath, palettePath, logPath;
-    int tempId = -1, rawId = -1, paletteId = -1, logId = -1;  // TempRegistry slots of the temporaries
+    struct TempFile {
+        std::string path;  // a temporary beside the target
+        int id = -1;       // its TempRegistry slot
+    };
+    /// A part of a GIF: the GIF its ffmpeg maps the part's frames into.
+    struct GifPart {
+        TempFile gif;
+        int rawIndex = -1;   // the raw file its frames are in (gifRaw), until its ffmpeg has finished
+        pid_t pid = -1;      // its ffmpeg, until waited for
+        int paletteFd = -1;  // the pipe its ffmpeg reads the palette from, until the part ends
+    };
+
+    std::string path, tempPath, logPath;
+    int tempId = -1, logId = -1;  // TempRegistry slots of the temporaries
+    std::vector<GifPart> gifParts;
+    TempFile gifRaw[3];                      // GIF: the parts' raw frames, in turn
+    int gifRawIndex = -1, gifRawFd = -1;     // GIF: the current part's raw file, open while its frames arrive
+    int gifPartFrames = 0;                   // GIF: frames per part
+    int gifPartFrameCount = 0;               // GIF: frames in the current part so far
+    std::vector<std::uint8_t> yuv;           // MP4, WebM: a frame as sent to ffmpeg
+    Image gifPrevious;                       // GIF: the last frame recorded (to find the pixels that changed)
+    std::vector<std::uint8_t> gifBgra;       // GIF: a frame as stored in the raw file
+    std::vector<std::uint32_t> gifColours;   // GIF: the current part's colours, 0xRRGGBB
+    std::uint32_t gifColourSlots[512] = {};  // their hash set
+    bool gifColoursOverflow = false;         // more than 256 colours in the current part
     int width = 0, height = 0, frames = 0;
     double fps = 60.0;
     pid_t child = -1;
     int pipeFd = -1;
-    int rawFd = -1;
 };

@@ -6,8 +6,10 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -112,6 +114,82 @@ TEST_F(VideoEncoderTest, GifKeepsTheExactColoursAndResamplesSixtyToFifty) {
     EXPECT_TRUE(decoded == Frame(64, 48, 0));
 }
 
+/// Frame i of a run whose colours change every frame: the moving square, and a band of eight colours found in
+/// no other frame (so 60 frames hold 480 colours, more than one palette can, and any 7 of them 56 and a few).
+Image ManyColourFrame(int w, int h, int i) {
+    Image image = Frame(w, h, i);
+    for (int x = 0; x < w; ++x)
+        for (int y = 30; y < 38; ++y) {
+            std::uint8_t* p = image.Pixel(x, y);
+            const int k = i * 8 + x * 8 / w;  // 0 .. 479
+            p[0] = std::uint8_t(k & 0xFF), p[1] = std::uint8_t(40 + (k >> 8) * 100), p[2] = std::uint8_t(255 - k / 2);
+        }
+    return image;
+}
+
+/// Decodes every frame of a video into w x h RGB images (empty on failure).
+std::vector<Image> DecodeAll(const std::string& path, const std::string& raw, int w, int h) {
+    Shell("ffmpeg -v error -y -i '" + path + "' -f rawvideo -pix_fmt rgb24 '" + raw + "'");
+    std::vector<Image> frames;
+    std::FILE* f = std::fopen(raw.c_str(), "rb");
+    if (!f) return frames;
+    for (Image image(w, h); std::fread(image.rgb.data(), 1, image.rgb.size(), f) == image.rgb.size();)
+        frames.push_back(image);
+    std::fclose(f);
+    return frames;
+}
+
+TEST_F(VideoEncoderTest, GifPartsEachGetThePaletteOfTheirFramesAndJoinExactly) {
+    // 60 frames at 60 fps become 50 GIF frames, in parts of 7 (8 parts, the last of one frame), each mapped to
+    // its own palette. The run's 480 band colours do not fit one palette; each part's do, so every frame comes
+    // back exactly. Output frame j is input frame round(1.2 j), the input frame nearest its time.
+    const int w = 64, h = 48;
+    const std::string path = (dir / "parts.gif").string();
+    VideoEncoder video;
+    video.SetGifPartFrames(7);
+    std::string error;
+    ASSERT_TRUE(video.Open(path, w, h, 60.0, &error)) << error;
+    for (int i = 0; i < 60; ++i) ASSERT_TRUE(video.WriteFrame(ManyColourFrame(w, h, i), &error)) << error;
+    ASSERT_TRUE(video.Finish(&error)) << error;
+    EXPECT_EQ(Leftovers("parts.gif"), 0) << "the parts, raw frames and palettes are gone";
+    EXPECT_EQ(Probe(path, "stream=nb_read_frames"), "50");
+    EXPECT_NEAR(std::stod(Probe(path, "format=duration")), 1.0, 0.021);
+    const std::vector<Image> decoded = DecodeAll(path, (dir / "parts.rgb").string(), w, h);
+    ASSERT_EQ(decoded.size(), 50u);
+    for (int j = 0; j < 50; ++j) {
+        const int i = (12 * j + 5) / 10;  // round(1.2 j); 1.2 j is never halfway
+        EXPECT_TRUE(decoded[std::size_t(j)] == ManyColourFrame(w, h, i)) << "GIF frame " << j << ", input frame " << i;
+    }
+}
+
+TEST_F(VideoEncoderTest, AGifPartOfMoreThan256ColoursGetsAGeneratedPalette) {
+    // Every pixel a colour of its own (3,072): the part's palette comes from palettegen, and the frames come
+    // back close (no dithering: each pixel maps to its nearest palette colour).
+    const int w = 64, h = 48;
+    Image gradient(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            std::uint8_t* p = gradient.Pixel(x, y);
+            p[0] = std::uint8_t(x * 4), p[1] = std::uint8_t(y * 5), p[2] = std::uint8_t((x + y) * 2);
+        }
+    const std::string path = (dir / "many.gif").string();
+    VideoEncoder video;
+    video.SetGifPartFrames(4);
+    std::string error;
+    ASSERT_TRUE(video.Open(path, w, h, 25.0, &error)) << error;
+    for (int i = 0; i < 10; ++i) ASSERT_TRUE(video.WriteFrame(i == 5 ? gradient : Frame(w, h, i), &error)) << error;
+    ASSERT_TRUE(video.Finish(&error)) << error;
+    const std::vector<Image> decoded = DecodeAll(path, (dir / "many.rgb").string(), w, h);
+    ASSERT_EQ(decoded.size(), 10u) << "25 fps is kept";
+    EXPECT_TRUE(decoded[4] == Frame(w, h, 4)) << "the parts of few colours stay exact";
+    EXPECT_TRUE(decoded[9] == Frame(w, h, 9));
+    double sum = 0.0;
+    for (std::size_t k = 0; k < gradient.rgb.size(); ++k)
+        sum += std::abs(int(decoded[5].rgb[k]) - int(gradient.rgb[k]));
+    EXPECT_LT(sum / double(gradient.rgb.size()), 4.0) << "mean error of the 256-colour approximation";
+    EXPECT_GT(sum, 0.0) << "3,072 colours cannot all be exact";
+}
+
 TEST_F(VideoEncoderTest, AbortAndFailuresLeaveNothingBehind) {
     {
         VideoEncoder video;
@@ -127,6 +205,15 @@ TEST_F(VideoEncoderTest, AbortAndFailuresLeaveNothingBehind) {
         ASSERT_TRUE(video.WriteFrame(Frame(32, 32, 0), &error)) << error;
         EXPECT_FALSE(video.WriteFrame(Frame(16, 16, 0), &error));
         EXPECT_NE(error.find("16x16"), std::string::npos) << error;
+    }
+    {
+        VideoEncoder video;  // a GIF with parts being mapped and one waiting for its palette
+        video.SetGifPartFrames(2);
+        std::string error;
+        ASSERT_TRUE(video.Open((dir / "c.gif").string(), 32, 32, 30.0, &error)) << error;
+        for (int i = 0; i < 7; ++i) ASSERT_TRUE(video.WriteFrame(Frame(32, 32, i), &error)) << error;
+        EXPECT_GT(Leftovers(), 3) << "raw frames and parts in progress";
+        video.Abort();
     }
     EXPECT_EQ(Leftovers(), 0);
     VideoEncoder video;

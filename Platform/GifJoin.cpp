@@ -1,0 +1,141 @@
+#include "Platform/GifJoin.h"
+
+#include <algorithm>
+#include <cstddef>
+
+namespace {
+
+constexpr std::size_t kHeaderSize = 13;  // "GIF87a" or "GIF89a" and the logical screen descriptor
+
+/// Bytes of the colour table a packed field announces (bit 7: present; bits 0-2: 2^(n+1) entries of 3 bytes).
+std::size_t ColourTableSize(std::uint8_t packed) { return (packed & 0x80) ? 3u * (2u << (packed & 7)) : 0u; }
+
+/// One parsed part: where its blocks are.
+struct Part {
+    std::size_t tableEnd = 0;    // end of the header and the global colour table, where the blocks start
+    std::uint8_t tableBits = 0;  // the global table's size field (bits 0-2 of the screen descriptor's packed byte)
+    bool hasTable = false;
+};
+
+class Reader {
+public:
+    Reader(const std::vector<std::uint8_t>& bytes, std::size_t at) : b(bytes), i(at) {}
+    bool Has(std::size_t n) const { return i <= b.size() && b.size() - i >= n; }
+    std::size_t At() const { return i; }
+    std::uint8_t Byte() { return b[i++]; }
+    void Skip(std::size_t n) { i += n; }
+    /// Skips sub-blocks up to and including the zero-length terminator; false if the data ends first.
+    bool SkipSubBlocks() {
+        for (;;) {
+            if (!Has(1)) return false;
+            const std::uint8_t n = Byte();
+            if (n == 0) return true;
+            if (!Has(n)) return false;
+            Skip(n);
+        }
+    }
+
+private:
+    const std::vector<std::uint8_t>& b;
+    std::size_t i;
+};
+
+bool ParseHeader(const std::vector<std::uint8_t>& b, Part* p) {
+    if (b.size() < kHeaderSize || b[0] != 'G' || b[1] != 'I' || b[2] != 'F' || b[3] != '8' ||
+        (b[4] != '7' && b[4] != '9') || b[5] != 'a')
+        return false;
+    const std::uint8_t packed = b[10];
+    p->hasTable = (packed & 0x80) != 0;
+    p->tableBits = packed & 7;
+    p->tableEnd = kHeaderSize + ColourTableSize(packed);
+    return b.size() >= p->tableEnd;
+}
+
+}  // namespace
+
+bool JoinGifs(const std::vector<std::vector<std::uint8_t>>& parts, std::vector<std::uint8_t>* out, std::string* error) {
+    out->clear();
+    if (parts.empty()) {
+        *error = "no GIF parts to join";
+        return false;
+    }
+    Part first;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        const std::vector<std::uint8_t>& b = parts[k];
+        const std::string name = "GIF part " + std::to_string(k + 1) + " of " + std::to_string(parts.size());
+        Part part;
+        if (!ParseHeader(b, &part)) {
+            *error = name + " is not a GIF file";
+            return false;
+        }
+        if (k == 0) {
+            first = part;
+            out->insert(out->end(), b.begin(), b.begin() + std::ptrdiff_t(part.tableEnd));
+        } else if (b[6] != parts[0][6] || b[7] != parts[0][7] || b[8] != parts[0][8] || b[9] != parts[0][9]) {
+            *error = name + " has another screen size than the first";
+            return false;
+        }
+        // A later part's images need its own palette unless the first part's global table is the same.
+        const bool sameTable = part.hasTable == first.hasTable && part.tableEnd == first.tableEnd &&
+                               std::equal(b.begin() + kHeaderSize, b.begin() + std::ptrdiff_t(part.tableEnd),
+                                          parts[0].begin() + kHeaderSize);
+        Reader r(b, part.tableEnd);
+        bool ended = false;
+        while (!ended) {
+            if (!r.Has(1)) {
+                *error = name + " ends before its trailer";
+                return false;
+            }
+            const std::size_t start = r.At();
+            const std::uint8_t kind = r.Byte();
+            if (kind == 0x3B) {
+                ended = true;
+            } else if (kind == 0x21) {  // extension: label, then sub-blocks
+                if (!r.Has(1)) {
+                    *error = name + " ends inside an extension";
+                    return false;
+                }
+                const std::uint8_t label = r.Byte();
+                if (!r.SkipSubBlocks()) {
+                    *error = name + " ends inside an extension";
+                    return false;
+                }
+                if (k == 0 || label != 0xFF)  // later parts' application extensions (the loop count) go
+                    out->insert(out->end(), b.begin() + std::ptrdiff_t(start), b.begin() + std::ptrdiff_t(r.At()));
+            } else if (kind == 0x2C) {  // image: descriptor, optional local table, LZW code size, sub-blocks
+                if (!r.Has(9)) {
+                    *error = name + " ends inside an image descriptor";
+                    return false;
+                }
+                r.Skip(8);
+                const std::uint8_t packed = r.Byte();
+                const std::size_t local = ColourTableSize(packed);
+                if (!r.Has(local + 1)) {
+                    *error = name + " ends inside an image";
+                    return false;
+                }
+                r.Skip(local + 1);
+                if (!r.SkipSubBlocks()) {
+                    *error = name + " ends inside an image";
+                    return false;
+                }
+                if (k == 0 || local > 0 || sameTable || !part.hasTable) {
+                    out->insert(out->end(), b.begin() + std::ptrdiff_t(start), b.begin() + std::ptrdiff_t(r.At()));
+                } else {
+                    // The descriptor with a local table announced (bit 7, the part's table size in bits 0-2;
+                    // interlace, bit 6, kept), the part's global table, then the image data as it was.
+                    out->insert(out->end(), b.begin() + std::ptrdiff_t(start), b.begin() + std::ptrdiff_t(start + 9));
+                    out->push_back(std::uint8_t((packed & 0x40) | 0x80 | part.tableBits));
+                    out->insert(out->end(), b.begin() + kHeaderSize, b.begin() + std::ptrdiff_t(part.tableEnd));
+                    out->insert(out->end(), b.begin() + std::ptrdiff_t(start + 10), b.begin() + std::ptrdiff_t(r.At()));
+                }
+            } else {
+                *error = name + " has an unknown block (byte " + std::to_string(int(kind)) + " at offset " +
+                         std::to_string(start) + ")";
+                return false;
+            }
+        }
+    }
+    out->push_back(0x3B);
+    return true;
+}
