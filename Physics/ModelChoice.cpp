@@ -265,7 +265,8 @@ struct WindowResult {
 };
 
 WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
-                       const ErrorBudget& budget, double window, int warmSteps, double fixedGrowth = -1.0) {
+                       const ErrorBudget& budget, double window, int warmSteps, double fixedGrowth = -1.0,
+                       bool endOnly = false) {
     WindowResult r;
     const double start = ThreadCpuSeconds();
     std::unique_ptr<ModelProbe> coarse = factory();
@@ -284,6 +285,7 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     const long long measured = std::max(2LL, std::llround(window / candidate.step));
     const int samples = static_cast<int>(std::min<long long>(256, measured));
     double half = 0.0, full = 0.0;  // running maximum at the measured part's middle and end
+    double last = 0.0;              // the difference at the end
     double cpu = 0.0;
     bool ok = true;
     auto advance = [&](double t) {
@@ -314,6 +316,7 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
             break;
         }
         full = std::max(full, d);
+        last = d;
         if (2 * s <= samples) half = full;
     }
     r.cpuSeconds = cpu;
@@ -330,7 +333,7 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     if (full > 0.0 && half > 0.0) growth = std::clamp(std::log2(full / half), 0.0, 1.0);
     if (fixedGrowth >= 0.0) growth = fixedGrowth;
     r.growth = growth;
-    r.observed = full;
+    r.observed = endOnly ? last : full;
     r.length = length;
     r.factor = observed ? 1.0 : RichardsonFactor(OrderOf(candidate, space));
     return r;
@@ -447,10 +450,33 @@ double Contribution(const PlannedWindow& p, const WindowResult& w, const ErrorBu
 /// A candidate's estimate: the sum of its windows' contributions (constraint error: the largest). Stops as soon as
 /// it misses `bound` (the rest can only add), marking the estimate partial (a lower bound).
 void Evaluate(const std::vector<PlannedWindow>& plan, double window, const CandidateSpace& space,
-              const ErrorBudget& budget, double bound, CandidateEstimate* e, double* cpuSeconds, double* work) {
+              const ErrorBudget& budget, const ChoiceSettings& settings, double bound, CandidateEstimate* e,
+              double* cpuSeconds, double* work) {
     e->estimate = 0.0;
     e->segments.clear();
     double cpu = 0.0, simulated = 0.0;
+    // A cheap world without volumes: the candidate and its refinement run the whole run from the start, and the
+    // difference at its end (the budget's quantity; constraint error: the largest seen) is the estimate.
+    const double T = settings.runSeconds;
+    if (!space.hasVolumes && settings.wholeRunWork > 0.0 &&
+        T * (PredictedWork(e->model, space) + PredictedWork(Refine(e->model, space), space)) <= settings.wholeRunWork) {
+        const WindowResult w = RunWindow(plan[0].factory, e->model, space, budget, T, 0, 0.0);
+        *cpuSeconds += w.probeCpuSeconds;
+        *work += w.work;
+        e->wholeRun = true;
+        e->cpuPerSimSecond = w.simulated > 0.0 ? w.cpuSeconds / w.simulated : 0.0;
+        if (!w.stable || !std::isfinite(w.observed)) {
+            e->stable = w.stable;
+            e->estimate = kInf;
+            e->note = w.stable ? "its refinement blew up in the calibration" : "unstable in the calibration";
+            return;
+        }
+        e->growth = 0.0;
+        e->estimate = w.factor * w.observed;
+        e->segments.push_back(e->estimate);
+        e->note = "measured over the whole run";
+        return;
+    }
     for (std::size_t k = 0; k < plan.size(); ++k) {
         const WindowResult w = RunWindow(plan[k].factory, e->model, space, budget, window, plan[k].warmSteps);
         *cpuSeconds += w.probeCpuSeconds;
@@ -559,7 +585,8 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
         }
         ++result.evaluatedCount;
         e.evaluated = true;
-        Evaluate(plan, window, space, budget, bound, &e, &result.calibrationCpuSeconds, &result.calibrationWork);
+        Evaluate(plan, window, space, budget, settings, bound, &e, &result.calibrationCpuSeconds,
+                 &result.calibrationWork);
         e.meets = e.stable && !e.partial && e.estimate <= bound;
         if (e.meets) result.chosen = static_cast<int>(order[k]);
         if (e.stable && std::isfinite(e.estimate)) {
@@ -583,10 +610,11 @@ ModelWatch::ModelWatch(const CandidateSpace& s, const ErrorBudget& b, const Choi
       current(chosen.model),
       running(chosen.estimate),
       predicted(chosen.estimate),
-      growth(chosen.growth) {}
+      growth(chosen.growth),
+      wholeRun(chosen.wholeRun) {}
 
 bool ModelWatch::Due(double time) const {
-    if (time >= settings.runSeconds - 1e-9) return false;
+    if (wholeRun || time >= settings.runSeconds - 1e-9) return false;
     if (eventPending && snapshot) return true;
     const double every = settings.checkEvery > 0.0 ? settings.checkEvery : settings.runSeconds / 6.0;
     return every > 0.0 && time >= lastCheck + every - 1e-9;
@@ -595,7 +623,7 @@ bool ModelWatch::Due(double time) const {
 double ModelWatch::CheckWindow() const { return settings.checkWindowFraction * WindowFor(settings); }
 
 bool ModelWatch::WantsSnapshot(double time) const {
-    return settings.maxEventChecks > 0 && time >= snapshotTime + 0.5 * CheckWindow() - 1e-9 &&
+    return !wholeRun && settings.maxEventChecks > 0 && time >= snapshotTime + 0.5 * CheckWindow() - 1e-9 &&
            time < settings.runSeconds - 1e-9;
 }
 
@@ -608,6 +636,7 @@ void ModelWatch::TakeSnapshot(double time, ProbeFactory factory) {
 }
 
 void ModelWatch::Observe(double time, const PhysicsSystem& world) {
+    if (wholeRun) return;
     // Irregularity between frames: the largest change of any point's acceleration times the frame time (m/s; what
     // an impulse does, and what gravity or a smooth spring hardly does).
     const double dt = time - lastObserved;

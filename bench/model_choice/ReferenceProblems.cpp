@@ -346,13 +346,15 @@ std::vector<ReferenceProblem> Build() {
                    "drift is a position error (m)", false, Make<DriftError>()});
     out.push_back({"cloth", "cloth", "-3", "RMS particle distance to the converged run (m)", Q::Position, 1.0,
                    "the largest particle distance bounds the RMS distance (m)", false, Make<ClothError>()});
-    // The CTest's small grid: cases auto meets today, across particles, springs, a bounce, volumes and a stack, so a
-    // change that stops it meeting them fails (the full bench reports the others).
+    // The CTest's small grid: cases auto meets today, across particles, springs, a pendulum, bounces, volumes and a
+    // stack, so a change that stops it meeting them fails (the full bench reports the others). pendulum-small at
+    // 1e-2 and bounce-particle-0.9 were above 3x their budgets before particle worlds were measured over the whole
+    // run (windows missed the period error and the bounces).
     for (ReferenceProblem& p : out) {
         if (p.name.rfind("bounce", 0) == 0) p.checkSeconds = 15.0;
         p.fast = p.name == "projectile" || p.name == "spring-damped" || p.name == "spring-energy" ||
                  p.name == "rotation-energy" || p.name == "incline" || p.name == "bounce-sphere-0.9" ||
-                 p.name == "stack-5";
+                 p.name == "stack-5" || p.name == "pendulum-small" || p.name == "bounce-particle-0.9";
     }
     return out;
 }

@@ -223,7 +223,8 @@ TEST(AutoModel, WatchSeesContactBegin) {
 }
 
 // In a world without volumes the pilot finds the bounce the start window cannot see, and the calibration gives it
-// a window: the particle dropped from 20 m gets an event window at its first impact (t = 2.02 s).
+// a window: the particle dropped from 20 m gets an event window at its first impact (t = 2.02 s). (At 1e-2 m the
+// budget is refused: measured over the whole run, the bounces' timing errors are 6 mm at the finest step.)
 TEST(AutoModel, PilotFindsTheImpactOfAParticleWorld) {
     SceneDescription d;
     d.bodies.push_back(Particle(vec3(0, 20, 0), vec3(0, 0, 0)));
@@ -237,7 +238,7 @@ TEST(AutoModel, PilotFindsTheImpactOfAParticleWorld) {
     scene.AddParameters(&params);
     AutoModel autoModel;
     std::string error;
-    ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, 10.0, Budget(1e-2), &error)) << error;
+    ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, 10.0, Budget(1e-1), &error)) << error;
     const std::vector<double>& events = autoModel.Choice().eventTimes;
     ASSERT_FALSE(events.empty());
     const double window = autoModel.Choice().windowSeconds;
@@ -374,12 +375,15 @@ TEST(AutoModel, ConstraintBudgetBoundsTheJointError) {
         AutoModel autoModel;
         std::string error;
         ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, 3.0, Budget(bound, 2), &error)) << error;
-        const double estimate = autoModel.Choice().candidates[autoModel.Choice().chosen].estimate;
+        const CandidateEstimate& chosen = autoModel.Choice().candidates[autoModel.Choice().chosen];
+        const double estimate = chosen.estimate;
         EXPECT_GT(estimate, 0.0) << "rounding is observed";
+        EXPECT_TRUE(chosen.wholeRun) << "a cheap world without volumes is measured over the whole run";
         const double dt = scene.PhysicsStep();
-        // The calibration window's steps (at least two): constraint error is observed, not extrapolated, so the
-        // estimate is the largest violation the chosen model makes there, measured here independently.
-        const long long windowSteps = std::max(2LL, std::llround(autoModel.Choice().windowSeconds / dt));
+        // The calibration's steps (the whole run; at least two): constraint error is observed, not extrapolated,
+        // so the estimate is the largest violation the chosen model makes there, measured here independently.
+        const long long windowSteps =
+            std::max(2LL, std::llround((chosen.wholeRun ? 3.0 : autoModel.Choice().windowSeconds) / dt));
         double worstInWindow = 0.0;
         long long n = 0;
         for (double t = dt; t <= 3.0 + 1e-9; t += dt) {
