@@ -265,8 +265,7 @@ struct WindowResult {
 };
 
 WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
-                       const ErrorBudget& budget, double window, int warmSteps, double fixedGrowth = -1.0,
-                       bool endOnly = false) {
+                       const ErrorBudget& budget, double window, int warmSteps, double fixedGrowth = -1.0) {
     WindowResult r;
     const double start = ThreadCpuSeconds();
     std::unique_ptr<ModelProbe> coarse = factory();
@@ -285,7 +284,6 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     const long long measured = std::max(2LL, std::llround(window / candidate.step));
     const int samples = static_cast<int>(std::min<long long>(256, measured));
     double half = 0.0, full = 0.0;  // running maximum at the measured part's middle and end
-    double last = 0.0;              // the difference at the end
     double cpu = 0.0;
     bool ok = true;
     auto advance = [&](double t) {
@@ -316,7 +314,6 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
             break;
         }
         full = std::max(full, d);
-        last = d;
         if (2 * s <= samples) half = full;
     }
     r.cpuSeconds = cpu;
@@ -333,7 +330,7 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     if (full > 0.0 && half > 0.0) growth = std::clamp(std::log2(full / half), 0.0, 1.0);
     if (fixedGrowth >= 0.0) growth = fixedGrowth;
     r.growth = growth;
-    r.observed = endOnly ? last : full;
+    r.observed = full;
     r.length = length;
     r.factor = observed ? 1.0 : RichardsonFactor(OrderOf(candidate, space));
     return r;
@@ -456,10 +453,14 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
     e->segments.clear();
     double cpu = 0.0, simulated = 0.0;
     // A cheap world without volumes: the candidate and its refinement run the whole run from the start, and the
-    // difference at its end (the budget's quantity; constraint error: the largest seen) is the estimate.
+    // largest difference sampled over it, with the Richardson factor, is the estimate (constraint error: the
+    // largest seen on the candidate alone). Not the difference at the end: there a bounce that died down leaves
+    // both at rest on the ground, and a spring is back near a turning point.
     const double T = settings.runSeconds;
+    const bool refined = budget.quantity != BudgetQuantity::Constraint;
     if (!space.hasVolumes && settings.wholeRunWork > 0.0 &&
-        T * (PredictedWork(e->model, space) + PredictedWork(Refine(e->model, space), space)) <= settings.wholeRunWork) {
+        T * (PredictedWork(e->model, space) + (refined ? PredictedWork(Refine(e->model, space), space) : 0.0)) <=
+            settings.wholeRunWork) {
         const WindowResult w = RunWindow(plan[0].factory, e->model, space, budget, T, 0, 0.0);
         *cpuSeconds += w.probeCpuSeconds;
         *work += w.work;

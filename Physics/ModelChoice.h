@@ -126,8 +126,8 @@ struct ChoiceSettings {
     /// and no snapshots are taken).
     int maxEventChecks = 6;
     /// A world without volumes whose candidate, run beside its refinement over the whole run, costs at most this
-    /// many PredictedWork units is estimated over the whole run instead of windows: the difference at the run's
-    /// end, measured rather than extrapolated (a bounce's or a period's error, which a window cannot see). About
+    /// many PredictedWork units is estimated over the whole run instead of windows: the largest difference over the
+    /// run, measured rather than extrapolated (a bounce's or a period's error, which a window cannot see). About
     /// 0.13 s of CPU for a particle world; 0: never.
     double wholeRunWork = 5e6;
     /// A candidate meets the budget when safety * estimate <= bound.

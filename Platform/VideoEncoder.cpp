@@ -128,9 +128,9 @@ bool VideoEncoder::Open(const std::string& target, int w, int h, double framesPe
     if (logPath.empty()) return Cleanup(), false;
     if (format == Format::Gif) {
         // A palette generated from all the frames could only be applied after the run. Instead the GIF is made
-        // in parts of gifPartFrames frames, each with a palette generated from its own frames and mapped by
+        // in parts of gifPartSize frames, each with a palette generated from its own frames and mapped by
         // its own ffmpeg while the next part renders; JoinGifs puts the parts together at Finish.
-        if (gifPartFrames < 1) gifPartFrames = DefaultGifPartFrames(width, height);
+        gifPartSize = gifPartFrames > 0 ? gifPartFrames : DefaultGifPartFrames(width, height);
         return true;
     }
     std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y", "-f", "rawvideo",
@@ -138,6 +138,11 @@ bool VideoEncoder::Open(const std::string& target, int w, int h, double framesPe
                                      "-pix_fmt", "yuv420p", "-video_size",
                                      std::to_string(EvenSide(w)) + "x" + std::to_string(EvenSide(h)), "-framerate",
                                      Number(fps), "-i", "pipe:0"};
+    // Tagged as what Yuv420 makes, BT.601 in the limited range: untagged, players take frames of HD sizes for
+    // BT.709.
+    for (const char* a :
+         {"-colorspace", "smpte170m", "-color_primaries", "smpte170m", "-color_trc", "smpte170m", "-color_range", "tv"})
+        args.push_back(a);
     if (format == Format::Mp4) {
         for (const char* a : {"-c:v", "libx264", "-preset", "ultrafast", "-crf", "18", "-pix_fmt", "yuv420p",
                               "-movflags", "+faststart", "-f", "mp4"})
@@ -186,6 +191,10 @@ bool VideoEncoder::Spawn(const std::vector<std::string>& args, bool pipeIn, std:
 }
 
 bool VideoEncoder::Wait(std::string* error) {
+    if (child <= 0) {  // never waitpid(-1): it would reap another part's ffmpeg
+        *error = "ffmpeg is not running";
+        return false;
+    }
     int status = 0;
     pid_t r;
     do r = waitpid(child, &status, 0);
@@ -202,6 +211,16 @@ bool VideoEncoder::Wait(std::string* error) {
 }
 
 bool VideoEncoder::WriteFrame(const Image& frame, std::string* error) {
+    // After a failed frame the recording cannot be completed (Finish refuses it); every later frame fails too.
+    if (failed) {
+        *error = "video recording failed at an earlier frame";
+        return false;
+    }
+    failed = !RecordFrame(frame, error);
+    return !failed;
+}
+
+bool VideoEncoder::RecordFrame(const Image& frame, std::string* error) {
     if (frame.width != width || frame.height != height) {
         *error = "video frame is " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
                  ", the recording " + std::to_string(width) + "x" + std::to_string(height);
@@ -289,7 +308,7 @@ void VideoEncoder::TrackGifColours(const Image& frame) {
 
 bool VideoEncoder::WriteGifFrame(const Image& frame, std::string* error) {
     if (!KeepGifFrame(frames)) return ++frames, true;
-    if (gifPartFrameCount == gifPartFrames && !EndGifPart(error)) return false;
+    if (gifPartFrameCount == gifPartSize && !EndGifPart(error)) return false;
     if (gifPartFrameCount == 0 && !BeginGifPart(error)) return false;
     TrackGifColours(frame);
     // Stored as BGRA, the only format paletteuse takes: converting here costs less than ffmpeg's conversion.
@@ -400,11 +419,13 @@ bool VideoEncoder::EndGifPart(std::string* error) {
     // More than 256: palettegen chooses them from the part's frames (stats_mode=full: weighted by area), in an
     // ffmpeg of its own instead of the waiting one.
     close(paletteFd);
-    kill(part.pid, SIGKILL);
-    child = part.pid;
-    part.pid = -1;
-    std::string ignored;
-    Wait(&ignored);
+    if (part.pid > 0) {
+        kill(part.pid, SIGKILL);
+        child = part.pid;
+        part.pid = -1;
+        std::string ignored;
+        Wait(&ignored);
+    }
     std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y"};
     for (const std::string& a : GifRawInput(raw.path)) args.push_back(a);
     args.push_back("-filter_complex");
@@ -423,14 +444,23 @@ bool VideoEncoder::WaitGifPart(std::size_t k, std::string* error) {
     child = part.pid;
     part.pid = -1;
     part.rawIndex = -1;  // done with its raw file
-    return Wait(error);
+    if (!Wait(error) || !ReadFileBytes(part.gif.path, &part.bytes, error)) return false;
+    // Kept in memory from here on (a part's GIF is small): the file and its registry slot are freed, so a long
+    // recording never holds more than a few temporaries.
+    unlink(part.gif.path.c_str());
+    part.gif.path.clear();
+    UnregisterTemporary(part.gif.id);
+    part.gif.id = -1;
+    return true;
 }
 
 bool VideoEncoder::JoinGifParts(std::string* error) {
     if (gifPartFrameCount > 0 && !EndGifPart(error)) return false;
     std::vector<std::vector<std::uint8_t>> bytes(gifParts.size());
-    for (std::size_t k = 0; k < gifParts.size(); ++k)
-        if (!WaitGifPart(k, error) || !ReadFileBytes(gifParts[k].gif.path, &bytes[k], error)) return false;
+    for (std::size_t k = 0; k < gifParts.size(); ++k) {
+        if (!WaitGifPart(k, error)) return false;
+        bytes[k].swap(gifParts[k].bytes);
+    }
     std::vector<std::uint8_t> joined;
     if (!JoinGifs(bytes, &joined, error)) return false;
     return WriteWhole(tempPath, joined, error);
@@ -439,6 +469,11 @@ bool VideoEncoder::JoinGifParts(std::string* error) {
 bool VideoEncoder::Finish(std::string* error) {
     if (!IsOpen()) {
         *error = "video recording is not open";
+        return false;
+    }
+    if (failed) {
+        *error = "video recording failed at an earlier frame; nothing was written";
+        Abort();
         return false;
     }
     bool ok = true;
@@ -504,4 +539,5 @@ void VideoEncoder::Cleanup() {
     gifParts.clear();
     gifPartFrameCount = 0;
     gifRawIndex = -1;
+    failed = false;
 }

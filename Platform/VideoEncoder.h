@@ -38,7 +38,8 @@ public:
     /// MP4 and WebM frames of odd width or height are padded by one black row or column (yuv420p needs even
     /// sizes); GIF frames are resampled to 50 fps when fps is higher (GIF delays are whole 1/100 s).
     bool Open(const std::string& path, int width, int height, double fps, std::string* error);
-    /// Sends one frame (width x height as opened). False and *error if ffmpeg has gone away.
+    /// Sends one frame (width x height as opened). False and *error if the frame has another size or ffmpeg has
+    /// gone away; the recording cannot be finished then (Finish refuses it, and every later frame fails).
     bool WriteFrame(const Image& frame, std::string* error);
     /// Ends the stream, waits for ffmpeg and renames the result into place. False, with ffmpeg's last
     /// message, if it failed; nothing is left behind then.
@@ -51,6 +52,7 @@ public:
     void SetGifPartFrames(int n) { gifPartFrames = n; }
 
 private:
+    bool RecordFrame(const Image& frame, std::string* error);
     bool Spawn(const std::vector<std::string>& args, bool pipeIn, std::string* error);
     bool Wait(std::string* error);
     /// GIF: records one frame (after resampling) into the current part, ending the part when it is full.
@@ -79,7 +81,8 @@ private:
     bool KeepGifFrame(int i) const;
     /// GIF: the recorded frame rate, fps up to 50 (GIF delays are whole hundredths of a second).
     double GifFramesPerSecond() const;
-    /// GIF: frames per part by default for this frame size (about 128 MiB of raw frames, 10 to 100).
+    /// GIF: frames per part by default for this frame size (at most 192 MiB of raw frames and 100 frames, at least
+    /// 10).
     static int DefaultGifPartFrames(int width, int height);
     void Cleanup();
 
@@ -91,9 +94,10 @@ private:
     /// A part of a GIF: the GIF its ffmpeg maps the part's frames into.
     struct GifPart {
         TempFile gif;
-        int rawIndex = -1;   // the raw file its frames are in (gifRaw), until its ffmpeg has finished
-        pid_t pid = -1;      // its ffmpeg, until waited for
-        int paletteFd = -1;  // the pipe its ffmpeg reads the palette from, until the part ends
+        int rawIndex = -1;                // the raw file its frames are in (gifRaw), until its ffmpeg has finished
+        pid_t pid = -1;                   // its ffmpeg, until waited for
+        std::vector<std::uint8_t> bytes;  // the part's GIF, read once its ffmpeg has finished
+        int paletteFd = -1;               // the pipe its ffmpeg reads the palette from, until the part ends
     };
 
     std::string path, tempPath, logPath;
@@ -101,7 +105,8 @@ private:
     std::vector<GifPart> gifParts;
     TempFile gifRaw[3];                      // GIF: the parts' raw frames, in turn
     int gifRawIndex = -1, gifRawFd = -1;     // GIF: the current part's raw file, open while its frames arrive
-    int gifPartFrames = 0;                   // GIF: frames per part
+    int gifPartFrames = 0;                   // GIF: frames per part as set (0: by frame size)
+    int gifPartSize = 0;                     // GIF: frames per part of this recording
     int gifPartFrameCount = 0;               // GIF: frames in the current part so far
     std::vector<std::uint8_t> yuv;           // MP4, WebM: a frame as sent to ffmpeg
     Image gifPrevious;                       // GIF: the last frame recorded (to find the pixels that changed)
@@ -113,4 +118,5 @@ private:
     double fps = 60.0;
     pid_t child = -1;
     int pipeFd = -1;
+    bool failed = false;  // a frame could not be recorded: Finish refuses
 };

@@ -44,6 +44,25 @@ TEST(GifJoin, LaterPartsBringTheirPaletteAsLocalTables) {
     EXPECT_EQ(out, Cat({Header(1, kRedBlack), kLoop, kDelay, kImage, kDelay, withTable, kDelay, withTable, kTrailer}));
 }
 
+TEST(GifJoin, TheLocalTableKeepsThePartsTableSizeAndTheInterlaceFlag) {
+    // Part 2: a table of four entries (packed 0x81) and an interlaced image (descriptor packed 0x40): the local
+    // table is announced with its size (0x80 | 1) and the interlace bit stays (0x40).
+    const Bytes four = {0, 0, 255, 255, 255, 0, 1, 2, 3, 4, 5, 6};
+    Bytes b = {'G', 'I', 'F', '8', '9', 'a', 1, 0, 1, 0, 0x81, 0, 0};
+    b.insert(b.end(), four.begin(), four.end());
+    Bytes interlaced = kImage;
+    interlaced[9] = 0x40;
+    b.insert(b.end(), interlaced.begin(), interlaced.end());
+    b.push_back(0x3B);
+    const Bytes a = Cat({Header(1, kRedBlack), kImage, kTrailer});
+    Bytes out;
+    std::string error;
+    ASSERT_TRUE(JoinGifs({a, b}, &out, &error)) << error;
+    const Bytes withTable =
+        Cat({Bytes(kImage.begin(), kImage.begin() + 9), {0xC1}, four, Bytes(kImage.begin() + 10, kImage.end())});
+    EXPECT_EQ(out, Cat({Header(1, kRedBlack), kImage, withTable, kTrailer}));
+}
+
 TEST(GifJoin, PartsWithTheFirstsPaletteAreCopiedAsTheyAre) {
     const Bytes a = Cat({Header(1, kRedBlack), kLoop, kDelay, kImage, kTrailer});
     Bytes out;

@@ -3,8 +3,10 @@
 #include "Platform/VideoEncoder.h"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -79,6 +81,7 @@ protected:
 TEST_F(VideoEncoderTest, Mp4HasEveryFrameTheSizeAndTheDuration) {
     const std::string path = Record("run.mp4", 96, 64, 45, 60.0);
     EXPECT_EQ(Probe(path, "stream=nb_read_frames"), "45");
+    EXPECT_EQ(Probe(path, "stream=color_range,color_space"), "tv\nsmpte170m") << "tagged as Yuv420 converts";
     EXPECT_EQ(Probe(path, "stream=width,height"), "96\n64");
     EXPECT_NEAR(std::stod(Probe(path, "format=duration")), 45.0 / 60.0, 1.0 / 60.0);
     EXPECT_EQ(Leftovers("run.mp4"), 0);
@@ -181,8 +184,9 @@ TEST_F(VideoEncoderTest, AGifPartOfMoreThan256ColoursGetsAGeneratedPalette) {
     ASSERT_TRUE(video.Finish(&error)) << error;
     const std::vector<Image> decoded = DecodeAll(path, (dir / "many.rgb").string(), w, h);
     ASSERT_EQ(decoded.size(), 10u) << "25 fps is kept";
-    EXPECT_TRUE(decoded[4] == Frame(w, h, 4)) << "the parts of few colours stay exact";
-    EXPECT_TRUE(decoded[9] == Frame(w, h, 9));
+    // Parts of four: frames 0-3, 4-7 (the gradient's), 8-9.
+    EXPECT_TRUE(decoded[3] == Frame(w, h, 3)) << "the parts of few colours stay exact";
+    EXPECT_TRUE(decoded[8] == Frame(w, h, 8));
     double sum = 0.0;
     for (std::size_t k = 0; k < gradient.rgb.size(); ++k)
         sum += std::abs(int(decoded[5].rgb[k]) - int(gradient.rgb[k]));
@@ -214,6 +218,18 @@ TEST_F(VideoEncoderTest, AbortAndFailuresLeaveNothingBehind) {
         for (int i = 0; i < 7; ++i) ASSERT_TRUE(video.WriteFrame(Frame(32, 32, i), &error)) << error;
         EXPECT_GT(Leftovers(), 3) << "raw frames and parts in progress";
         video.Abort();
+        errno = 0;
+        EXPECT_EQ(waitpid(-1, nullptr, WNOHANG), -1) << "every ffmpeg was reaped";
+        EXPECT_EQ(errno, ECHILD);
+    }
+    {
+        VideoEncoder video;  // after a failed frame, nothing more is recorded and Finish refuses
+        std::string error;
+        ASSERT_TRUE(video.Open((dir / "d.mp4").string(), 32, 32, 60.0, &error)) << error;
+        EXPECT_FALSE(video.WriteFrame(Frame(16, 16, 0), &error));
+        EXPECT_FALSE(video.WriteFrame(Frame(32, 32, 1), &error));
+        EXPECT_FALSE(video.Finish(&error));
+        EXPECT_NE(error.find("earlier frame"), std::string::npos) << error;
     }
     EXPECT_EQ(Leftovers(), 0);
     VideoEncoder video;

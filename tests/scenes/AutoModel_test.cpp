@@ -246,6 +246,70 @@ TEST(AutoModel, PilotFindsTheImpactOfAParticleWorld) {
     EXPECT_GE(events.front() + window, 2.02) << "the first event window covers the first impact";
 }
 
+// A candidate of a world without volumes is measured over the whole run exactly when that run, beside its
+// refinement's, costs at most ChoiceSettings::wholeRunWork; the costlier ones keep their windows. A bouncing particle
+// over 100 s at a tight budget has candidates of both kinds.
+TEST(AutoModel, CheapCandidatesAreMeasuredOverTheWholeRun) {
+    SceneDescription d;
+    d.bodies.push_back(Particle(vec3(0, 20, 0), vec3(0, 0, 0)));
+    d.bodies.back().restitution = 0.5f;
+    SceneConstraint floor;
+    floor.position = vec3(0, -0.5f, 0);
+    floor.halfExtents = vec3(10, 0.5f, 10);
+    d.constraints.push_back(floor);
+    FileScene scene(d);
+    ParameterSet params;
+    scene.AddParameters(&params);
+    AutoModel autoModel;
+    std::string error;
+    autoModel.Choose(&params, scene.System(), kHostStep, 100.0, Budget(1e-3), &error);  // met or refused
+    const double limit = ChoiceSettings().wholeRunWork;
+    int whole = 0, windowed = 0;
+    for (const CandidateEstimate& e : autoModel.Choice().candidates) {
+        if (!e.evaluated) continue;
+        const CandidateSpace& space = AutoModel::SpaceOf(params, scene.System(), kHostStep);
+        const double work = 100.0 * (PredictedWork(e.model, space) + PredictedWork(Refine(e.model, space), space));
+        EXPECT_EQ(e.wholeRun, work <= limit) << e.model.Describe(true, false) << ": " << work << " work units";
+        (e.wholeRun ? whole : windowed) += 1;
+    }
+    EXPECT_GT(whole, 0);
+    EXPECT_GT(windowed, 0);
+}
+
+// After a choice measured over the whole run the watch has nothing left to check: no window runs (auto's CPU is
+// the calibration's alone) and the running estimate stays the calibration's.
+TEST(AutoModel, AWholeRunChoiceIsNotWatched) {
+    FileScene scene(Oscillator());
+    ParameterSet params;
+    scene.AddParameters(&params);
+    AutoModel autoModel;
+    std::string error;
+    ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, 10.0, Budget(1e-2), &error)) << error;
+    const CandidateEstimate& chosen =
+        autoModel.Choice().candidates[static_cast<std::size_t>(autoModel.Choice().chosen)];
+    ASSERT_TRUE(chosen.wholeRun);
+    double physics = 0.0;
+    for (int f = 1; f <= 334; ++f) {
+        const double dt = scene.PhysicsStep();
+        while (physics + dt <= f * kHostStep + 1e-9) scene.Step(static_cast<float>(dt)), physics += dt;
+        autoModel.AfterFrame(&params, scene.System(), physics);
+    }
+    EXPECT_EQ(autoModel.OverheadCpuSeconds(), autoModel.Choice().calibrationCpuSeconds) << "no check ran";
+    EXPECT_EQ(autoModel.RunningEstimate(), chosen.estimate);
+    EXPECT_TRUE(autoModel.Log().empty());
+    // The watch itself, given such a choice: never due, never asks for a snapshot.
+    CandidateSpace space = AutoModel::SpaceOf(params, scene.System(), kHostStep);
+    ErrorBudget budget;
+    budget.bound = 1e-2;
+    ChoiceSettings settings;
+    settings.runSeconds = 10.0;
+    ModelWatch watch(space, budget, settings, chosen);
+    for (double t = 0.0; t < 10.0; t += 0.5) {
+        EXPECT_FALSE(watch.Due(t)) << t;
+        EXPECT_FALSE(watch.WantsSnapshot(t)) << t;
+    }
+}
+
 TEST(AutoModel, RefusesABudgetNoCandidateMeets) {
     FileScene scene(Stack(3));
     ParameterSet params;
