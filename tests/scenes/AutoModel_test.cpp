@@ -222,10 +222,8 @@ TEST(AutoModel, WatchSeesContactBegin) {
     EXPECT_EQ(run.model.solver, chosen.solver);  // a switch refines; it never changes the solver
 }
 
-// In a world without volumes the pilot finds the bounce the start window cannot see, and the calibration gives it
-// a window: the particle dropped from 20 m gets an event window at its first impact (t = 2.02 s). (At 1e-2 m the
-// budget is refused: measured over the whole run, the bounces' timing errors are 6 mm at the finest step.)
-TEST(AutoModel, PilotFindsTheImpactOfAParticleWorld) {
+/// A particle dropped from 20 m onto a floor box, restitution 0.5: it first lands at t = 2.02 s.
+SceneDescription DroppedParticle() {
     SceneDescription d;
     d.bodies.push_back(Particle(vec3(0, 20, 0), vec3(0, 0, 0)));
     d.bodies.back().restitution = 0.5f;
@@ -233,7 +231,14 @@ TEST(AutoModel, PilotFindsTheImpactOfAParticleWorld) {
     floor.position = vec3(0, -0.5f, 0);
     floor.halfExtents = vec3(10, 0.5f, 10);
     d.constraints.push_back(floor);
-    FileScene scene(d);
+    return d;
+}
+
+// In a world without volumes the pilot finds the bounce the start window cannot see, and the calibration gives it
+// a window: the particle dropped from 20 m gets an event window at its first impact (t = 2.02 s). (At 1e-2 m the
+// budget is refused: measured over the whole run, the bounces' timing errors are 6 mm at the finest step.)
+TEST(AutoModel, PilotFindsTheImpactOfAParticleWorld) {
+    FileScene scene(DroppedParticle());
     ParameterSet params;
     scene.AddParameters(&params);
     AutoModel autoModel;
@@ -250,14 +255,7 @@ TEST(AutoModel, PilotFindsTheImpactOfAParticleWorld) {
 // refinement's, costs at most ChoiceSettings::wholeRunWork; the costlier ones keep their windows. A bouncing particle
 // over 100 s at a tight budget has candidates of both kinds.
 TEST(AutoModel, CheapCandidatesAreMeasuredOverTheWholeRun) {
-    SceneDescription d;
-    d.bodies.push_back(Particle(vec3(0, 20, 0), vec3(0, 0, 0)));
-    d.bodies.back().restitution = 0.5f;
-    SceneConstraint floor;
-    floor.position = vec3(0, -0.5f, 0);
-    floor.halfExtents = vec3(10, 0.5f, 10);
-    d.constraints.push_back(floor);
-    FileScene scene(d);
+    FileScene scene(DroppedParticle());
     ParameterSet params;
     scene.AddParameters(&params);
     AutoModel autoModel;
