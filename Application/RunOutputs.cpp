@@ -142,6 +142,7 @@ bool RunOutputs::Open(std::string* error, bool errorEstimateColumn) {
     if (!frameDir.empty() && !MakeDirectories(frameDir, error)) return false;
     if (!o.videoFile.empty()) {
         const double fps = 1.0 / o.frameTime.ToDouble();
+        video.ExpectFrames(o.frames);
         if (!video.Open(o.videoFile, o.width, o.height, fps, error)) return false;
     }
     if (o.stateFile.empty()) return true;

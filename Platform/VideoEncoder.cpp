@@ -131,6 +131,9 @@ bool VideoEncoder::Open(const std::string& target, int w, int h, double framesPe
         // in parts of gifPartSize frames, each with a palette generated from its own frames and mapped by
         // its own ffmpeg while the next part renders; JoinGifs puts the parts together at Finish.
         gifPartSize = gifPartFrames > 0 ? gifPartFrames : DefaultGifPartFrames(width, height);
+        int kept = 0;
+        for (int i = 0; i < expectedFrames; ++i) kept += KeepGifFrame(i) ? 1 : 0;
+        gifPlan = PlanGifParts(kept, gifPartSize);
         return true;
     }
     std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y", "-f", "rawvideo",
@@ -257,6 +260,24 @@ int VideoEncoder::DefaultGifPartFrames(int w, int h) {
     return int(std::clamp<long long>((192LL << 20) / bytes, 10, 100));
 }
 
+std::vector<int> VideoEncoder::PlanGifParts(int frames, int partFrames) {
+    // The run waits at its end for the last part's mapping, and for the one before it if that is still mapping:
+    // so the last parts shrink. Mapping a frame (about 3 ms at 800x600) takes a little less than rendering one,
+    // so a part may be 2.3 times the next and still be mapped before the next ends: from the end 8, 19, 44 and
+    // then whole parts; the first part takes what is left.
+    std::vector<int> plan;
+    partFrames = std::max(1, partFrames);
+    int planned = 0;
+    for (int size = std::min(8, partFrames); planned < frames;
+         size = std::min(partFrames, int(std::ceil(size * 2.3)))) {
+        const int n = std::min(size, frames - planned);
+        plan.push_back(n);
+        planned += n;
+    }
+    std::reverse(plan.begin(), plan.end());
+    return plan;
+}
+
 double VideoEncoder::GifFramesPerSecond() const { return std::min(fps, 50.0); }
 
 bool VideoEncoder::KeepGifFrame(int i) const {
@@ -308,7 +329,11 @@ void VideoEncoder::TrackGifColours(const Image& frame) {
 
 bool VideoEncoder::WriteGifFrame(const Image& frame, std::string* error) {
     if (!KeepGifFrame(frames)) return ++frames, true;
-    if (gifPartFrameCount == gifPartSize && !EndGifPart(error)) return false;
+    if (gifPartFrameCount > 0) {  // the current part is the last started; full by the plan, else by the size
+        const std::size_t part = gifParts.size() - 1;
+        const int size = part < gifPlan.size() ? gifPlan[part] : gifPartSize;
+        if (gifPartFrameCount >= size && !EndGifPart(error)) return false;
+    }
     if (gifPartFrameCount == 0 && !BeginGifPart(error)) return false;
     TrackGifColours(frame);
     // Stored as BGRA, the only format paletteuse takes: converting here costs less than ffmpeg's conversion.

@@ -50,6 +50,12 @@ public:
     int FramesWritten() const { return frames; }
     /// GIF: frames per part (each part has its own palette); set before Open, for tests. 0: by frame size.
     void SetGifPartFrames(int n) { gifPartFrames = n; }
+    /// The number of frames the caller will send, when it knows (set before Open; 0: unknown). A GIF's last parts
+    /// are then made short, so the run waits less for their mapping at the end.
+    void ExpectFrames(int n) { expectedFrames = n; }
+    /// GIF: the sizes of the parts of a recording of `frames` GIF frames (after resampling) with parts of at most
+    /// partFrames: shrinking towards the end (8, 19, 44 from the end), the first part taking what is left.
+    static std::vector<int> PlanGifParts(int frames, int partFrames);
 
 private:
     bool RecordFrame(const Image& frame, std::string* error);
@@ -107,6 +113,8 @@ private:
     int gifRawIndex = -1, gifRawFd = -1;     // GIF: the current part's raw file, open while its frames arrive
     int gifPartFrames = 0;                   // GIF: frames per part as set (0: by frame size)
     int gifPartSize = 0;                     // GIF: frames per part of this recording
+    int expectedFrames = 0;                  // frames the caller said it will send (0: unknown)
+    std::vector<int> gifPlan;                // GIF: part sizes planned from expectedFrames (then gifPartSize)
     int gifPartFrameCount = 0;               // GIF: frames in the current part so far
     std::vector<std::uint8_t> yuv;           // MP4, WebM: a frame as sent to ffmpeg
     Image gifPrevious;                       // GIF: the last frame recorded (to find the pixels that changed)

@@ -165,6 +165,45 @@ TEST_F(VideoEncoderTest, GifPartsEachGetThePaletteOfTheirFramesAndJoinExactly) {
     }
 }
 
+TEST(VideoEncoderGifPlan, TheLastPartsShrinkAndThePartsAddUp) {
+    using V = std::vector<int>;
+    EXPECT_EQ(VideoEncoder::PlanGifParts(250, 100), (V{79, 100, 44, 19, 8}));  // 300 frames at 60 fps
+    EXPECT_EQ(VideoEncoder::PlanGifParts(50, 100), (V{23, 19, 8}));
+    EXPECT_EQ(VideoEncoder::PlanGifParts(5, 100), (V{5}));
+    EXPECT_EQ(VideoEncoder::PlanGifParts(30, 7), (V{2, 7, 7, 7, 7}));
+    EXPECT_TRUE(VideoEncoder::PlanGifParts(0, 100).empty()) << "no frames expected: parts of the default size";
+    for (int frames : {1, 9, 99, 101, 999, 12345}) {
+        const V plan = VideoEncoder::PlanGifParts(frames, 100);
+        int sum = 0;
+        for (std::size_t k = 0; k < plan.size(); ++k) {
+            sum += plan[k];
+            EXPECT_GE(plan[k], 1);
+            EXPECT_LE(plan[k], 100);
+            if (k >= 2) {
+                EXPECT_LE(plan[k], plan[k - 1]) << "shrinking after the first part";
+            }
+        }
+        EXPECT_EQ(sum, frames);
+        EXPECT_LE(plan.back(), 8);
+    }
+}
+
+TEST_F(VideoEncoderTest, AGifOfAKnownLengthInPlannedPartsJoinsExactly) {
+    // 60 frames expected at 60 fps: 50 GIF frames in parts of 23, 19 and 8, each frame back exactly.
+    const int w = 64, h = 48;
+    const std::string path = (dir / "planned.gif").string();
+    VideoEncoder video;
+    video.ExpectFrames(60);
+    std::string error;
+    ASSERT_TRUE(video.Open(path, w, h, 60.0, &error)) << error;
+    for (int i = 0; i < 60; ++i) ASSERT_TRUE(video.WriteFrame(ManyColourFrame(w, h, i), &error)) << error;
+    ASSERT_TRUE(video.Finish(&error)) << error;
+    const std::vector<Image> decoded = DecodeAll(path, (dir / "planned.rgb").string(), w, h);
+    ASSERT_EQ(decoded.size(), 50u);
+    for (int j = 0; j < 50; ++j)
+        EXPECT_TRUE(decoded[std::size_t(j)] == ManyColourFrame(w, h, (12 * j + 5) / 10)) << "GIF frame " << j;
+}
+
 TEST_F(VideoEncoderTest, AGifPartOfMoreThan256ColoursGetsAGeneratedPalette) {
     // Every pixel a colour of its own (3,072): the part's palette comes from palettegen, and the frames come
     // back close (no dithering: each pixel maps to its nearest palette colour).
