@@ -253,9 +253,9 @@ bool VideoEncoder::RecordFrame(const Image& frame, std::string* error) {
 }
 
 int VideoEncoder::DefaultGifPartFrames(int w, int h) {
-    // A part's frames wait in a raw file (4 bytes a pixel) until the part is complete, and the run waits for the
-    // last part's mapping: at most 100 frames (2 s at GIF's 50 fps; 70 to 150 measured alike at 800x600) and
-    // 192 MiB, at least 10.
+    // A part's frames wait in a raw file until the part is complete (1 byte a pixel, 4 once it has more than 256
+    // colours), and the run waits for the last part: at most 100 frames (2 s at GIF's 50 fps; 70 to 150 measured
+    // alike at 800x600) and 192 MiB as BGRA, at least 10.
     const long long bytes = 4LL * w * h;
     return int(std::clamp<long long>((192LL << 20) / bytes, 10, 100));
 }
@@ -289,41 +289,19 @@ bool VideoEncoder::KeepGifFrame(int i) const {
     return std::ceil((i + 0.5) * ratio) > std::ceil((i - 0.5) * ratio);
 }
 
-bool VideoEncoder::AddGifColour(std::uint32_t rgb) {
-    // Open addressing in 512 slots for at most 256 colours (0: empty; colours are stored with bit 24 set).
-    const std::uint32_t key = rgb | 0x1000000u;
+int VideoEncoder::GifIndexOf(std::uint32_t rgb) {
+    // Open addressing in 512 slots for at most 256 colours: a slot holds the colour with bit 24 set and its index
+    // (the order in which the part met it) in bits 25-32; 0 is empty.
+    const std::uint64_t key = rgb | 0x1000000u;
     for (std::uint32_t h = (rgb * 2654435761u) >> 23;; h = (h + 1) & 511u) {
-        if (gifColourSlots[h] == key) return true;
-        if (gifColourSlots[h] == 0) {
-            if (gifColours.size() == 256) return false;
-            gifColourSlots[h] = key;
+        const std::uint64_t slot = gifColourSlots[h];
+        if (slot == 0) {
+            if (gifColours.size() == 256) return -1;
+            gifColourSlots[h] = key | std::uint64_t(gifColours.size()) << 25;
             gifColours.push_back(rgb);
-            return true;
+            return int(gifColours.size() - 1);
         }
-    }
-}
-
-void VideoEncoder::TrackGifColours(const Image& frame) {
-    // The colours of a part: every pixel of its first frame, then those that differ from the previous frame
-    // (the demos change a fraction of a percent of their pixels a frame). Stops counting past 256.
-    if (gifColoursOverflow) return;
-    const std::uint8_t* p = frame.rgb.data();
-    const std::uint8_t* q = gifPartFrameCount > 0 ? gifPrevious.rgb.data() : nullptr;
-    const std::size_t n = frame.rgb.size();
-    constexpr std::size_t kRun = 48;  // 16 pixels compared at once
-    for (std::size_t i = 0; i < n;) {
-        if (q && i + kRun <= n && std::memcmp(p + i, q + i, kRun) == 0) {
-            i += kRun;
-            continue;
-        }
-        const std::size_t end = q ? std::min(n, i + kRun) : n;
-        for (; i < end; i += 3) {
-            if (q && p[i] == q[i] && p[i + 1] == q[i + 1] && p[i + 2] == q[i + 2]) continue;
-            if (!AddGifColour(std::uint32_t(p[i]) << 16 | std::uint32_t(p[i + 1]) << 8 | p[i + 2])) {
-                gifColoursOverflow = true;
-                return;
-            }
-        }
+        if ((slot & 0x1FFFFFFu) == key) return int(slot >> 25);
     }
 }
 
@@ -335,18 +313,79 @@ bool VideoEncoder::WriteGifFrame(const Image& frame, std::string* error) {
         if (gifPartFrameCount >= size && !EndGifPart(error)) return false;
     }
     if (gifPartFrameCount == 0 && !BeginGifPart(error)) return false;
-    TrackGifColours(frame);
-    // Stored as BGRA, the only format paletteuse takes: converting here costs less than ffmpeg's conversion.
     const std::size_t pixels = std::size_t(width) * std::size_t(height);
-    gifBgra.resize(4 * pixels);
-    const std::uint8_t* in = frame.rgb.data();
-    std::uint8_t* out = gifBgra.data();
-    for (std::size_t i = 0; i < pixels; ++i, in += 3, out += 4)
-        out[0] = in[2], out[1] = in[1], out[2] = in[0], out[3] = 255;
-    if (!WriteAll(gifRawFd, gifBgra.data(), gifBgra.size(), error, gifRaw[gifRawIndex].path.c_str())) return false;
+    const std::string& raw = gifRaw[gifRawIndex].path;
+    if (!gifColoursOverflow) {
+        // Indices into the part's colours, in the order it meets them: every pixel of its first frame, then only
+        // those that changed (the demos change a fraction of a percent of their pixels a frame); the others keep
+        // their index. The frame is stored as ffmpeg's raw pal8: the indices, then 256 palette entries of 4 bytes,
+        // written when the part ends.
+        gifIndices.resize(pixels);
+        const std::uint8_t* p = frame.rgb.data();
+        const std::uint8_t* q = gifPartFrameCount > 0 ? gifPrevious.rgb.data() : nullptr;
+        for (std::size_t i = 0; i < pixels && !gifColoursOverflow; ++i, p += 3) {
+            if (q && p[0] == q[3 * i] && p[1] == q[3 * i + 1] && p[2] == q[3 * i + 2]) continue;
+            const int index = GifIndexOf(std::uint32_t(p[0]) << 16 | std::uint32_t(p[1]) << 8 | p[2]);
+            if (index < 0) {
+                gifColoursOverflow = true;  // more than 256: this part is stored as BGRA from here on
+                if (!ExpandGifPartToBgra(error)) return false;
+            } else {
+                gifIndices[i] = std::uint8_t(index);
+            }
+        }
+        if (!gifColoursOverflow) {
+            if (!WriteAll(gifRawFd, gifIndices.data(), pixels, error, raw.c_str())) return false;
+            const std::uint8_t blank[1024] = {};  // the palette, filled in when the part ends
+            if (!WriteAll(gifRawFd, blank, sizeof blank, error, raw.c_str())) return false;
+        }
+    }
+    if (gifColoursOverflow) {
+        // More than 256 colours in the part: BGRA (the format paletteuse takes) for palettegen and paletteuse.
+        gifBgra.resize(4 * pixels);
+        const std::uint8_t* in = frame.rgb.data();
+        std::uint8_t* out = gifBgra.data();
+        for (std::size_t i = 0; i < pixels; ++i, in += 3, out += 4)
+            out[0] = in[2], out[1] = in[1], out[2] = in[0], out[3] = 255;
+        if (!WriteAll(gifRawFd, gifBgra.data(), gifBgra.size(), error, raw.c_str())) return false;
+    }
     gifPrevious.rgb.assign(frame.rgb.begin(), frame.rgb.end());
     ++gifPartFrameCount;
     ++frames;
+    return true;
+}
+
+bool VideoEncoder::ExpandGifPartToBgra(std::string* error) {
+    // Rewrites the part's frames so far (pal8, whose palette is still the part's colours in order) as BGRA.
+    const std::string& raw = gifRaw[gifRawIndex].path;
+    const std::size_t pixels = std::size_t(width) * std::size_t(height), pal8 = pixels + 1024;
+    std::vector<std::uint8_t> indices(pixels);
+    const int in = open(raw.c_str(), O_RDONLY | O_CLOEXEC);
+    if (in < 0) {
+        *error = "cannot open " + raw + ": " + std::strerror(errno);
+        return false;
+    }
+    std::vector<std::vector<std::uint8_t>> expanded(static_cast<std::size_t>(gifPartFrameCount));
+    bool ok = true;
+    for (int k = 0; ok && k < gifPartFrameCount; ++k) {
+        ok = pread(in, indices.data(), pixels, off_t(pal8 * std::size_t(k))) == ssize_t(pixels);
+        expanded[std::size_t(k)].resize(4 * pixels);
+        for (std::size_t i = 0; ok && i < pixels; ++i) {
+            const std::uint32_t c = gifColours[indices[i]];
+            std::uint8_t* out = &expanded[std::size_t(k)][4 * i];
+            out[0] = std::uint8_t(c), out[1] = std::uint8_t(c >> 8), out[2] = std::uint8_t(c >> 16), out[3] = 255;
+        }
+    }
+    close(in);
+    if (!ok) {
+        *error = "reading " + raw + " back failed";
+        return false;
+    }
+    if (lseek(gifRawFd, 0, SEEK_SET) != 0) {
+        *error = "cannot rewind " + raw + ": " + std::strerror(errno);
+        return false;
+    }
+    for (const std::vector<std::uint8_t>& f : expanded)
+        if (!WriteAll(gifRawFd, f.data(), f.size(), error, raw.c_str())) return false;
     return true;
 }
 
@@ -364,11 +403,11 @@ bool VideoEncoder::BeginGifPart(std::string* error) {
         return false;
     }
     gifColours.clear();
-    std::fill(std::begin(gifColourSlots), std::end(gifColourSlots), 0u);
+    std::fill(std::begin(gifColourSlots), std::end(gifColourSlots), std::uint64_t(0));
     gifColoursOverflow = false;
     // The part's ffmpeg starts now, so that its start-up (about 0.07 s of loading libraries) overlaps the
-    // part's frames: it waits for the palette on its standard input, which EndGifPart writes, and only then
-    // opens the raw file, complete by then.
+    // part's frames: it first reads a small image on its standard input (unused otherwise), which EndGifPart
+    // writes, and only then opens the raw file, complete by then.
     GifPart part;
     part.rawIndex = gifRawIndex;
     part.gif.path = CreateTemporaryBeside(path, &part.gif.id, error);
@@ -376,11 +415,9 @@ bool VideoEncoder::BeginGifPart(std::string* error) {
     if (part.gif.path.empty()) return false;
     std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y",
                                      "-f",     "png_pipe",     "-i",        "pipe:0"};
-    for (const std::string& a : GifRawInput(raw.path)) args.push_back(a);
-    // paletteuse maps without dithering, so the demos' flat colours stay exact, and only the rectangle that
-    // changed since the previous frame.
-    for (const std::string& a : std::vector<std::string>{"-filter_complex", "[1:v][0:v]" + GifMapping()})
-        args.push_back(a);
+    for (const std::string& a : GifRawInput(raw.path, "pal8")) args.push_back(a);
+    args.push_back("-map");
+    args.push_back("1:v");
     for (const std::string& a : GifOutput(part.gif.path)) args.push_back(a);
     if (!Spawn(args, true, error)) return false;
     gifParts.back().pid = child;
@@ -390,9 +427,9 @@ bool VideoEncoder::BeginGifPart(std::string* error) {
     return true;
 }
 
-std::vector<std::string> VideoEncoder::GifRawInput(const std::string& raw) const {
+std::vector<std::string> VideoEncoder::GifRawInput(const std::string& raw, const char* pixelFormat) const {
     return {"-f",          "rawvideo",
-            "-pix_fmt",    "bgra",
+            "-pix_fmt",    pixelFormat,
             "-video_size", std::to_string(width) + "x" + std::to_string(height),
             "-framerate",  Number(GifFramesPerSecond()),
             "-i",          raw};
@@ -405,45 +442,54 @@ std::vector<std::string> VideoEncoder::GifOutput(const std::string& gif) const {
     return {"-final_delay", std::to_string(delay), "-loop", "0", "-f", "gif", gif};
 }
 
-std::string VideoEncoder::GifMapping() { return "paletteuse=dither=none:diff_mode=rectangle"; }
-
 bool VideoEncoder::EndGifPart(std::string* error) {
     const TempFile& raw = gifRaw[gifRawIndex];
     GifPart& part = gifParts.back();
     const int fd = gifRawFd;
     gifRawFd = -1;
-    const bool truncated = ftruncate(fd, off_t(4LL * width * height * gifPartFrameCount)) == 0;  // shorter?
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    const std::size_t frameBytes = gifColoursOverflow ? 4 * pixels : pixels + 1024;
+    bool written = true;
+    if (!gifColoursOverflow) {
+        // At most 256 colours: the palette is exactly the part's colours, which is what palettegen would find
+        // for them, and each pixel's index is its exact colour, which is what paletteuse would map it to. Every
+        // frame gets the palette (ffmpeg's pal8 entries: 0xAARRGGBB, little-endian; unused entries transparent,
+        // which the GIF encoder uses for the pixels a frame leaves unchanged).
+        std::uint8_t palette[1024] = {};
+        for (std::size_t k = 0; k < gifColours.size(); ++k) {
+            const std::uint32_t c = gifColours[k];
+            palette[4 * k] = std::uint8_t(c), palette[4 * k + 1] = std::uint8_t(c >> 8);
+            palette[4 * k + 2] = std::uint8_t(c >> 16), palette[4 * k + 3] = 255;
+        }
+        for (int f = 0; written && f < gifPartFrameCount; ++f)
+            written = pwrite(fd, palette, sizeof palette, off_t(frameBytes * std::size_t(f) + pixels)) ==
+                      ssize_t(sizeof palette);
+    }
+    written = written && ftruncate(fd, off_t(frameBytes * std::size_t(gifPartFrameCount))) == 0;  // shorter?
     gifPartFrameCount = 0;
-    if (close(fd) != 0 || !truncated) {
+    if (close(fd) != 0 || !written) {
         *error = "writing " + raw.path + " failed: " + std::strerror(errno);
         return false;
     }
-    const int paletteFd = part.paletteFd;
+    const int gateFd = part.paletteFd;
     part.paletteFd = -1;
     if (!gifColoursOverflow) {
-        // At most 256 colours: the palette is exactly the part's colours (what palettegen would find, without
-        // reading the frames again), in increasing order, as the 16x16 image paletteuse reads.
-        std::sort(gifColours.begin(), gifColours.end());
-        Image image(16, 16);
-        for (std::size_t k = 0; k < 256; ++k) {
-            const std::uint32_t c = gifColours[std::min(k, gifColours.size() - 1)];
-            std::uint8_t* px = &image.rgb[3 * k];
-            px[0] = std::uint8_t(c >> 16), px[1] = std::uint8_t(c >> 8), px[2] = std::uint8_t(c);
-        }
+        // Release the waiting ffmpeg: a 1x1 image on its standard input.
         std::vector<std::uint8_t> png;
-        if (!EncodePng(image, PngOptions{}, &png, error)) return close(paletteFd), false;
-        const bool sent = WriteAll(paletteFd, png.data(), png.size(), error, "ffmpeg");
-        close(paletteFd);
+        if (!EncodePng(Image(1, 1), PngOptions{}, &png, error)) return close(gateFd), false;
+        const bool sent = WriteAll(gateFd, png.data(), png.size(), error, "ffmpeg");
+        close(gateFd);
         if (sent) return true;
-        // ffmpeg went away before reading its palette: its own message says why.
+        // ffmpeg went away before it read the image: its own message says why.
         child = part.pid;
         part.pid = -1;
         Wait(error);
         return false;
     }
-    // More than 256: palettegen chooses them from the part's frames (stats_mode=full: weighted by area), in an
-    // ffmpeg of its own instead of the waiting one.
-    close(paletteFd);
+    // More than 256: palettegen chooses them from the part's frames (stats_mode=full: weighted by area), and
+    // paletteuse maps them without dithering and only where a frame changed, in an ffmpeg of its own instead of
+    // the waiting one.
+    close(gateFd);
     if (part.pid > 0) {
         kill(part.pid, SIGKILL);
         child = part.pid;
@@ -452,10 +498,11 @@ bool VideoEncoder::EndGifPart(std::string* error) {
         Wait(&ignored);
     }
     std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y"};
-    for (const std::string& a : GifRawInput(raw.path)) args.push_back(a);
+    for (const std::string& a : GifRawInput(raw.path, "bgra")) args.push_back(a);
     args.push_back("-filter_complex");
-    args.push_back("[0:v]split[keep][stats];[stats]palettegen=stats_mode=full:reserve_transparent=0[p];[keep][p]" +
-                   GifMapping());
+    args.push_back(
+        "[0:v]split[keep][stats];[stats]palettegen=stats_mode=full:reserve_transparent=0[p];[keep][p]"
+        "paletteuse=dither=none:diff_mode=rectangle");
     for (const std::string& a : GifOutput(part.gif.path)) args.push_back(a);
     if (!Spawn(args, false, error)) return false;
     part.pid = child;

@@ -3,10 +3,11 @@
 // own while the caller renders the next frames.
 // - .mp4 is H.264 (libx264 ultrafast), .webm VP9 (libvpx-vp9 realtime, one thread): frames go down a pipe to one
 //   ffmpeg, converted here to yuv420p (Platform/Yuv420.h; ffmpeg's own conversion cost as much as encoding).
-// - .gif is made in parts of up to 100 frames. Each part's palette is generated from its own frames: exactly
-//   its colours when there are at most 256 (counted here as the frames arrive), else by palettegen. Each part
-//   is mapped by paletteuse (no dithering, so the demos' flat colours stay exact) in an ffmpeg started with the
-//   part, while the next part renders; the parts are joined at Finish (Platform/GifJoin.h).
+// - .gif is made in parts of up to 100 frames, each with a palette generated from its own frames: while a part
+//   has at most 256 colours, exactly its colours, each pixel stored as its index (raw pal8, which ffmpeg only
+//   encodes); past 256, palettegen and paletteuse (no dithering, so the demos' flat colours stay exact) over
+//   its frames as BGRA. Each part's ffmpeg starts with the part and works while the next part renders; the
+//   parts are joined at Finish (Platform/GifJoin.h).
 // The file appears only when the recording is complete: ffmpeg writes a temporary file beside it, renamed at
 // Finish; Abort (or the destructor) removes it, and so does SIGINT/SIGTERM (Platform/Files/TempRegistry.h),
 // after killing ffmpeg. docs/app.md, "Video".
@@ -63,22 +64,21 @@ private:
     bool Wait(std::string* error);
     /// GIF: records one frame (after resampling) into the current part, ending the part when it is full.
     bool WriteGifFrame(const Image& frame, std::string* error);
-    /// GIF: adds the frame's new colours (all of the part's first frame, then pixels that changed) to the part's.
-    void TrackGifColours(const Image& frame);
-    /// GIF: adds one colour (0xRRGGBB) to the part's set; false if it already holds 256 others.
-    bool AddGifColour(std::uint32_t rgb);
+    /// GIF: the index of a colour (0xRRGGBB) in the part's palette, adding it; -1 if the part already has 256.
+    int GifIndexOf(std::uint32_t rgb);
+    /// GIF: rewrites the current part's frames so far, stored as indices, as BGRA (the part has met its 257th
+    /// colour).
+    bool ExpandGifPartToBgra(std::string* error);
     /// GIF: opens the next raw file for a new part (waiting for the part that read it last) and starts the
     /// part's ffmpeg, which waits for the palette.
     bool BeginGifPart(std::string* error);
     /// GIF: closes the current part's frames and sends its palette to its ffmpeg, which maps them in the
     /// background (a part of more than 256 colours gets an ffmpeg that generates its palette instead).
     bool EndGifPart(std::string* error);
-    /// GIF: ffmpeg's input arguments for a raw file of this recording's frames.
-    std::vector<std::string> GifRawInput(const std::string& raw) const;
+    /// GIF: ffmpeg's input arguments for a raw file of this recording's frames in pixelFormat (pal8 or bgra).
+    std::vector<std::string> GifRawInput(const std::string& raw, const char* pixelFormat) const;
     /// GIF: ffmpeg's output arguments for a part's GIF.
     std::vector<std::string> GifOutput(const std::string& gif) const;
-    /// GIF: the paletteuse filter.
-    static std::string GifMapping();
     /// GIF: waits for part k's ffmpeg if it still runs.
     bool WaitGifPart(std::size_t k, std::string* error);
     /// GIF: ends the last part, waits for every part and joins them into tempPath.
@@ -120,7 +120,8 @@ private:
     Image gifPrevious;                       // GIF: the last frame recorded (to find the pixels that changed)
     std::vector<std::uint8_t> gifBgra;       // GIF: a frame as stored in the raw file
     std::vector<std::uint32_t> gifColours;   // GIF: the current part's colours, 0xRRGGBB
-    std::uint32_t gifColourSlots[512] = {};  // their hash set
+    std::uint64_t gifColourSlots[512] = {};  // their hash map to indices (GifIndexOf)
+    std::vector<std::uint8_t> gifIndices;    // GIF: a frame's indices into the part's colours
     bool gifColoursOverflow = false;         // more than 256 colours in the current part
     int width = 0, height = 0, frames = 0;
     double fps = 60.0;
