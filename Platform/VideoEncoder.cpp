@@ -402,8 +402,13 @@ bool VideoEncoder::BeginGifPart(std::string* error) {
         *error = "cannot open " + raw.path + ": " + std::strerror(errno);
         return false;
     }
-    gifColours.clear();
-    std::fill(std::begin(gifColourSlots), std::end(gifColourSlots), std::uint64_t(0));
+    // The colours go on from part to part (the parts then share one palette, and the joined GIF needs no local
+    // tables), until a part meets more than 256: the next part starts afresh.
+    if (gifColoursOverflow || gifParts.empty()) {
+        gifColours.clear();
+        std::fill(std::begin(gifColourSlots), std::end(gifColourSlots), std::uint64_t(0));
+        ++gifEpoch;
+    }
     gifColoursOverflow = false;
     // The part's ffmpeg starts now, so that its start-up (about 0.07 s of loading libraries) overlaps the
     // part's frames: it first reads a small image on its standard input (unused otherwise), which EndGifPart
@@ -473,6 +478,8 @@ bool VideoEncoder::EndGifPart(std::string* error) {
     }
     const int gateFd = part.paletteFd;
     part.paletteFd = -1;
+    part.epoch = gifColoursOverflow ? -1 : gifEpoch;
+    if (!gifColoursOverflow) part.colours = gifColours;
     if (!gifColoursOverflow) {
         // Release the waiting ffmpeg: a 1x1 image on its standard input.
         std::vector<std::uint8_t> png;
@@ -533,9 +540,44 @@ bool VideoEncoder::JoinGifParts(std::string* error) {
         if (!WaitGifPart(k, error)) return false;
         bytes[k].swap(gifParts[k].bytes);
     }
+    // Parts of one run of shared colours index them alike, each knowing those met so far: each gets the last
+    // one's palette as its global table, so that JoinGifs finds them equal. (A part's transparent index is a
+    // colour it had not met; in its frames it still marks the pixels a frame left unchanged.)
+    for (std::size_t k = 0; k < gifParts.size(); ++k) {
+        const int epoch = gifParts[k].epoch;
+        if (epoch < 0) continue;
+        const std::vector<std::uint32_t>* last = &gifParts[k].colours;
+        for (std::size_t j = k + 1; j < gifParts.size() && gifParts[j].epoch == epoch; ++j) last = &gifParts[j].colours;
+        if (!SetGifGlobalTable(*last, &bytes[k], error)) return false;
+    }
     std::vector<std::uint8_t> joined;
     if (!JoinGifs(bytes, &joined, error)) return false;
     return WriteWhole(tempPath, joined, error);
+}
+
+bool VideoEncoder::SetGifGlobalTable(const std::vector<std::uint32_t>& colours, std::vector<std::uint8_t>* gif,
+                                     std::string* error) {
+    // Header (13 bytes: the screen descriptor's packed byte at 10), then the global table, replaced by 256
+    // entries: the colours, then black.
+    if (gif->size() < 13 || (*gif)[0] != 'G') {
+        *error = "ffmpeg wrote a GIF part that is not a GIF";
+        return false;
+    }
+    const std::uint8_t packed = (*gif)[10];
+    const std::size_t old = (packed & 0x80) ? 3u * (2u << (packed & 7)) : 0u;
+    if (gif->size() < 13 + old) {
+        *error = "ffmpeg wrote a GIF part cut short";
+        return false;
+    }
+    std::vector<std::uint8_t> table(768, 0);
+    for (std::size_t k = 0; k < colours.size() && k < 256; ++k) {
+        table[3 * k] = std::uint8_t(colours[k] >> 16), table[3 * k + 1] = std::uint8_t(colours[k] >> 8);
+        table[3 * k + 2] = std::uint8_t(colours[k]);
+    }
+    (*gif)[10] = std::uint8_t((packed & 0x78) | 0x80 | 7);
+    gif->erase(gif->begin() + 13, gif->begin() + std::ptrdiff_t(13 + old));
+    gif->insert(gif->begin() + 13, table.begin(), table.end());
+    return true;
 }
 
 bool VideoEncoder::Finish(std::string* error) {

@@ -81,6 +81,9 @@ private:
     std::vector<std::string> GifOutput(const std::string& gif) const;
     /// GIF: waits for part k's ffmpeg if it still runs.
     bool WaitGifPart(std::size_t k, std::string* error);
+    /// GIF: gives a part's GIF a 256-entry global table of these colours (by index, then black).
+    static bool SetGifGlobalTable(const std::vector<std::uint32_t>& colours, std::vector<std::uint8_t>* gif,
+                                  std::string* error);
     /// GIF: ends the last part, waits for every part and joins them into tempPath.
     bool JoinGifParts(std::string* error);
     /// GIF: whether input frame i is recorded (all of them up to 50 fps; above, those nearest 1/50 s steps).
@@ -100,10 +103,12 @@ private:
     /// A part of a GIF: the GIF its ffmpeg maps the part's frames into.
     struct GifPart {
         TempFile gif;
-        int rawIndex = -1;                // the raw file its frames are in (gifRaw), until its ffmpeg has finished
-        pid_t pid = -1;                   // its ffmpeg, until waited for
-        std::vector<std::uint8_t> bytes;  // the part's GIF, read once its ffmpeg has finished
-        int paletteFd = -1;               // the pipe its ffmpeg reads the palette from, until the part ends
+        int rawIndex = -1;                   // the raw file its frames are in (gifRaw), until its ffmpeg has finished
+        pid_t pid = -1;                      // its ffmpeg, until waited for
+        std::vector<std::uint8_t> bytes;     // the part's GIF, read once its ffmpeg has finished
+        int paletteFd = -1;                  // the pipe its ffmpeg reads a start signal from, until the part ends
+        int epoch = -1;                      // its run of shared colours (-1: more than 256, palettegen's)
+        std::vector<std::uint32_t> colours;  // the run's colours as the part ended (0xRRGGBB, by index)
     };
 
     std::string path, tempPath, logPath;
@@ -122,7 +127,9 @@ private:
     std::vector<std::uint32_t> gifColours;   // GIF: the current part's colours, 0xRRGGBB
     std::uint64_t gifColourSlots[512] = {};  // their hash map to indices (GifIndexOf)
     std::vector<std::uint8_t> gifIndices;    // GIF: a frame's indices into the part's colours
-    bool gifColoursOverflow = false;         // more than 256 colours in the current part
+    bool gifColoursOverflow = false;
+    int gifEpoch = 0;  // GIF: which run of shared colours the current part is in         // more than 256 colours in
+                       // the current part
     int width = 0, height = 0, frames = 0;
     double fps = 60.0;
     pid_t child = -1;
