@@ -54,9 +54,10 @@ protected:
         if (!dir.empty()) fs::remove_all(dir);
     }
     /// Records `count` frames of w x h at fps; returns the path (empty on failure, with a test failure).
-    std::string Record(const std::string& name, int w, int h, int count, double fps) {
+    std::string Record(const std::string& name, int w, int h, int count, double fps, int gifPartFrames = 0) {
         const std::string path = (dir / name).string();
         VideoEncoder video;
+        video.SetGifPartFrames(gifPartFrames);
         std::string error;
         EXPECT_TRUE(video.Open(path, w, h, fps, &error)) << error;
         for (int i = 0; i < count; ++i) EXPECT_TRUE(video.WriteFrame(Frame(w, h, i), &error)) << error;
@@ -171,6 +172,65 @@ TEST_F(VideoEncoderTest, GifPartsEachGetThePaletteOfTheirFramesAndJoinExactly) {
     EXPECT_EQ(Leftovers("parts.gif") - 1, 0) << "only the GIF and its decoded frames: parts and raw files are gone";
     EXPECT_EQ(Probe(path, "stream=nb_read_frames"), "50");
     EXPECT_NEAR(std::stod(Probe(path, "format=duration")), 1.0, 0.021);
+}
+
+/// Images in a GIF file and how many of them carry a local colour table (walks the GIF89a blocks).
+std::pair<int, int> ImagesAndLocalTables(const std::string& path) {
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    std::vector<std::uint8_t> b;
+    if (f) {
+        for (int c; (c = std::fgetc(f)) != EOF;) b.push_back(std::uint8_t(c));
+        std::fclose(f);
+    }
+    int images = 0, local = 0;
+    if (b.size() < 13) return {-1, -1};
+    std::size_t i = 13 + ((b[10] & 0x80) ? 3u * (2u << (b[10] & 7)) : 0u);
+    auto skipBlocks = [&] {
+        while (i < b.size() && b[i] != 0) i += b[i] + 1u;
+        ++i;
+    };
+    while (i < b.size() && b[i] != 0x3B) {
+        if (b[i] == 0x21) {
+            i += 2;
+            skipBlocks();
+        } else if (b[i] == 0x2C && i + 10 <= b.size()) {
+            ++images;
+            const std::uint8_t packed = b[i + 9];
+            if (packed & 0x80) ++local;
+            i += 10 + ((packed & 0x80) ? 3u * (2u << (packed & 7)) : 0u) + 1;
+            skipBlocks();
+        } else {
+            return {-1, -1};
+        }
+    }
+    return {images, local};
+}
+
+TEST_F(VideoEncoderTest, GifPartsOfFewColoursShareOnePalette) {
+    // 60 frames, parts of 7 (8 parts), the square a new colour every frame: 61 colours in all, met part by part.
+    // The parts go on with the colours of those before, and each gets the last palette, so the joined GIF keeps
+    // one global table. ffmpeg gives each part's first image a small local table of its own; a palette per part
+    // would add one to each of the 43 images of parts 2 to 8.
+    const std::string path = (dir / "shared.gif").string();
+    VideoEncoder video;
+    video.SetGifPartFrames(7);
+    std::string error;
+    ASSERT_TRUE(video.Open(path, 64, 48, 60.0, &error)) << error;
+    std::vector<Image> sent;
+    for (int i = 0; i < 60; ++i) {
+        Image frame = Frame(64, 48, i);
+        for (std::size_t k = 0; k < frame.rgb.size(); k += 3)
+            if (frame.rgb[k + 1] == 255) frame.rgb[k] = std::uint8_t(20 + 3 * i);  // the square's red
+        sent.push_back(frame);
+        ASSERT_TRUE(video.WriteFrame(frame, &error)) << error;
+    }
+    ASSERT_TRUE(video.Finish(&error)) << error;
+    const std::pair<int, int> counts = ImagesAndLocalTables(path);
+    EXPECT_EQ(counts.first, 50);
+    EXPECT_LE(counts.second, 8) << "at most one local table a part";
+    const std::vector<Image> decoded = DecodeAll(path, (dir / "shared.rgb").string(), 64, 48);
+    ASSERT_EQ(decoded.size(), 50u);
+    for (int j = 0; j < 50; ++j) EXPECT_TRUE(decoded[std::size_t(j)] == sent[std::size_t((12 * j + 5) / 10)]) << j;
 }
 
 TEST(VideoEncoderGifPlan, TheLastPartsShrinkAndThePartsAddUp) {
