@@ -355,26 +355,20 @@ bool VideoEncoder::WriteGifFrame(const Image& frame, std::string* error) {
 }
 
 bool VideoEncoder::ExpandGifPartToBgra(std::string* error) {
-    // Rewrites the part's frames so far (pal8, whose palette is still the part's colours in order) as BGRA.
+    // Rewrites the part's frames so far (pal8, indices into the colours met so far) as BGRA. The BGRA frames
+    // overwrite the pal8 ones, so every frame's indices are read first (a quarter of the BGRA's size).
     const std::string& raw = gifRaw[gifRawIndex].path;
     const std::size_t pixels = std::size_t(width) * std::size_t(height), pal8 = pixels + 1024;
-    std::vector<std::uint8_t> indices(pixels);
+    const std::size_t count = static_cast<std::size_t>(gifPartFrameCount);
+    std::vector<std::uint8_t> indices(pixels * count);
     const int in = open(raw.c_str(), O_RDONLY | O_CLOEXEC);
     if (in < 0) {
         *error = "cannot open " + raw + ": " + std::strerror(errno);
         return false;
     }
-    std::vector<std::vector<std::uint8_t>> expanded(static_cast<std::size_t>(gifPartFrameCount));
     bool ok = true;
-    for (int k = 0; ok && k < gifPartFrameCount; ++k) {
-        ok = pread(in, indices.data(), pixels, off_t(pal8 * std::size_t(k))) == ssize_t(pixels);
-        expanded[std::size_t(k)].resize(4 * pixels);
-        for (std::size_t i = 0; ok && i < pixels; ++i) {
-            const std::uint32_t c = gifColours[indices[i]];
-            std::uint8_t* out = &expanded[std::size_t(k)][4 * i];
-            out[0] = std::uint8_t(c), out[1] = std::uint8_t(c >> 8), out[2] = std::uint8_t(c >> 16), out[3] = 255;
-        }
-    }
+    for (std::size_t k = 0; ok && k < count; ++k)
+        ok = pread(in, &indices[pixels * k], pixels, off_t(pal8 * k)) == ssize_t(pixels);
     close(in);
     if (!ok) {
         *error = "reading " + raw + " back failed";
@@ -384,8 +378,15 @@ bool VideoEncoder::ExpandGifPartToBgra(std::string* error) {
         *error = "cannot rewind " + raw + ": " + std::strerror(errno);
         return false;
     }
-    for (const std::vector<std::uint8_t>& f : expanded)
-        if (!WriteAll(gifRawFd, f.data(), f.size(), error, raw.c_str())) return false;
+    gifBgra.resize(4 * pixels);
+    for (std::size_t k = 0; k < count; ++k) {
+        for (std::size_t i = 0; i < pixels; ++i) {
+            const std::uint32_t c = gifColours[indices[pixels * k + i]];
+            std::uint8_t* out = &gifBgra[4 * i];
+            out[0] = std::uint8_t(c), out[1] = std::uint8_t(c >> 8), out[2] = std::uint8_t(c >> 16), out[3] = 255;
+        }
+        if (!WriteAll(gifRawFd, gifBgra.data(), gifBgra.size(), error, raw.c_str())) return false;
+    }
     return true;
 }
 
