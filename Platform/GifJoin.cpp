@@ -139,3 +139,22 @@ bool JoinGifs(const std::vector<std::vector<std::uint8_t>>& parts, std::vector<s
     out->push_back(0x3B);
     return true;
 }
+
+bool ReplaceGlobalColourTable(std::vector<std::uint8_t>* gif, const std::vector<std::uint8_t>& table,
+                              std::string* error) {
+    Part part;
+    if (!ParseHeader(*gif, &part)) {
+        *error = "not a GIF file";
+        return false;
+    }
+    int bits = 0;
+    while (bits < 8 && 3u * (2u << bits) != table.size()) ++bits;
+    if (bits == 8) {
+        *error = "a colour table of " + std::to_string(table.size()) + " bytes (3 x 2 to 3 x 256, a power of two)";
+        return false;
+    }
+    (*gif)[10] = std::uint8_t(((*gif)[10] & 0x78) | 0x80 | bits);  // keep colour resolution and sort bits
+    gif->erase(gif->begin() + std::ptrdiff_t(kHeaderSize), gif->begin() + std::ptrdiff_t(part.tableEnd));
+    gif->insert(gif->begin() + std::ptrdiff_t(kHeaderSize), table.begin(), table.end());
+    return true;
+}

@@ -18,3 +18,10 @@
 /// the tables are equal), and later parts' application extensions (the loop count) are dropped. False, with
 /// *error naming the part and what is wrong, if a part is not a well-formed GIF or the sizes differ.
 bool JoinGifs(const std::vector<std::vector<std::uint8_t>>& parts, std::vector<std::uint8_t>* out, std::string* error);
+
+/// Gives a GIF file (its whole bytes) the global colour table `table` (3 bytes an entry, 2 to 256 entries, a
+/// power of two) in place of its own, and sets the screen descriptor's table size to match. The images keep their
+/// indices, so the table must give them the colours they mean. False, with *error, if gif is not a GIF or the
+/// table's size is not one a GIF can have.
+bool ReplaceGlobalColourTable(std::vector<std::uint8_t>* gif, const std::vector<std::uint8_t>& table,
+                              std::string* error);

@@ -128,7 +128,7 @@ bool VideoEncoder::Open(const std::string& target, int w, int h, double framesPe
     if (logPath.empty()) return Cleanup(), false;
     if (format == Format::Gif) {
         // A palette generated from all the frames could only be applied after the run. Instead the GIF is made
-        // in parts of gifPartSize frames, each with a palette generated from its own frames and mapped by
+        // in parts of up to gifPartSize frames, each with a palette generated from its own frames and encoded by
         // its own ffmpeg while the next part renders; JoinGifs puts the parts together at Finish.
         gifPartSize = gifPartFrames > 0 ? gifPartFrames : DefaultGifPartFrames(width, height);
         int kept = 0;
@@ -427,7 +427,7 @@ bool VideoEncoder::BeginGifPart(std::string* error) {
     for (const std::string& a : GifOutput(part.gif.path)) args.push_back(a);
     if (!Spawn(args, true, error)) return false;
     gifParts.back().pid = child;
-    gifParts.back().paletteFd = pipeFd;
+    gifParts.back().startFd = pipeFd;
     child = -1;
     pipeFd = -1;
     return true;
@@ -477,11 +477,11 @@ bool VideoEncoder::EndGifPart(std::string* error) {
         *error = "writing " + raw.path + " failed: " + std::strerror(errno);
         return false;
     }
-    const int gateFd = part.paletteFd;
-    part.paletteFd = -1;
-    part.epoch = gifColoursOverflow ? -1 : gifEpoch;
-    if (!gifColoursOverflow) part.colours = gifColours;
+    const int gateFd = part.startFd;
+    part.startFd = -1;
     if (!gifColoursOverflow) {
+        part.epoch = gifEpoch;
+        part.colours = gifColours;
         // Release the waiting ffmpeg: a 1x1 image on its standard input.
         std::vector<std::uint8_t> png;
         if (!EncodePng(Image(1, 1), PngOptions{}, &png, error)) return close(gateFd), false;
@@ -549,36 +549,20 @@ bool VideoEncoder::JoinGifParts(std::string* error) {
         if (epoch < 0) continue;
         const std::vector<std::uint32_t>* last = &gifParts[k].colours;
         for (std::size_t j = k + 1; j < gifParts.size() && gifParts[j].epoch == epoch; ++j) last = &gifParts[j].colours;
-        if (!SetGifGlobalTable(*last, &bytes[k], error)) return false;
+        std::vector<std::uint8_t> table(768, 0);  // 256 entries: the colours by index, then black
+        for (std::size_t c = 0; c < last->size(); ++c) {
+            const std::uint32_t rgb = (*last)[c];
+            table[3 * c] = std::uint8_t(rgb >> 16), table[3 * c + 1] = std::uint8_t(rgb >> 8);
+            table[3 * c + 2] = std::uint8_t(rgb);
+        }
+        if (!ReplaceGlobalColourTable(&bytes[k], table, error)) {
+            *error = "GIF part " + std::to_string(k + 1) + " from ffmpeg: " + *error;
+            return false;
+        }
     }
     std::vector<std::uint8_t> joined;
     if (!JoinGifs(bytes, &joined, error)) return false;
     return WriteWhole(tempPath, joined, error);
-}
-
-bool VideoEncoder::SetGifGlobalTable(const std::vector<std::uint32_t>& colours, std::vector<std::uint8_t>* gif,
-                                     std::string* error) {
-    // Header (13 bytes: the screen descriptor's packed byte at 10), then the global table, replaced by 256
-    // entries: the colours, then black.
-    if (gif->size() < 13 || (*gif)[0] != 'G') {
-        *error = "ffmpeg wrote a GIF part that is not a GIF";
-        return false;
-    }
-    const std::uint8_t packed = (*gif)[10];
-    const std::size_t old = (packed & 0x80) ? 3u * (2u << (packed & 7)) : 0u;
-    if (gif->size() < 13 + old) {
-        *error = "ffmpeg wrote a GIF part cut short";
-        return false;
-    }
-    std::vector<std::uint8_t> table(768, 0);
-    for (std::size_t k = 0; k < colours.size() && k < 256; ++k) {
-        table[3 * k] = std::uint8_t(colours[k] >> 16), table[3 * k + 1] = std::uint8_t(colours[k] >> 8);
-        table[3 * k + 2] = std::uint8_t(colours[k]);
-    }
-    (*gif)[10] = std::uint8_t((packed & 0x78) | 0x80 | 7);
-    gif->erase(gif->begin() + 13, gif->begin() + std::ptrdiff_t(13 + old));
-    gif->insert(gif->begin() + 13, table.begin(), table.end());
-    return true;
 }
 
 bool VideoEncoder::Finish(std::string* error) {
@@ -621,7 +605,7 @@ void VideoEncoder::Abort() {
     std::vector<pid_t> running = {child};
     for (GifPart& part : gifParts) {
         running.push_back(part.pid), part.pid = -1;
-        if (part.paletteFd >= 0) close(part.paletteFd), part.paletteFd = -1;
+        if (part.startFd >= 0) close(part.startFd), part.startFd = -1;
     }
     if (gifRawFd >= 0) close(gifRawFd), gifRawFd = -1;
     child = -1;

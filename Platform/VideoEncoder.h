@@ -81,9 +81,6 @@ private:
     std::vector<std::string> GifOutput(const std::string& gif) const;
     /// GIF: waits for part k's ffmpeg if it still runs.
     bool WaitGifPart(std::size_t k, std::string* error);
-    /// GIF: gives a part's GIF a 256-entry global table of these colours (by index, then black).
-    static bool SetGifGlobalTable(const std::vector<std::uint32_t>& colours, std::vector<std::uint8_t>* gif,
-                                  std::string* error);
     /// GIF: ends the last part, waits for every part and joins them into tempPath.
     bool JoinGifParts(std::string* error);
     /// GIF: whether input frame i is recorded (all of them up to 50 fps; above, those nearest 1/50 s steps).
@@ -106,7 +103,7 @@ private:
         int rawIndex = -1;                   // the raw file its frames are in (gifRaw), until its ffmpeg has finished
         pid_t pid = -1;                      // its ffmpeg, until waited for
         std::vector<std::uint8_t> bytes;     // the part's GIF, read once its ffmpeg has finished
-        int paletteFd = -1;                  // the pipe its ffmpeg reads a start signal from, until the part ends
+        int startFd = -1;                    // the pipe its ffmpeg waits on before reading the part, until it ends
         int epoch = -1;                      // its run of shared colours (-1: more than 256, palettegen's)
         std::vector<std::uint32_t> colours;  // the run's colours as the part ended (0xRRGGBB, by index)
     };

@@ -1,6 +1,6 @@
-// Joining GIF parts (Platform/GifJoin.h) on hand-made 1x1 GIFs: the first part's header stands, later parts'
-// images get their part's palette as a local colour table (unless it equals the first's), later loop
-// extensions are dropped, and malformed parts are refused, naming the part. The recorder's GIFs, joined and
+// Joining GIF parts and replacing a global table (Platform/GifJoin.h) on hand-made 1x1 GIFs: the first part's header
+// stands, later parts' images get their part's palette as a local colour table (unless it equals the first's), later
+// loop extensions are dropped, and malformed parts are refused, naming the part. The recorder's GIFs, joined and
 // decoded by ffmpeg, are checked pixel for pixel in VideoEncoder_test.cpp.
 #include "Platform/GifJoin.h"
 
@@ -82,6 +82,23 @@ TEST(GifJoin, AnImagesOwnLocalTableIsKept) {
     std::string error;
     ASSERT_TRUE(JoinGifs({a, b}, &out, &error)) << error;
     EXPECT_EQ(out, Cat({Header(1, kRedBlack), kImage, own, kTrailer}));
+}
+
+TEST(GifJoin, AGlobalTableIsReplacedWithItsSize) {
+    // A two-entry table (packed 0x80) replaced by four entries: packed 0x81, the new table, the rest unchanged.
+    // The colour resolution and sort bits (0x78) stay.
+    Bytes gif = Cat({Header(1, kRedBlack), kLoop, kImage, kTrailer});
+    gif[10] |= 0x70;
+    const Bytes four = {0, 0, 255, 255, 255, 0, 1, 2, 3, 4, 5, 6};
+    std::string error;
+    ASSERT_TRUE(ReplaceGlobalColourTable(&gif, four, &error)) << error;
+    Bytes expected = Cat({Bytes{'G', 'I', 'F', '8', '9', 'a', 1, 0, 1, 0, 0xF1, 0, 0}, four, kLoop, kImage, kTrailer});
+    EXPECT_EQ(gif, expected);
+    EXPECT_FALSE(ReplaceGlobalColourTable(&gif, Bytes(9, 0), &error)) << "three entries: not a power of two";
+    EXPECT_NE(error.find("9 bytes"), std::string::npos) << error;
+    Bytes png = {'P', 'N', 'G'};
+    EXPECT_FALSE(ReplaceGlobalColourTable(&png, four, &error));
+    EXPECT_EQ(gif, expected) << "a refused table changes nothing";
 }
 
 TEST(GifJoin, MalformedPartsAreRefusedByNumber) {
