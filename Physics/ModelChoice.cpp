@@ -456,30 +456,17 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
     // largest difference sampled over it, with the Richardson factor, is the estimate (constraint error: the
     // largest seen on the candidate alone). Not the difference at the end: there a bounce that died down leaves
     // both at rest on the ground, and a spring is back near a turning point.
-    const double T = settings.runSeconds;
+    // The start window then spans the whole run: its contribution is its difference, nothing extrapolated.
     const bool refined = budget.quantity != BudgetQuantity::Constraint;
-    if (!space.hasVolumes && settings.wholeRunWork > 0.0 &&
-        T * (PredictedWork(e->model, space) + (refined ? PredictedWork(Refine(e->model, space), space) : 0.0)) <=
-            settings.wholeRunWork) {
-        const WindowResult w = RunWindow(plan[0].factory, e->model, space, budget, T, 0, 0.0);
-        *cpuSeconds += w.probeCpuSeconds;
-        *work += w.work;
-        e->wholeRun = true;
-        e->cpuPerSimSecond = w.simulated > 0.0 ? w.cpuSeconds / w.simulated : 0.0;
-        if (!w.stable || !std::isfinite(w.observed)) {
-            e->stable = w.stable;
-            e->estimate = kInf;
-            e->note = w.stable ? "its refinement blew up in the calibration" : "unstable in the calibration";
-            return;
-        }
-        e->growth = 0.0;
-        e->estimate = w.factor * w.observed;
-        e->segments.push_back(e->estimate);
-        e->note = "measured over the whole run";
-        return;
-    }
-    for (std::size_t k = 0; k < plan.size(); ++k) {
-        const WindowResult w = RunWindow(plan[k].factory, e->model, space, budget, window, plan[k].warmSteps);
+    e->wholeRun = !space.hasVolumes && settings.wholeRunWork > 0.0 &&
+                  settings.runSeconds * (PredictedWork(e->model, space) +
+                                         (refined ? PredictedWork(Refine(e->model, space), space) : 0.0)) <=
+                      settings.wholeRunWork;
+    const std::vector<PlannedWindow> whole{plan[0]};
+    const std::vector<PlannedWindow>& windows = e->wholeRun ? whole : plan;
+    const double length = e->wholeRun ? settings.runSeconds : window;
+    for (std::size_t k = 0; k < windows.size(); ++k) {
+        const WindowResult w = RunWindow(windows[k].factory, e->model, space, budget, length, windows[k].warmSteps);
         *cpuSeconds += w.probeCpuSeconds;
         *work += w.work;
         cpu += w.cpuSeconds;
@@ -491,17 +478,18 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
             break;
         }
         if (k == 0) e->growth = w.growth;
-        const double c = Contribution(plan[k], w, budget);
+        const double c = Contribution(windows[k], w, budget);
         e->segments.push_back(c);
         e->estimate = budget.quantity == BudgetQuantity::Constraint ? std::max(e->estimate, c) : e->estimate + c;
-        if (e->estimate > bound && k + 1 < plan.size()) {
+        if (e->estimate > bound && k + 1 < windows.size()) {
             e->partial = true;
             char text[96];
-            std::snprintf(text, sizeof text, "missed after %zu of %zu windows", k + 1, plan.size());
+            std::snprintf(text, sizeof text, "missed after %zu of %zu windows", k + 1, windows.size());
             e->note = text;
             break;
         }
     }
+    if (e->wholeRun && e->stable && std::isfinite(e->estimate)) e->note = "measured over the whole run";
     e->cpuPerSimSecond = simulated > 0.0 ? cpu / simulated : 0.0;
 }
 
