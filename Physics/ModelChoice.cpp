@@ -493,6 +493,46 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
     e->cpuPerSimSecond = simulated > 0.0 ? cpu / simulated : 0.0;
 }
 
+/// A window estimate can miss what a whole run sees (a period error that grows past the window, an impact a
+/// cloth's windows fall short of). When coarser steps of the candidate's family, with the same passes, were measured
+/// over the whole run, the candidate's error is taken to be at least what the nearest of them predicts. The order
+/// of that prediction is the one the family showed between its two nearest such rungs, kept between 1 and the
+/// formal order (a joint's projection makes RK4 first order; one rung alone, or errors that did not shrink, give
+/// 1): an error shrinks no faster than that as the step does. The note says when the floor raised the estimate.
+void RaiseToFamilyFloor(const std::vector<CandidateEstimate>& candidates, const std::vector<std::size_t>& order,
+                        std::size_t k, const CandidateSpace& space, CandidateEstimate* e) {
+    if (e->wholeRun || !e->stable || !std::isfinite(e->estimate)) return;
+    const CandidateEstimate* nearest = nullptr;  // the finest whole-run rung coarser than e
+    const CandidateEstimate* next = nullptr;     // the one after it
+    for (std::size_t j = 0; j < k; ++j) {
+        const CandidateEstimate& f = candidates[order[j]];
+        if (!f.evaluated || !f.wholeRun || !f.stable || f.partial || !std::isfinite(f.estimate) ||
+            !SameFamily(f.model, e->model) || Passes(f.model) != Passes(e->model) || f.model.step <= e->model.step) {
+            continue;
+        }
+        if (!nearest || f.model.step < nearest->model.step) {
+            next = nearest;
+            nearest = &f;
+        } else if (!next || f.model.step < next->model.step) {
+            next = &f;
+        }
+    }
+    if (!nearest) return;
+    double p = 1.0;
+    if (next && nearest->estimate > 0.0 && next->estimate > nearest->estimate) {
+        p = std::log(next->estimate / nearest->estimate) / std::log(next->model.step / nearest->model.step);
+    }
+    p = std::clamp(p, 1.0, static_cast<double>(OrderOf(e->model, space)));
+    const double floor = nearest->estimate * std::pow(e->model.step / nearest->model.step, p);
+    if (floor <= e->estimate) return;
+    char text[192];
+    std::snprintf(text, sizeof text,
+                  "raised from %.3g: its family's dt %g s, measured over the whole run, predicts %.3g (order %.2g)",
+                  e->estimate, nearest->model.step, floor, p);
+    e->estimate = floor;
+    e->note = text;
+}
+
 }  // namespace
 
 ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace& space, const ErrorBudget& budget,
@@ -576,6 +616,7 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
         e.evaluated = true;
         Evaluate(plan, window, space, budget, settings, bound, &e, &result.calibrationCpuSeconds,
                  &result.calibrationWork);
+        RaiseToFamilyFloor(result.candidates, order, k, space, &e);
         e.meets = e.stable && !e.partial && e.estimate <= bound;
         if (e.meets) result.chosen = static_cast<int>(order[k]);
         if (e.stable && std::isfinite(e.estimate)) {
