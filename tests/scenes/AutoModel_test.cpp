@@ -340,6 +340,23 @@ TEST(AutoModel, AWindowEstimateIsNotTrustedBelowItsFamilysWholeRun) {
     EXPECT_NE(fine->note.find("raised from"), std::string::npos) << fine->note;
 }
 
+// The evaluation limit bounds the calibration of a budget nothing meets, not one a fine candidate meets: the
+// validation's incline (a cube sliding 1.5 s down a slab) at 2.65 mm is met by the accumulated solver at 0.5 ms,
+// the 64th candidate in order of cost; with the old limit of 60 the budget was refused.
+TEST(AutoModel, TheEvaluationLimitReachesPastTheSixtiethCandidate) {
+    SceneDescription d;
+    std::vector<std::string> errors;
+    ASSERT_TRUE(LoadSceneFile(PSB_SOURCE_DIR "/scenes/reference/incline.json", &d, &errors));
+    FileScene scene(d);
+    ParameterSet params;
+    scene.AddParameters(&params);
+    AutoModel autoModel;
+    std::string error;
+    ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, d.duration, Budget(0.00265), &error)) << error;
+    EXPECT_GT(autoModel.Choice().evaluatedCount, 60);
+    EXPECT_LE(autoModel.Choice().evaluatedCount, ChoiceSettings().maxEvaluations);
+}
+
 TEST(AutoModel, RefusesABudgetNoCandidateMeets) {
     FileScene scene(Stack(3));
     ParameterSet params;
