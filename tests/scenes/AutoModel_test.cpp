@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -309,6 +310,26 @@ TEST(AutoModel, AWholeRunChoiceIsNotWatched) {
     }
 }
 
+/// A reference problem of the validation (scenes/reference/NAME.json, docs/model-choice-validation.md), its
+/// parameters registered as the app registers them, and auto's choice on it for `bound` (m) over its duration.
+struct ReferenceChoice {
+    SceneDescription description;
+    std::unique_ptr<FileScene> scene;
+    ParameterSet params;
+    AutoModel autoModel;
+    bool chosen = false;
+    std::string error;
+
+    ReferenceChoice(const std::string& name, double bound) {
+        std::vector<std::string> errors;
+        const std::string path = std::string(PSB_SOURCE_DIR "/scenes/reference/") + name + ".json";
+        EXPECT_TRUE(LoadSceneFile(path, &description, &errors)) << path;
+        scene = std::make_unique<FileScene>(description);
+        scene->AddParameters(&params);
+        chosen = autoModel.Choose(&params, scene->System(), kHostStep, description.duration, Budget(bound), &error);
+    }
+};
+
 // A window estimate is not trusted below what its family's whole-run measurements predict. The 1 m pendulum at 120°
 // over 14.45 s (the validation's reference): RK4 at 0.2 ms is cheap enough to be measured over the whole run
 // (0.38 m); at 0.1 ms it is not, and its 0.72 s start window, extrapolated, said 1.8 mm. The joint makes the family
@@ -316,18 +337,11 @@ TEST(AutoModel, AWholeRunChoiceIsNotWatched) {
 // nothing then meets it, and the run is refused; without the floor RK4 at 0.1 ms was chosen and ended 0.41 m off
 // (docs/model-choice-validation.md, a period error of 0.0052).
 TEST(AutoModel, AWindowEstimateIsNotTrustedBelowItsFamilysWholeRun) {
-    SceneDescription d;
-    std::vector<std::string> errors;
-    ASSERT_TRUE(LoadSceneFile(PSB_SOURCE_DIR "/scenes/reference/pendulum-large.json", &d, &errors));
-    FileScene scene(d);
-    ParameterSet params;
-    scene.AddParameters(&params);
-    AutoModel autoModel;
-    std::string error;
-    EXPECT_FALSE(autoModel.Choose(&params, scene.System(), kHostStep, d.duration, Budget(0.0784), &error));
+    const ReferenceChoice run("pendulum-large", 0.0784);
+    EXPECT_FALSE(run.chosen);
     const CandidateEstimate* fine = nullptr;
     const CandidateEstimate* measured = nullptr;
-    for (const CandidateEstimate& e : autoModel.Choice().candidates) {
+    for (const CandidateEstimate& e : run.autoModel.Choice().candidates) {
         if (e.model.integrator != Integrator::RK4) continue;
         if (std::fabs(e.model.step - 1e-4) < 1e-12) fine = &e;
         if (std::fabs(e.model.step - 2e-4) < 1e-12) measured = &e;
@@ -344,17 +358,10 @@ TEST(AutoModel, AWindowEstimateIsNotTrustedBelowItsFamilysWholeRun) {
 // validation's incline (a cube sliding 1.5 s down a slab) at 2.65 mm is met by the accumulated solver at 0.5 ms,
 // the 64th candidate in order of cost; with the old limit of 60 the budget was refused.
 TEST(AutoModel, TheEvaluationLimitReachesPastTheSixtiethCandidate) {
-    SceneDescription d;
-    std::vector<std::string> errors;
-    ASSERT_TRUE(LoadSceneFile(PSB_SOURCE_DIR "/scenes/reference/incline.json", &d, &errors));
-    FileScene scene(d);
-    ParameterSet params;
-    scene.AddParameters(&params);
-    AutoModel autoModel;
-    std::string error;
-    ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, d.duration, Budget(0.00265), &error)) << error;
-    EXPECT_GT(autoModel.Choice().evaluatedCount, 60);
-    EXPECT_LE(autoModel.Choice().evaluatedCount, ChoiceSettings().maxEvaluations);
+    const ReferenceChoice run("incline", 0.00265);
+    ASSERT_TRUE(run.chosen) << run.error;
+    EXPECT_GT(run.autoModel.Choice().evaluatedCount, 60);
+    EXPECT_LE(run.autoModel.Choice().evaluatedCount, ChoiceSettings().maxEvaluations);
 }
 
 TEST(AutoModel, RefusesABudgetNoCandidateMeets) {
