@@ -200,16 +200,6 @@ void CollideVolumes(const RigidbodyVolume& a, const RigidbodyVolume& b, float ma
     }
 }
 
-/// The pairs a pass solves one by one, in order: with colouring the overflow (after the batches), else every pair.
-template <typename Pair, typename F>
-void ForSerialPairs(bool colouring, const std::vector<int>& overflow, const std::vector<Pair>& pairs, F&& f) {
-    if (colouring) {
-        for (const int i : overflow) f(pairs[static_cast<std::size_t>(i)]);
-    } else {
-        for (const Pair& pair : pairs) f(pair);
-    }
-}
-
 }  // namespace
 
 Softness MakeSoftness(float hertz, float zeta, float h) {
@@ -267,20 +257,25 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
     const Softness staticSoftness = MakeSoftness(2.0f * hertz, soft.contactDampingRatio, ctx.h);
     // With colouring the batches prepare their own rows, four wide; Prepare does the pairs solved one by one.
     colouring = ctx.settings.softGraphColouring;
-    if (colouring) BuildBatches(softness, staticSoftness);
+    BuildBlocks(softness, staticSoftness);
     Prepare(volumes, ctx);
-    UpdateSeparations();
-    for (int s = 0; s < ctx.substepCount; ++s) {
-        IntegrateVelocities(ctx);
-        WarmStart();
-        for (int k = 0; k < soft.iterations; ++k)
-            Solve(ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, true);
-        IntegratePositions(ctx);
-        // The first relax pass brings each pair's separations up to date as it reaches the pair (the same values
-        // UpdateSeparations gives: poses do not change during a pass); without one, UpdateSeparations does.
-        if (soft.relaxIterations == 0) UpdateSeparations();
-        for (int k = 0; k < soft.relaxIterations; ++k)
-            Solve(ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, false, k == 0);
+    // Every substep of a block before the next block: islands share no moving body, so this is the order of one
+    // pass over all of them, with the block's rows still in cache (kBlockPairs).
+    for (const Block& block : blocks) {
+        UpdateSeparations(block);
+        for (int s = 0; s < ctx.substepCount; ++s) {
+            IntegrateVelocities(ctx, block);
+            WarmStart(block);
+            for (int k = 0; k < soft.iterations; ++k)
+                Solve(block, ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, true);
+            IntegratePositions(ctx, block);
+            // The first relax pass brings each pair's separations up to date as it reaches the pair (the same
+            // values UpdateSeparations gives: poses do not change during a pass); without one, UpdateSeparations
+            // does.
+            if (soft.relaxIterations == 0) UpdateSeparations(block);
+            for (int k = 0; k < soft.relaxIterations; ++k)
+                Solve(block, ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, false, k == 0);
+        }
     }
     if (colouring) StoreBatchImpulses();
     ApplyRestitution(soft.restitutionThreshold);
@@ -419,7 +414,7 @@ void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
 }
 
 void SoftContactSolver::Prepare(const std::vector<RigidbodyVolume*>& /*volumes*/, const StepContext& /*ctx*/) {
-    ForSerialPairs(colouring, overflow, pairs, [this](const Pair& pair) { PreparePair(pair); });
+    for (const int i : overflow) PreparePair(pairs[static_cast<std::size_t>(i)]);
 }
 
 void SoftContactSolver::PreparePair(const Pair& pair) {
@@ -441,12 +436,11 @@ void SoftContactSolver::PreparePair(const Pair& pair) {
     }
 }
 
-void SoftContactSolver::IntegrateVelocities(const StepContext& ctx) {
+void SoftContactSolver::IntegrateVelocities(const StepContext& ctx, const Block& block) {
     const float h = ctx.h;
-    const std::size_t n = state.size();
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t k = block.bodyBegin; k < block.bodyEnd; ++k) {
+        const std::size_t i = static_cast<std::size_t>(blockBodies[k]);
         const BodySim& bs = sim[i];
-        if (!bs.dynamic) continue;
         BodyState& st = state[i];
         // Semi-implicit Euler, then the body's velocity retention and threshold per substep (RigidbodyVolume).
         st.v = (st.v + bs.gravity * h) * bs.retention;
@@ -460,12 +454,11 @@ void SoftContactSolver::IntegrateVelocities(const StepContext& ctx) {
     }
 }
 
-void SoftContactSolver::IntegratePositions(const StepContext& ctx) {
+void SoftContactSolver::IntegratePositions(const StepContext& ctx, const Block& block) {
     const float h = ctx.h;
-    const std::size_t n = state.size();
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t k = block.bodyBegin; k < block.bodyEnd; ++k) {
+        const std::size_t i = static_cast<std::size_t>(blockBodies[k]);
         BodySim& bs = sim[i];
-        if (!bs.dynamic) continue;
         BodyState& st = state[i];
         st.dp += st.v * h;
         bs.p += st.v * h;
@@ -485,9 +478,10 @@ void SoftContactSolver::IntegratePositions(const StepContext& ctx) {
     }
 }
 
-void SoftContactSolver::UpdateSeparations() {
-    if (colouring) WideUpdateSeparations();
-    ForSerialPairs(colouring, overflow, pairs, [this](const Pair& pair) { UpdatePairSeparations(pair); });
+void SoftContactSolver::UpdateSeparations(const Block& block) {
+    for (std::size_t k = block.batchBegin; k < block.batchEnd; ++k) UpdateBatchSeparations(batches[k]);
+    for (std::size_t k = block.overflowBegin; k < block.overflowEnd; ++k)
+        UpdatePairSeparations(pairs[static_cast<std::size_t>(overflow[k])]);
 }
 
 void SoftContactSolver::UpdatePairSeparations(const Pair& pair) {
@@ -506,9 +500,10 @@ void SoftContactSolver::UpdatePairSeparations(const Pair& pair) {
     }
 }
 
-void SoftContactSolver::WarmStart() {
-    if (colouring) WideWarmStart();
-    ForSerialPairs(colouring, overflow, pairs, [this](const Pair& pair) { WarmStartPair(pair); });
+void SoftContactSolver::WarmStart(const Block& block) {
+    WideWarmStart(block);
+    for (std::size_t k = block.overflowBegin; k < block.overflowEnd; ++k)
+        WarmStartPair(pairs[static_cast<std::size_t>(overflow[k])]);
 }
 
 void SoftContactSolver::WarmStartPair(const Pair& pair) {
@@ -527,13 +522,15 @@ void SoftContactSolver::WarmStartPair(const Pair& pair) {
     StoreVelocities(x, A, B);
 }
 
-void SoftContactSolver::Solve(float invH, const Softness& dynamicSoftness, const Softness& staticSoftness,
-                              float maxPushout, float slop, bool useBias, bool updateSeparations) {
-    if (colouring) WideSolve(invH, maxPushout, slop, useBias, updateSeparations);
-    ForSerialPairs(colouring, overflow, pairs, [&](const Pair& pair) {
+void SoftContactSolver::Solve(const Block& block, float invH, const Softness& dynamicSoftness,
+                              const Softness& staticSoftness, float maxPushout, float slop, bool useBias,
+                              bool updateSeparations) {
+    WideSolve(block, invH, maxPushout, slop, useBias, updateSeparations);
+    for (std::size_t k = block.overflowBegin; k < block.overflowEnd; ++k) {
+        const Pair& pair = pairs[static_cast<std::size_t>(overflow[k])];
         if (updateSeparations) UpdatePairSeparations(pair);
         SolvePair(pair, pair.touchesStatic ? staticSoftness : dynamicSoftness, invH, maxPushout, slop, useBias);
-    });
+    }
 }
 
 void SoftContactSolver::SolvePair(const Pair& pair, const Softness& softness, float invH, float maxPushout, float slop,

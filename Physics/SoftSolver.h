@@ -160,23 +160,39 @@ public:
     static constexpr int kColours = 24;
     /// Passes of the restitution solve over a pair's impact points (ApplyRestitution).
     static constexpr int kRestitutionPasses = 4;
-    /// The last Step's pairs, its batches, and the pairs solved one by one after them (a moving body already in
-    /// every colour, or the one pair of a colour's last batch).
+    /// Islands gathered until they hold this many pairs make a block (BuildBlocks): about 200 KB of rows.
+    static constexpr std::size_t kBlockPairs = 256;
+    /// Whole islands (moving bodies linked by pairs), in order of their first body, gathered until they hold
+    /// kBlockPairs pairs. Step runs every substep of a block before the next block, so the block's rows and
+    /// bodies stay in cache; islands share no moving body, so the order of blocks changes no result. Inside a
+    /// block the pairs keep their order: its batches colour by colour, then its overflow one by one.
+    struct Block {
+        std::size_t bodyBegin = 0, bodyEnd = 0;          // BlockBodies()[bodyBegin, bodyEnd): its moving bodies
+        std::size_t batchBegin = 0, batchEnd = 0;        // Batches()[batchBegin, batchEnd)
+        std::size_t overflowBegin = 0, overflowEnd = 0;  // OverflowPairs()[overflowBegin, overflowEnd)
+    };
+    /// The last Step's pairs, its blocks, the moving bodies of each block, its batches, and the pairs solved one
+    /// by one after a block's batches (a moving body already in every colour, or the one pair of a colour's last
+    /// batch; without colouring, every pair, in one block).
     const std::vector<Pair>& Pairs() const { return pairs; }
+    const std::vector<Block>& Blocks() const { return blocks; }
+    const std::vector<int>& BlockBodies() const { return blockBodies; }
     const std::vector<WideBatch>& Batches() const { return batches; }
     const std::vector<int>& OverflowPairs() const { return overflow; }
 
 private:
-    // Graph colouring (SoftSolverGraph.cpp): batches built once per step after Prepare; each pass runs the
-    // batches colour by colour, then the overflow pairs one by one; the impulses go back to the contacts before
-    // restitution.
-    void BuildBatches(const Softness& softness, const Softness& staticSoftness);
-    void WideUpdateSeparations();
+    // Blocks and graph colouring (SoftSolverGraph.cpp): blocks and their batches built once per step before
+    // Prepare; each pass over a block runs its batches colour by colour, then its overflow pairs one by one; the
+    // impulses go back to the contacts before restitution.
+    void BuildBlocks(const Softness& softness, const Softness& staticSoftness);
+    /// Colours the pairs `list` (pair indices, in pair order) and appends their batches and overflow.
+    void BuildBatches(const std::vector<int>& list, std::size_t begin, std::size_t end, const Softness& softness,
+                      const Softness& staticSoftness);
     void UpdateBatchSeparations(WideBatch& batch) const;
-    void WideWarmStart();
-    /// One pass over the batches; `updateSeparations`: each batch first brings its separations up to date (the
-    /// first relax pass after IntegratePositions does UpdateSeparations' work on the batches it visits anyway).
-    void WideSolve(float invH, float maxPushout, float slop, bool useBias, bool updateSeparations);
+    void WideWarmStart(const Block& block);
+    /// One pass over a block's batches; `updateSeparations`: each batch first brings its separations up to date
+    /// (the first relax pass after IntegratePositions does UpdateSeparations' work on the batches it visits anyway).
+    void WideSolve(const Block& block, float invH, float maxPushout, float slop, bool useBias, bool updateSeparations);
     void StoreBatchImpulses();
     /// One pair of the scalar passes (the overflow, or every pair without colouring).
     void WarmStartPair(const Pair& pair);
@@ -188,17 +204,17 @@ private:
     /// IntegratePositions, so separations are brought up to date once before the substeps (here) and once after
     /// each integration (by the first relax pass, pair by pair as it reaches them; here when there is no relax
     /// pass), and every solve pass in between reads them.
-    void UpdateSeparations();
+    void UpdateSeparations(const Block& block);
     void LoadBodies(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx, const unsigned char* active);
     void Collide(const std::vector<RigidbodyVolume*>& volumes, const std::vector<std::pair<int, int>>& candidates,
                  const StepContext& ctx, bool carryOver);
     void Prepare(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx);
     // The two per-body loops of a substep: each lives here only.
-    void IntegrateVelocities(const StepContext& ctx);
-    void IntegratePositions(const StepContext& ctx);
-    void WarmStart();
-    void Solve(float invH, const Softness& softness, const Softness& staticSoftness, float maxPushout, float slop,
-               bool useBias, bool updateSeparations = false);
+    void IntegrateVelocities(const StepContext& ctx, const Block& block);
+    void IntegratePositions(const StepContext& ctx, const Block& block);
+    void WarmStart(const Block& block);
+    void Solve(const Block& block, float invH, const Softness& softness, const Softness& staticSoftness,
+               float maxPushout, float slop, bool useBias, bool updateSeparations = false);
     void ApplyRestitution(float threshold);
     void StoreBodies(const std::vector<RigidbodyVolume*>& volumes);
 
@@ -206,8 +222,14 @@ private:
     std::vector<BodySim> sim;
     std::vector<Pair> pairs, previousPairs;
     std::vector<Contact> contacts, previousContacts;
+    std::vector<Block> blocks;
+    std::vector<int> blockBodies;            // moving bodies, block by block, in index order (BlockBodies)
+    std::vector<int> islandParent;           // per body: union-find parent over the pairs (BuildBlocks)
+    std::vector<int> islandPairs;            // per island root: its pair count, then its block
+    std::vector<std::size_t> blockStart;     // per block: where its bodies (then its pairs) start
+    std::vector<int> blockPairList;          // pair indices, block by block, in pair order
     std::vector<WideBatch> batches;
-    std::vector<int> overflow;               // pair indices solved one by one after the batches (OverflowPairs)
+    std::vector<int> overflow;               // pair indices solved one by one after a block's batches
     std::vector<std::uint32_t> bodyColours;  // per body: the colours it has this step (bit c)
     std::vector<int> colourPairs[kColours];  // pair indices of each colour, in pair order
     bool colouring = false;                  // this step solves by batches

@@ -158,12 +158,94 @@ void MakeRow(const Vec4x3& rA, const Vec4x3& rB, const Vec4x3& d, Float4 invSum,
 
 }  // namespace
 
-void SoftContactSolver::BuildBatches(const Softness& softness, const Softness& staticSoftness) {
-    // Colour the pairs: the first colour free at both moving bodies. Capacities are kept from step to step.
-    bodyColours.assign(state.size(), 0u);
-    for (std::vector<int>& list : colourPairs) list.clear();
+void SoftContactSolver::BuildBlocks(const Softness& softness, const Softness& staticSoftness) {
+    // Capacities are kept from step to step, so the steady state allocates nothing.
+    const std::size_t n = state.size();
+    blocks.clear();
+    blockBodies.clear();
+    batches.clear();
     overflow.clear();
-    for (std::size_t i = 0; i < pairs.size(); ++i) {
+    if (!colouring) {
+        // One block: every moving body, every pair one by one in pair order.
+        for (std::size_t i = 0; i < n; ++i)
+            if (sim[i].dynamic) blockBodies.push_back(static_cast<int>(i));
+        for (std::size_t i = 0; i < pairs.size(); ++i) overflow.push_back(static_cast<int>(i));
+        blocks.push_back({0, blockBodies.size(), 0, 0, 0, overflow.size()});
+        return;
+    }
+    // Islands: union-find over the pairs of two moving bodies, the smaller root kept (a fixed function of the pairs).
+    islandParent.resize(n);
+    for (std::size_t i = 0; i < n; ++i) islandParent[i] = static_cast<int>(i);
+    auto root = [this](int i) {
+        while (islandParent[static_cast<std::size_t>(i)] != i) {
+            int& parent = islandParent[static_cast<std::size_t>(i)];
+            parent = islandParent[static_cast<std::size_t>(parent)];  // path halving
+            i = parent;
+        }
+        return i;
+    };
+    for (const Pair& pair : pairs) {
+        if (!sim[pair.a].dynamic || !sim[pair.b].dynamic) continue;
+        const int ra = root(pair.a), rb = root(pair.b);
+        if (ra != rb) islandParent[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
+    }
+    auto moving = [this](const Pair& pair) { return sim[pair.a].dynamic ? pair.a : pair.b; };
+    // Pairs per island, then islands into blocks in order of their first body, closed at kBlockPairs pairs.
+    islandPairs.assign(n, 0);
+    for (const Pair& pair : pairs) ++islandPairs[static_cast<std::size_t>(root(moving(pair)))];
+    std::size_t blockCount = 0, open = 0;  // blocks closed; pairs in the open block
+    bool openUsed = false;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!sim[i].dynamic) continue;
+        const std::size_t r = static_cast<std::size_t>(root(static_cast<int>(i)));
+        if (r != i) continue;  // the root is the island's first body: each island is met once, in order
+        open += static_cast<std::size_t>(islandPairs[r]);
+        islandPairs[r] = -1 - static_cast<int>(blockCount);  // from here: the island's block, encoded
+        openUsed = true;
+        if (open >= kBlockPairs) {
+            ++blockCount;
+            open = 0;
+            openUsed = false;
+        }
+    }
+    if (openUsed) ++blockCount;
+    auto blockOf = [&](int body) {
+        return static_cast<std::size_t>(-1 - islandPairs[static_cast<std::size_t>(root(body))]);
+    };
+    // Bodies and pairs by block, each in its own order (counting sort).
+    blockStart.assign(blockCount + 1, 0);
+    for (std::size_t i = 0; i < n; ++i)
+        if (sim[i].dynamic) ++blockStart[blockOf(static_cast<int>(i)) + 1];
+    for (std::size_t b = 0; b < blockCount; ++b) blockStart[b + 1] += blockStart[b];
+    blocks.resize(blockCount);
+    for (std::size_t b = 0; b < blockCount; ++b) blocks[b].bodyBegin = blocks[b].bodyEnd = blockStart[b];
+    blockBodies.resize(blockStart[blockCount]);
+    for (std::size_t i = 0; i < n; ++i)
+        if (sim[i].dynamic) blockBodies[blocks[blockOf(static_cast<int>(i))].bodyEnd++] = static_cast<int>(i);
+    blockStart.assign(blockCount + 1, 0);
+    for (const Pair& pair : pairs) ++blockStart[blockOf(moving(pair)) + 1];
+    for (std::size_t b = 0; b < blockCount; ++b) blockStart[b + 1] += blockStart[b];
+    blockPairList.resize(pairs.size());
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+        blockPairList[blockStart[blockOf(moving(pairs[i]))]++] = static_cast<int>(i);
+    // blockStart[b] is now where block b + 1's pairs start.
+    bodyColours.assign(n, 0u);
+    for (std::size_t b = 0; b < blockCount; ++b) {
+        Block& block = blocks[b];
+        block.batchBegin = batches.size();
+        block.overflowBegin = overflow.size();
+        BuildBatches(blockPairList, b == 0 ? 0 : blockStart[b - 1], blockStart[b], softness, staticSoftness);
+        block.batchEnd = batches.size();
+        block.overflowEnd = overflow.size();
+    }
+}
+
+void SoftContactSolver::BuildBatches(const std::vector<int>& list, std::size_t begin, std::size_t end,
+                                     const Softness& softness, const Softness& staticSoftness) {
+    // Colour the pairs: the first colour free at both moving bodies.
+    for (std::vector<int>& colour : colourPairs) colour.clear();
+    for (std::size_t at = begin; at < end; ++at) {
+        const std::size_t i = static_cast<std::size_t>(list[at]);
         const Pair& pair = pairs[i];
         const bool movesA = sim[pair.a].dynamic, movesB = sim[pair.b].dynamic;
         const std::uint32_t taken = (movesA ? bodyColours[pair.a] : 0u) | (movesB ? bodyColours[pair.b] : 0u);
@@ -178,7 +260,6 @@ void SoftContactSolver::BuildBatches(const Softness& softness, const Softness& s
         colourPairs[colour].push_back(static_cast<int>(i));
     }
     // Four pairs of a colour per batch; a lane without a pair keeps zeros (no bodies, zero masses: no effect).
-    batches.clear();
     for (int colour = 0; colour < kColours; ++colour) {
         const std::vector<int>& list = colourPairs[colour];
         for (std::size_t first = 0; first < list.size(); first += 4) {
@@ -248,10 +329,6 @@ void SoftContactSolver::BuildBatches(const Softness& softness, const Softness& s
     }
 }
 
-void SoftContactSolver::WideUpdateSeparations() {
-    for (WideBatch& batch : batches) UpdateBatchSeparations(batch);
-}
-
 void SoftContactSolver::UpdateBatchSeparations(WideBatch& batch) const {
     // UpdatePairSeparations four wide: s = s_base + n . ((dpB - dpA) + rB dRB - rA dRA), rows of dR as vectors.
     // The lanes' dp and dR rows, each a padded 16-byte row of BodyState, transposed (an empty lane: zeros).
@@ -284,8 +361,9 @@ void SoftContactSolver::UpdateBatchSeparations(WideBatch& batch) const {
     }
 }
 
-void SoftContactSolver::WideWarmStart() {
-    for (const WideBatch& batch : batches) {
+void SoftContactSolver::WideWarmStart(const Block& block) {
+    for (std::size_t b = block.batchBegin; b < block.batchEnd; ++b) {
+        const WideBatch& batch = batches[b];
         WideBodies s = Gather(state, batch);
         for (int k = 0; k < batch.pointCount; ++k) {
             const WidePoint& p = batch.points[k];
@@ -297,10 +375,12 @@ void SoftContactSolver::WideWarmStart() {
     }
 }
 
-void SoftContactSolver::WideSolve(float invH, float maxPushout, float slop, bool useBias, bool updateSeparations) {
+void SoftContactSolver::WideSolve(const Block& block, float invH, float maxPushout, float slop, bool useBias,
+                                  bool updateSeparations) {
     const Float4 zero = Splat(0.0f), one = Splat(1.0f);
     const Float4 invH4 = Splat(invH), slop4 = Splat(slop), pushout = Splat(-maxPushout);
-    for (WideBatch& batch : batches) {
+    for (std::size_t b = block.batchBegin; b < block.batchEnd; ++b) {
+        WideBatch& batch = batches[b];
         if (updateSeparations) UpdateBatchSeparations(batch);
         WideBodies s = Gather(state, batch);
         if (!useBias) {

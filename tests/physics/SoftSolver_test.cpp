@@ -297,6 +297,75 @@ TEST(SoftSolverGraph, ColoursShareNoMovingBody) {
                 solver.OverflowPairs().size());
 }
 
+// Blocks (docs/ch15.md, "Blocks"): the 1,000-cube pile of the peer bench is a hundred columns, each an island. Every
+// moving body is in exactly one block, in index order; every pair is solved in the block of its moving bodies (an
+// island is never split), once, in a batch or the block's overflow; each block but the last holds at least
+// kBlockPairs pairs; blocks come in order of their first body; within a block, colours increase and a colour keeps
+// the pair order.
+TEST(SoftSolverGraph, BlocksHoldWholeIslandsInOrder) {
+    RigidWorld world(PeerBoxpile(1000));
+    world.system.settings.contactSolver = ContactSolver::Soft;
+    world.system.settings.sleep.enabled = false;
+    for (int i = 0; i < 60; ++i) world.system.Update(kDt);
+    const SoftContactSolver& solver = world.system.SoftSolver();
+    const std::vector<SoftContactSolver::Pair>& pairs = solver.Pairs();
+    const std::vector<SoftContactSolver::Block>& blocks = solver.Blocks();
+    ASSERT_GT(blocks.size(), 2u);
+    std::vector<int> blockOf(world.Bodies().size(), -1);
+    int previousFirst = -1;
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
+        const SoftContactSolver::Block& block = blocks[b];
+        ASSERT_LT(block.bodyBegin, block.bodyEnd);
+        EXPECT_GT(solver.BlockBodies()[block.bodyBegin], previousFirst) << "blocks in order of their first body";
+        previousFirst = solver.BlockBodies()[block.bodyBegin];
+        for (std::size_t k = block.bodyBegin; k < block.bodyEnd; ++k) {
+            const int body = solver.BlockBodies()[k];
+            if (k > block.bodyBegin) {
+                EXPECT_GT(body, solver.BlockBodies()[k - 1]);
+            }
+            EXPECT_EQ(blockOf[static_cast<std::size_t>(body)], -1) << "body " << body << " in two blocks";
+            blockOf[static_cast<std::size_t>(body)] = static_cast<int>(b);
+        }
+    }
+    for (std::size_t i = 0; i < world.Bodies().size(); ++i)
+        EXPECT_EQ(blockOf[i] >= 0, world.Body(i).mass > 0.0f) << "body " << i;
+    std::vector<int> seen(pairs.size(), 0);
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
+        const SoftContactSolver::Block& block = blocks[b];
+        std::size_t count = block.overflowEnd - block.overflowBegin;
+        int lastColour = 0, lastPair = -1;
+        std::vector<int> blockPairs;
+        for (std::size_t k = block.batchBegin; k < block.batchEnd; ++k) {
+            const SoftContactSolver::WideBatch& batch = solver.Batches()[k];
+            EXPECT_GE(batch.colour, lastColour);
+            if (batch.colour != lastColour) lastPair = -1;
+            lastColour = batch.colour;
+            for (int lane = 0; lane < 4; ++lane) {
+                if (batch.pair[lane] < 0) continue;
+                EXPECT_GT(batch.pair[lane], lastPair) << "pair order within a colour";
+                lastPair = batch.pair[lane];
+                blockPairs.push_back(batch.pair[lane]);
+                ++count;
+            }
+        }
+        for (std::size_t k = block.overflowBegin; k < block.overflowEnd; ++k)
+            blockPairs.push_back(solver.OverflowPairs()[k]);
+        for (int p : blockPairs) {
+            ++seen[static_cast<std::size_t>(p)];
+            const SoftContactSolver::Pair& pair = pairs[static_cast<std::size_t>(p)];
+            for (int body : {pair.a, pair.b}) {
+                if (blockOf[static_cast<std::size_t>(body)] >= 0) {
+                    EXPECT_EQ(blockOf[static_cast<std::size_t>(body)], static_cast<int>(b)) << "pair " << p;
+                }
+            }
+        }
+        if (b + 1 < blocks.size()) {
+            EXPECT_GE(count, SoftContactSolver::kBlockPairs) << "block " << b;
+        }
+    }
+    for (std::size_t p = 0; p < pairs.size(); ++p) EXPECT_EQ(seen[p], 1) << "pair " << p;
+}
+
 // Four cubes apart on the ground, one dropped, one sliding, one spinning: the four pairs share only the static
 // ground, so they are one batch in pair order, which is the order of the one-by-one solve: both give the same
 // bits. (Where colouring reorders pairs, the results differ as any change of Gauss-Seidel order does.)
