@@ -165,12 +165,21 @@ void SoftContactSolver::BuildBlocks(const Softness& softness, const Softness& st
     blockBodies.clear();
     batches.clear();
     overflow.clear();
-    if (!colouring) {
-        // One block: every moving body, every pair one by one in pair order.
+    if (!colouring || pairs.size() < kBlockPairs) {
+        // One block of every moving body: without colouring, every pair one by one in pair order; with fewer pairs
+        // than a block holds (what the islands below would give: one block, bodies and pairs in order), the
+        // batches and overflow of all of them. A small world pays for no islands.
         for (std::size_t i = 0; i < n; ++i)
             if (sim[i].dynamic) blockBodies.push_back(static_cast<int>(i));
-        for (std::size_t i = 0; i < pairs.size(); ++i) overflow.push_back(static_cast<int>(i));
-        blocks.push_back({0, blockBodies.size(), 0, 0, 0, overflow.size()});
+        if (colouring) {
+            blockPairList.resize(pairs.size());
+            for (std::size_t i = 0; i < pairs.size(); ++i) blockPairList[i] = static_cast<int>(i);
+            bodyColours.assign(n, 0u);
+            BuildBatches(blockPairList, 0, pairs.size(), softness, staticSoftness);
+        } else {
+            for (std::size_t i = 0; i < pairs.size(); ++i) overflow.push_back(static_cast<int>(i));
+        }
+        blocks.push_back({0, blockBodies.size(), 0, batches.size(), 0, overflow.size()});
         return;
     }
     // Islands: union-find over the pairs of two moving bodies, the smaller root kept (a fixed function of the pairs).
