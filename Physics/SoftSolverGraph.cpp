@@ -209,7 +209,7 @@ void SoftContactSolver::BuildBlocks(const Softness& softness, const Softness& st
         const std::size_t r = static_cast<std::size_t>(root(static_cast<int>(i)));
         if (r != i) continue;  // the root is the island's first body: each island is met once, in order
         open += static_cast<std::size_t>(islandPairs[r]);
-        islandPairs[r] = -1 - static_cast<int>(blockCount);  // from here: the island's block, encoded
+        islandPairs[r] = static_cast<int>(blockCount);  // read once: from here it holds the island's block
         openUsed = true;
         if (open >= kBlockPairs) {
             ++blockCount;
@@ -219,7 +219,7 @@ void SoftContactSolver::BuildBlocks(const Softness& softness, const Softness& st
     }
     if (openUsed) ++blockCount;
     auto blockOf = [&](int body) {
-        return static_cast<std::size_t>(-1 - islandPairs[static_cast<std::size_t>(root(body))]);
+        return static_cast<std::size_t>(islandPairs[static_cast<std::size_t>(root(body))]);
     };
     // Bodies and pairs by block, each in its own order (counting sort).
     blockStart.assign(blockCount + 1, 0);
