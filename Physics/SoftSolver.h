@@ -223,11 +223,11 @@ private:
     std::vector<Pair> pairs, previousPairs;
     std::vector<Contact> contacts, previousContacts;
     std::vector<Block> blocks;
-    std::vector<int> blockBodies;            // moving bodies, block by block, in index order (BlockBodies)
-    std::vector<int> islandParent;           // per body: union-find parent over the pairs (BuildBlocks)
-    std::vector<int> islandPairs;            // per island root: its pair count, then its block
-    std::vector<std::size_t> blockStart;     // per block: where its bodies (then its pairs) start
-    std::vector<int> blockPairList;          // pair indices, block by block, in pair order
+    std::vector<int> blockBodies;         // moving bodies, block by block, in index order (BlockBodies)
+    std::vector<int> islandParent;        // per body: union-find parent over the pairs (BuildBlocks)
+    std::vector<int> islandPairs;         // per island root: its pair count, then its block
+    std::vector<std::size_t> blockStart;  // per block: where its bodies (then its pairs) start
+    std::vector<int> blockPairList;       // pair indices, block by block, in pair order
     std::vector<WideBatch> batches;
     std::vector<int> overflow;               // pair indices solved one by one after a block's batches
     std::vector<std::uint32_t> bodyColours;  // per body: the colours it has this step (bit c)

@@ -236,19 +236,41 @@ SceneDescription DroppedParticle() {
     return d;
 }
 
+/// A scene registered as the app registers it, and auto's choice on it over `runSeconds` for `request`.
+struct Chosen {
+    SceneDescription description;
+    std::unique_ptr<FileScene> scene;
+    ParameterSet params;
+    AutoModel autoModel;
+    bool chosen = false;
+    std::string error;
+
+    Chosen(const SceneDescription& d, double runSeconds, const AutoModelRequest& request) : description(d) {
+        scene = std::make_unique<FileScene>(description);
+        scene->AddParameters(&params);
+        chosen = autoModel.Choose(&params, scene->System(), kHostStep, runSeconds, request, &error);
+    }
+};
+
+/// A reference problem of the validation (scenes/reference/NAME.json, docs/model-choice-validation.md), over its
+/// duration with a position budget of `bound` m.
+Chosen ReferenceChoice(const std::string& name, double bound) {
+    SceneDescription d;
+    std::vector<std::string> errors;
+    const std::string path = std::string(PSB_SOURCE_DIR "/scenes/reference/") + name + ".json";
+    EXPECT_TRUE(LoadSceneFile(path, &d, &errors)) << path;
+    return Chosen(d, d.duration, Budget(bound));
+}
+
 // In a world without volumes the pilot finds the bounce the start window cannot see, and the calibration gives it
 // a window: the particle dropped from 20 m gets an event window at its first impact (t = 2.02 s). (At 1e-2 m the
 // budget is refused: measured over the whole run, the bounces' timing errors are 6 mm at the finest step.)
 TEST(AutoModel, PilotFindsTheImpactOfAParticleWorld) {
-    FileScene scene(DroppedParticle());
-    ParameterSet params;
-    scene.AddParameters(&params);
-    AutoModel autoModel;
-    std::string error;
-    ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, 10.0, Budget(1e-1), &error)) << error;
-    const std::vector<double>& events = autoModel.Choice().eventTimes;
+    const Chosen run(DroppedParticle(), 10.0, Budget(1e-1));
+    ASSERT_TRUE(run.chosen) << run.error;
+    const std::vector<double>& events = run.autoModel.Choice().eventTimes;
     ASSERT_FALSE(events.empty());
-    const double window = autoModel.Choice().windowSeconds;
+    const double window = run.autoModel.Choice().windowSeconds;
     EXPECT_LE(events.front(), 2.02);
     EXPECT_GE(events.front() + window, 2.02) << "the first event window covers the first impact";
 }
@@ -257,17 +279,12 @@ TEST(AutoModel, PilotFindsTheImpactOfAParticleWorld) {
 // refinement's, costs at most ChoiceSettings::wholeRunWork; the costlier ones keep their windows. A bouncing particle
 // over 100 s at a tight budget has candidates of both kinds.
 TEST(AutoModel, CheapCandidatesAreMeasuredOverTheWholeRun) {
-    FileScene scene(DroppedParticle());
-    ParameterSet params;
-    scene.AddParameters(&params);
-    AutoModel autoModel;
-    std::string error;
-    autoModel.Choose(&params, scene.System(), kHostStep, 100.0, Budget(1e-3), &error);  // met or refused
+    const Chosen run(DroppedParticle(), 100.0, Budget(1e-3));  // met or refused
     const double limit = ChoiceSettings().wholeRunWork;
     int whole = 0, windowed = 0;
-    for (const CandidateEstimate& e : autoModel.Choice().candidates) {
+    for (const CandidateEstimate& e : run.autoModel.Choice().candidates) {
         if (!e.evaluated) continue;
-        const CandidateSpace& space = AutoModel::SpaceOf(params, scene.System(), kHostStep);
+        const CandidateSpace& space = AutoModel::SpaceOf(run.params, run.scene->System(), kHostStep);
         const double work = 100.0 * (PredictedWork(e.model, space) + PredictedWork(Refine(e.model, space), space));
         EXPECT_EQ(e.wholeRun, work <= limit) << e.model.Describe(true, false) << ": " << work << " work units";
         (e.wholeRun ? whole : windowed) += 1;
@@ -279,12 +296,11 @@ TEST(AutoModel, CheapCandidatesAreMeasuredOverTheWholeRun) {
 // After a choice measured over the whole run the watch has nothing left to check: no window runs (auto's CPU is
 // the calibration's alone) and the running estimate stays the calibration's.
 TEST(AutoModel, AWholeRunChoiceIsNotWatched) {
-    FileScene scene(Oscillator());
-    ParameterSet params;
-    scene.AddParameters(&params);
-    AutoModel autoModel;
-    std::string error;
-    ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, 10.0, Budget(1e-2), &error)) << error;
+    Chosen run(Oscillator(), 10.0, Budget(1e-2));
+    ASSERT_TRUE(run.chosen) << run.error;
+    FileScene& scene = *run.scene;
+    ParameterSet& params = run.params;
+    AutoModel& autoModel = run.autoModel;
     const CandidateEstimate& chosen =
         autoModel.Choice().candidates[static_cast<std::size_t>(autoModel.Choice().chosen)];
     ASSERT_TRUE(chosen.wholeRun);
@@ -310,26 +326,6 @@ TEST(AutoModel, AWholeRunChoiceIsNotWatched) {
     }
 }
 
-/// A reference problem of the validation (scenes/reference/NAME.json, docs/model-choice-validation.md), its
-/// parameters registered as the app registers them, and auto's choice on it for `bound` (m) over its duration.
-struct ReferenceChoice {
-    SceneDescription description;
-    std::unique_ptr<FileScene> scene;
-    ParameterSet params;
-    AutoModel autoModel;
-    bool chosen = false;
-    std::string error;
-
-    ReferenceChoice(const std::string& name, double bound) {
-        std::vector<std::string> errors;
-        const std::string path = std::string(PSB_SOURCE_DIR "/scenes/reference/") + name + ".json";
-        EXPECT_TRUE(LoadSceneFile(path, &description, &errors)) << path;
-        scene = std::make_unique<FileScene>(description);
-        scene->AddParameters(&params);
-        chosen = autoModel.Choose(&params, scene->System(), kHostStep, description.duration, Budget(bound), &error);
-    }
-};
-
 // A window estimate is not trusted below what its family's whole-run measurements predict. The 1 m pendulum at 120°
 // over 14.45 s (the validation's reference): RK4 at 0.2 ms is cheap enough to be measured over the whole run
 // (0.38 m); at 0.1 ms it is not, and its 0.72 s start window, extrapolated, said 1.8 mm. The joint makes the family
@@ -337,7 +333,7 @@ struct ReferenceChoice {
 // nothing then meets it, and the run is refused; without the floor RK4 at 0.1 ms was chosen and ended 0.41 m off
 // (docs/model-choice-validation.md, a period error of 0.0052).
 TEST(AutoModel, AWindowEstimateIsNotTrustedBelowItsFamilysWholeRun) {
-    const ReferenceChoice run("pendulum-large", 0.0784);
+    const Chosen run = ReferenceChoice("pendulum-large", 0.0784);
     EXPECT_FALSE(run.chosen);
     const CandidateEstimate* fine = nullptr;
     const CandidateEstimate* measured = nullptr;
@@ -358,7 +354,7 @@ TEST(AutoModel, AWindowEstimateIsNotTrustedBelowItsFamilysWholeRun) {
 // validation's incline (a cube sliding 1.5 s down a slab) at 2.65 mm is met by the accumulated solver at 0.5 ms,
 // the 64th candidate in order of cost; with the old limit of 60 the budget was refused.
 TEST(AutoModel, TheEvaluationLimitReachesPastTheSixtiethCandidate) {
-    const ReferenceChoice run("incline", 0.00265);
+    const Chosen run = ReferenceChoice("incline", 0.00265);
     ASSERT_TRUE(run.chosen) << run.error;
     EXPECT_GT(run.autoModel.Choice().evaluatedCount, 60);
     EXPECT_LE(run.autoModel.Choice().evaluatedCount, ChoiceSettings().maxEvaluations);
