@@ -256,8 +256,7 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
     // A contact with a static body has only one body to move, so it is made twice as stiff.
     const Softness staticSoftness = MakeSoftness(2.0f * hertz, soft.contactDampingRatio, ctx.h);
     // With colouring the batches prepare their own rows, four wide; Prepare does the pairs solved one by one.
-    colouring = ctx.settings.softGraphColouring;
-    BuildBlocks(softness, staticSoftness);
+    BuildBlocks(ctx.settings.softGraphColouring, softness, staticSoftness);
     Prepare(volumes, ctx);
     // Every substep of a block before the next block: islands share no moving body, so this is the order of one
     // pass over all of them, with the block's rows still in cache (kBlockPairs).
@@ -277,7 +276,7 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
                 Solve(block, ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, false, k == 0);
         }
     }
-    if (colouring) StoreBatchImpulses();
+    StoreBatchImpulses();  // the batches' impulses back to the contacts (none without colouring)
     ApplyRestitution(soft.restitutionThreshold);
     StoreBodies(volumes);
 }

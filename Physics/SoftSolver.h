@@ -184,7 +184,7 @@ private:
     // Blocks and graph colouring (SoftSolverGraph.cpp): blocks and their batches built once per step before
     // Prepare; each pass over a block runs its batches colour by colour, then its overflow pairs one by one; the
     // impulses go back to the contacts before restitution.
-    void BuildBlocks(const Softness& softness, const Softness& staticSoftness);
+    void BuildBlocks(bool colouring, const Softness& softness, const Softness& staticSoftness);
     /// Colours the pairs `list` (pair indices, in pair order) and appends their batches and overflow.
     void BuildBatches(const std::vector<int>& list, std::size_t begin, std::size_t end, const Softness& softness,
                       const Softness& staticSoftness);
@@ -232,7 +232,6 @@ private:
     std::vector<int> overflow;               // pair indices solved one by one after a block's batches
     std::vector<std::uint32_t> bodyColours;  // per body: the colours it has this step (bit c)
     std::vector<int> colourPairs[kColours];  // pair indices of each colour, in pair order
-    bool colouring = false;                  // this step solves by batches
     std::size_t warmStarted = 0;
     float inheritedNormal = 0.0f;
     long long lastStep = -2;

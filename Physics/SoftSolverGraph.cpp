@@ -158,7 +158,7 @@ void MakeRow(const Vec4x3& rA, const Vec4x3& rB, const Vec4x3& d, Float4 invSum,
 
 }  // namespace
 
-void SoftContactSolver::BuildBlocks(const Softness& softness, const Softness& staticSoftness) {
+void SoftContactSolver::BuildBlocks(bool colouring, const Softness& softness, const Softness& staticSoftness) {
     // Capacities are kept from step to step, so the steady state allocates nothing.
     const std::size_t n = state.size();
     blocks.clear();
