@@ -252,6 +252,12 @@ struct QuantityProbe {
 /// samples). `warmSteps` steps of the candidate first run unmeasured, and the difference at their end is taken off
 /// the later ones: probes built from a mid-run state of a world with volumes lack its contact history (no warm
 /// start), so they first settle.
+/// An energy budget measured over the whole run (`atEnd`) is the difference at the end, where the budget bounds it,
+/// not the largest over the run: two runs that dissipate at an impact a step apart differ by the impact's whole
+/// loss between the two times, which says nothing about the energy either keeps. One difference at one time can be
+/// small by chance (an impact falling at the same place within both steps), so a third probe at a quarter of the
+/// step checks it: the finer pair's difference, times 2^p (what it predicts for the coarser pair when the error
+/// has order p), is taken when it is larger.
 struct WindowResult {
     bool stable = true;
     double observed = 0.0;         // the largest sampled difference (or observed value) over the measured part
@@ -265,16 +271,23 @@ struct WindowResult {
 };
 
 WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
-                       const ErrorBudget& budget, double window, int warmSteps, double fixedGrowth = -1.0) {
+                       const ErrorBudget& budget, double window, int warmSteps, double fixedGrowth = -1.0,
+                       bool atEnd = false) {
     WindowResult r;
     const double start = ThreadCpuSeconds();
     std::unique_ptr<ModelProbe> coarse = factory();
     coarse->Apply(candidate);
-    std::unique_ptr<ModelProbe> fine;
+    std::unique_ptr<ModelProbe> fine, finest;
     const bool observed = budget.quantity == BudgetQuantity::Constraint;
+    const ModelCandidate refined = Refine(candidate, space);
     if (!observed) {
         fine = factory();
-        fine->Apply(Refine(candidate, space));
+        fine->Apply(refined);
+    }
+    atEnd = atEnd && budget.quantity == BudgetQuantity::Energy;
+    if (atEnd) {
+        finest = factory();
+        finest->Apply(Refine(refined, space));
     }
     QuantityProbe q{budget.quantity, 1.0, {}, {}, false, {}, 0.0};
     if (budget.quantity == BudgetQuantity::Energy) {
@@ -284,6 +297,7 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     const long long measured = std::max(2LL, std::llround(window / candidate.step));
     const int samples = static_cast<int>(std::min<long long>(256, measured));
     double half = 0.0, full = 0.0;  // running maximum at the measured part's middle and end
+    double last = 0.0;              // the difference at the end
     double cpu = 0.0;
     bool ok = true;
     auto advance = [&](double t) {
@@ -294,7 +308,7 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
             r.stable = false;
             return false;
         }
-        if (!observed && !fine->AdvanceTo(t)) {
+        if ((!observed && !fine->AdvanceTo(t)) || (finest && !finest->AdvanceTo(t))) {
             r.observed = kInf;  // the refinement blew up but the candidate did not: no estimate can be trusted
             return false;
         }
@@ -314,13 +328,14 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
             break;
         }
         full = std::max(full, d);
+        last = d;
         if (2 * s <= samples) half = full;
     }
     r.cpuSeconds = cpu;
     r.probeCpuSeconds = ThreadCpuSeconds() - start;
     r.simulated = candidate.step * static_cast<double>(warm + measured);
-    r.work = r.simulated *
-             (PredictedWork(candidate, space) + (observed ? 0.0 : PredictedWork(Refine(candidate, space), space)));
+    r.work = r.simulated * (PredictedWork(candidate, space) + (observed ? 0.0 : PredictedWork(refined, space)) +
+                            (atEnd ? PredictedWork(Refine(refined, space), space) : 0.0));
     if (!ok) return r;
     const double length = candidate.step * static_cast<double>(measured);
     // Growth in time, fitted from the measured part's halves, 0 (bounded: a symplectic integrator's energy error, a
@@ -333,6 +348,15 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     r.observed = full;
     r.length = length;
     r.factor = observed ? 1.0 : RichardsonFactor(OrderOf(candidate, space));
+    if (atEnd) {
+        const double finer = std::fabs(WorldEnergy(fine->World()) - WorldEnergy(finest->World())) / q.energyScale;
+        if (!std::isfinite(finer)) {
+            r.stable = false;
+            return r;
+        }
+        r.observed = std::max(last, std::pow(2.0, OrderOf(candidate, space)) * finer);
+        r.growth = 0.0;  // nothing is extrapolated: the window is the run
+    }
     return r;
 }
 
@@ -454,19 +478,23 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
     double cpu = 0.0, simulated = 0.0;
     // A cheap world without volumes: the candidate and its refinement run the whole run from the start, and the
     // largest difference sampled over it, with the Richardson factor, is the estimate (constraint error: the
-    // largest seen on the candidate alone). Not the difference at the end: there a bounce that died down leaves
-    // both at rest on the ground, and a spring is back near a turning point.
+    // largest seen on the candidate alone). Not the position difference at the end: there a bounce that died down
+    // leaves both at rest on the ground, and a spring is back near a turning point. Energy is bounded at the end
+    // and is measured there, checked by a third probe (RunWindow).
     // The start window then spans the whole run: its contribution is its difference, nothing extrapolated.
     const bool refined = budget.quantity != BudgetQuantity::Constraint;
+    const bool energy = budget.quantity == BudgetQuantity::Energy;
+    const ModelCandidate fine = Refine(e->model, space);
     e->wholeRun = !space.hasVolumes && settings.wholeRunWork > 0.0 &&
-                  settings.runSeconds * (PredictedWork(e->model, space) +
-                                         (refined ? PredictedWork(Refine(e->model, space), space) : 0.0)) <=
+                  settings.runSeconds * (PredictedWork(e->model, space) + (refined ? PredictedWork(fine, space) : 0.0) +
+                                         (energy ? PredictedWork(Refine(fine, space), space) : 0.0)) <=
                       settings.wholeRunWork;
     const std::vector<PlannedWindow> whole{plan[0]};
     const std::vector<PlannedWindow>& windows = e->wholeRun ? whole : plan;
     const double length = e->wholeRun ? settings.runSeconds : window;
     for (std::size_t k = 0; k < windows.size(); ++k) {
-        const WindowResult w = RunWindow(windows[k].factory, e->model, space, budget, length, windows[k].warmSteps);
+        const WindowResult w =
+            RunWindow(windows[k].factory, e->model, space, budget, length, windows[k].warmSteps, -1.0, e->wholeRun);
         *cpuSeconds += w.probeCpuSeconds;
         *work += w.work;
         cpu += w.cpuSeconds;

@@ -294,10 +294,13 @@ std::vector<ReferenceProblem> Build() {
                    "position error itself (m)", false, Make<ProjectileError>()});
     for (double e : {0.5, 0.9}) {
         const std::string p = e == 0.5 ? "0.5" : "0.9";
-        const double h5 = std::pow(e, 10) * 5.0;  // the fifth apex, m
-        out.push_back({"bounce-particle-" + p, "bounce-particle", p, "max relative apex error", Q::Position, h5,
-                       "relative apex error x the fifth apex height e^10 h0 = " + std::to_string(h5).substr(0, 6) +
-                           " m (the run ends just after it)",
+        // An apex is its flight's energy: a relative error at the fifth is e^10 of the drop's energy. The file ends
+        // in the fifth flight for e = 0.9; for e = 0.5 in the sixth, whose apex, with the contact offset that each
+        // impact adds, is still about e^10 h0 (5.2 mm).
+        out.push_back({"bounce-particle-" + p, "bounce-particle", p, "max relative apex error", Q::Energy,
+                       std::pow(e, 10),
+                       "relative apex error x e^10 = " + std::to_string(std::pow(e, 10)).substr(0, 7) +
+                           ": an apex is its flight's energy, the fifth e^10 of the drop's; measured at the end",
                        false, Make<ApexError>(e, c, false)});
     }
     // Phase error phi of an oscillation of amplitude A is a position error A phi at the end.
@@ -324,6 +327,9 @@ std::vector<ReferenceProblem> Build() {
     }
     for (double e : {0.5, 0.9}) {
         const std::string p = e == 0.5 ? "0.5" : "0.9";
+        // Position, not energy as for the particle: a world of volumes is estimated on windows, and none sees the
+        // 1 m/s restitution threshold of the soft and accumulated solvers drop a slow bounce; with an energy budget
+        // e = 0.5 at 0.1 runs the soft solver and loses its fifth apex (docs/model-choice-validation.md).
         const double h5 = std::pow(e, 10) * 5.0;
         out.push_back(
             {"bounce-sphere-" + p, "bounce-sphere", p, "max relative apex error", Q::Position, h5,
