@@ -351,7 +351,7 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     if (atEnd) {
         const double finer = std::fabs(WorldEnergy(fine->World()) - WorldEnergy(finest->World())) / q.energyScale;
         if (!std::isfinite(finer)) {
-            r.stable = false;
+            r.observed = kInf;  // as a refinement that blew up: the candidate itself ran
             return r;
         }
         r.observed = std::max(last, std::pow(2.0, OrderOf(candidate, space)) * finer);
