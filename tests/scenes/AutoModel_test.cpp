@@ -16,7 +16,6 @@
 #include "Demos/Scenes/FileScene.h"
 #include "Demos/Scenes/SceneFile.h"
 #include "Physics/ModelChoice.h"
-#include "Physics/Particle.h"
 #include "Physics/PhysicsSystem.h"
 
 namespace {
@@ -354,7 +353,7 @@ TEST(AutoModel, AWindowEstimateIsNotTrustedBelowItsFamilysWholeRun) {
     EXPECT_NE(fine->note.find("raised from"), std::string::npos) << fine->note;
 }
 
-/// The world's energy at the end of `d` run with `model` for whole steps up to its duration.
+/// The world's energy at the end of `d` run with `integrator` at `step` for whole steps up to its duration.
 double EnergyAtTheEnd(const SceneDescription& d, Integrator integrator, double step) {
     SceneDescription fixed = d;
     fixed.world.integrator = integrator;
