@@ -272,7 +272,7 @@ struct WindowResult {
 
 WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
                        const ErrorBudget& budget, double window, int warmSteps, double fixedGrowth = -1.0,
-                       bool atEnd = false) {
+                       bool wholeRun = false) {
     WindowResult r;
     const double start = ThreadCpuSeconds();
     std::unique_ptr<ModelProbe> coarse = factory();
@@ -284,8 +284,9 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
         fine = factory();
         fine->Apply(refined);
     }
-    atEnd = atEnd && budget.quantity == BudgetQuantity::Energy;
-    if (atEnd) {
+    const bool third = wholeRun && !observed;
+    const bool atEnd = wholeRun && budget.quantity == BudgetQuantity::Energy;
+    if (third) {
         finest = factory();
         finest->Apply(Refine(refined, space));
     }
@@ -293,10 +294,12 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     if (budget.quantity == BudgetQuantity::Energy) {
         q.energyScale = std::max(std::fabs(WorldEnergy(coarse->World())), 1e-12);
     }
+    QuantityProbe q2 = q;  // the refinement against the third probe
     const long long warm = observed ? 0 : warmSteps;
     const long long measured = std::max(2LL, std::llround(window / candidate.step));
     const int samples = static_cast<int>(std::min<long long>(256, measured));
     double half = 0.0, full = 0.0;  // running maximum at the measured part's middle and end
+    double finer = 0.0;             // the third probe's: the largest over the run of the finer pair's difference
     double last = 0.0;              // the difference at the end
     double cpu = 0.0;
     bool ok = true;
@@ -329,13 +332,14 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
         }
         full = std::max(full, d);
         last = d;
+        if (third && !atEnd) finer = std::max(finer, q2.Measure(*fine, finest.get()));
         if (2 * s <= samples) half = full;
     }
     r.cpuSeconds = cpu;
     r.probeCpuSeconds = ThreadCpuSeconds() - start;
     r.simulated = candidate.step * static_cast<double>(warm + measured);
     r.work = r.simulated * (PredictedWork(candidate, space) + (observed ? 0.0 : PredictedWork(refined, space)) +
-                            (atEnd ? PredictedWork(Refine(refined, space), space) : 0.0));
+                            (third ? PredictedWork(Refine(refined, space), space) : 0.0));
     if (!ok) return r;
     const double length = candidate.step * static_cast<double>(measured);
     // Growth in time, fitted from the measured part's halves, 0 (bounded: a symplectic integrator's energy error, a
@@ -348,13 +352,18 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     r.observed = full;
     r.length = length;
     r.factor = observed ? 1.0 : RichardsonFactor(OrderOf(candidate, space));
-    if (atEnd) {
-        const double finer = std::fabs(WorldEnergy(fine->World()) - WorldEnergy(finest->World())) / q.energyScale;
+    if (third) {
+        if (atEnd) finer = std::fabs(WorldEnergy(fine->World()) - WorldEnergy(finest->World())) / q.energyScale;
         if (!std::isfinite(finer)) {
             r.observed = kInf;  // as a refinement that blew up: the candidate itself ran
             return r;
         }
-        r.observed = std::max(last, std::pow(2.0, OrderOf(candidate, space)) * finer);
+        const double predicted = std::pow(2.0, OrderOf(candidate, space)) * finer;
+        if (atEnd) {
+            r.observed = std::max(last, predicted);
+        } else if (finer > full) {
+            r.observed = predicted;  // the finer pair differs more: the error is not shrinking with the step
+        }
         r.growth = 0.0;  // nothing is extrapolated: the window is the run
     }
     return r;
@@ -483,11 +492,10 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
     // and is measured there, checked by a third probe (RunWindow).
     // The start window then spans the whole run: its contribution is its difference, nothing extrapolated.
     const bool refined = budget.quantity != BudgetQuantity::Constraint;
-    const bool energy = budget.quantity == BudgetQuantity::Energy;
     const ModelCandidate fine = Refine(e->model, space);
-    e->wholeRun = !space.hasVolumes && settings.wholeRunWork > 0.0 &&
+    e->wholeRun = (!space.hasVolumes || space.volumeCount <= 1.0) && settings.wholeRunWork > 0.0 &&
                   settings.runSeconds * (PredictedWork(e->model, space) + (refined ? PredictedWork(fine, space) : 0.0) +
-                                         (energy ? PredictedWork(Refine(fine, space), space) : 0.0)) <=
+                                         (refined ? PredictedWork(Refine(fine, space), space) : 0.0)) <=
                       settings.wholeRunWork;
     const std::vector<PlannedWindow> whole{plan[0]};
     const std::vector<PlannedWindow>& windows = e->wholeRun ? whole : plan;

@@ -43,13 +43,16 @@ struct ReferenceProblem {
     std::string sweepParam;    ///< its param as docs/sweep/results.csv writes it ("-" when none)
     std::string errorUnit;     ///< the problem's error, as psb-sweep --list says
     BudgetQuantity quantity = BudgetQuantity::Position;  ///< the auto budget a budget in errorUnit becomes
-    double scale = 1.0;      ///< auto bound = scale * budget (quantity's unit per errorUnit)
+    double scale = 1.0;      ///< auto bound = scale * budget (quantity's unit per errorUnit), unless `bound` is set
     std::string conversion;  ///< why that scale, one line for docs/model-choice-validation.md
     bool fast = false;       ///< in the small grid of the CTest
     std::function<std::unique_ptr<ErrorObserver>()> observer;
+    double AutoBound(double budget) const { return bound ? bound(budget) : scale * budget; }
     /// s the equivalence check runs (0: the scene's duration). The bounces: the sweep's 15 s cap, so a model whose
     /// fifth apex comes after the scene's end is measured as the sweep measures it.
     double checkSeconds = 0.0;
+    /// The auto bound for a budget in errorUnit, where the conversion is not a constant factor (the pendulums).
+    std::function<double(double)> bound = nullptr;
 };
 
 /// Every problem, in the sweep's order.
