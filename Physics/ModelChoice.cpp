@@ -252,12 +252,15 @@ struct QuantityProbe {
 /// samples). `warmSteps` steps of the candidate first run unmeasured, and the difference at their end is taken off
 /// the later ones: probes built from a mid-run state of a world with volumes lack its contact history (no warm
 /// start), so they first settle.
-/// An energy budget measured over the whole run (`atEnd`) is the difference at the end, where the budget bounds it,
-/// not the largest over the run: two runs that dissipate at an impact a step apart differ by the impact's whole
-/// loss between the two times, which says nothing about the energy either keeps. One difference at one time can be
-/// small by chance (an impact falling at the same place within both steps), so a third probe at a quarter of the
-/// step checks it: the finer pair's difference, times 2^p (what it predicts for the coarser pair when the error
-/// has order p), is taken when it is larger.
+/// Over the whole run (`wholeRun`) a third probe at a quarter of the step runs beside them. An energy budget is then
+/// the difference at the end, where the budget bounds it, not the largest over the run: two runs that dissipate at
+/// an impact a step apart differ by the impact's whole loss between the two times, which says nothing about the
+/// energy either keeps. One difference at one time can be small by chance (an impact falling at the same place
+/// within both steps), so the finer pair's difference at the end, times 2^p (what it predicts for the coarser pair
+/// when the error has order p), is taken when it is larger. A position budget keeps the largest difference over
+/// the run; there the finer pair's largest is taken, times 2^p, only when it exceeds the pair's: the error has
+/// stopped shrinking with the step (a period error saturated at coarse steps). Where it is smaller the pair's
+/// stands, as a finer pair at float rounding (RK4 at fine steps) times 2^p would overstate it.
 struct WindowResult {
     bool stable = true;
     double observed = 0.0;         // the largest sampled difference (or observed value) over the measured part
@@ -485,11 +488,12 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
     e->estimate = 0.0;
     e->segments.clear();
     double cpu = 0.0, simulated = 0.0;
-    // A cheap world without volumes: the candidate and its refinement run the whole run from the start, and the
-    // largest difference sampled over it, with the Richardson factor, is the estimate (constraint error: the
-    // largest seen on the candidate alone). Not the position difference at the end: there a bounce that died down
-    // leaves both at rest on the ground, and a spring is back near a turning point. Energy is bounded at the end
-    // and is measured there, checked by a third probe (RunWindow).
+    // A cheap world without volumes, or with one (no stack to topple: a whole run is a measurement, not a chaotic
+    // divergence): the candidate, its refinement and a third probe at a quarter of the step run the whole run from
+    // the start, and the largest difference sampled over it, with the Richardson factor, is the estimate
+    // (constraint error: the largest seen on the candidate alone). Not the position difference at the end: there a
+    // bounce that died down leaves both at rest on the ground, and a spring is back near a turning point. Energy
+    // is bounded at the end and is measured there. The third probe checks either (RunWindow).
     // The start window then spans the whole run: its contribution is its difference, nothing extrapolated.
     const bool refined = budget.quantity != BudgetQuantity::Constraint;
     const ModelCandidate fine = Refine(e->model, space);

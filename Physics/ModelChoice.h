@@ -125,10 +125,10 @@ struct ChoiceSettings {
     /// checks the model over each, from a snapshot taken before it; at most this many event checks per run (0: none,
     /// and no snapshots are taken).
     int maxEventChecks = 6;
-    /// A world without volumes whose candidate, run beside its refinement over the whole run, costs at most this
-    /// many PredictedWork units is estimated over the whole run instead of windows: the largest difference over the
-    /// run, measured rather than extrapolated (a bounce's or a period's error, which a window cannot see). About
-    /// 0.13 s of CPU for a particle world; 0: never.
+    /// A world without volumes or with one whose candidate, run beside its refinement and a third probe at a quarter
+    /// of its step over the whole run, costs at most this many PredictedWork units is estimated over the whole run
+    /// instead of windows: the largest difference over the run, measured rather than extrapolated (a bounce's or a
+    /// period's error, which a window cannot see). About 0.13 s of CPU for a particle world; 0: never.
     double wholeRunWork = 5e6;
     /// A candidate meets the budget when safety * estimate <= bound.
     double safety = 2.0;
