@@ -344,9 +344,8 @@ int main(int argc, char** argv) {
             return 0;
         } else if (a == "--list") {
             for (const ReferenceProblem& p : ReferenceProblems())
-                std::cout << p.name << ": " << p.errorUnit << " -> " << ToString(p.quantity) << " at 0.1: "
-                          << p.AutoBound(0.1)
-                          << "\n";
+                std::cout << p.name << ": " << p.errorUnit << " -> " << ToString(p.quantity)
+                          << " at 0.1: " << p.AutoBound(0.1) << "\n";
             return 0;
         } else if (a == "--problem") {
             names.push_back(value());
@@ -404,7 +403,8 @@ int main(int argc, char** argv) {
             perProblem.push_back(r);
         }
         for (double budget : budgets) {
-            Case c{p, budget, p->AutoBound(budget), {}, CheapestMeeting(rows, p->sweepProblem, p->sweepParam, budget), {}};
+            Case c{p, budget, p->AutoBound(budget), {}, CheapestMeeting(rows, p->sweepProblem, p->sweepParam, budget),
+                   {}};
             AutoModelRequest request;
             request.model = 1;
             request.tolerance = float(c.autoBound);

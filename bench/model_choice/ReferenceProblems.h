@@ -47,12 +47,13 @@ struct ReferenceProblem {
     std::string conversion;  ///< why that scale, one line for docs/model-choice-validation.md
     bool fast = false;       ///< in the small grid of the CTest
     std::function<std::unique_ptr<ErrorObserver>()> observer;
-    double AutoBound(double budget) const { return bound ? bound(budget) : scale * budget; }
     /// s the equivalence check runs (0: the scene's duration). The bounces: the sweep's 15 s cap, so a model whose
     /// fifth apex comes after the scene's end is measured as the sweep measures it.
     double checkSeconds = 0.0;
     /// The auto bound for a budget in errorUnit, where the conversion is not a constant factor (the pendulums).
     std::function<double(double)> bound = nullptr;
+    /// The auto bound for `budget` (in errorUnit).
+    double AutoBound(double budget) const { return bound ? bound(budget) : scale * budget; }
 };
 
 /// Every problem, in the sweep's order.

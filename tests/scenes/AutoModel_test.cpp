@@ -287,8 +287,8 @@ TEST(AutoModel, PilotFindsTheImpactOfAParticleWorld) {
 }
 
 // A candidate of a world without volumes is measured over the whole run exactly when that run, beside its
-// refinement's and a third probe's at a quarter of the step, costs at most ChoiceSettings::wholeRunWork; the costlier ones keep their windows. A bouncing particle
-// over 100 s at a tight budget has candidates of both kinds.
+// refinement's and a third probe's at a quarter of the step, costs at most ChoiceSettings::wholeRunWork; the costlier
+// ones keep their windows. A bouncing particle over 100 s at a tight budget has candidates of both kinds.
 TEST(AutoModel, CheapCandidatesAreMeasuredOverTheWholeRun) {
     const Chosen run(DroppedParticle(), 100.0, Budget(1e-3));  // met or refused
     const double limit = ChoiceSettings().wholeRunWork;
