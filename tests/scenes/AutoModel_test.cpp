@@ -368,7 +368,8 @@ TEST(AutoModel, AWindowEstimateIsNotTrustedBelowItsFamilysWholeRun) {
 // the validation's budget for a period error of 0.1 (1.73 m, docs/model-choice-validation.md): every integrator's
 // period error saturates near 0.25 at steps of 0.02 s and more (the sweep: semi-implicit Euler 0.244 at 0.1 s, 0.253
 // at 0.05 s), so the candidate at 0.1 s and its refinement agree while both are far off. Without the third probe
-// semi-implicit Euler at 0.1 s was chosen (estimated 0.78 m) and ended 2.4 times over the period budget.
+// semi-implicit Euler at 0.1 s was chosen (estimated 0.78 m) and ended 2.4 times over the period budget. The
+// candidate's note (--explain-model) says the finer pair raised it.
 TEST(AutoModel, AWholeRunDifferenceIsCheckedByAFinerPair) {
     const Chosen run = ReferenceChoice("pendulum-large", 1.732);
     ASSERT_TRUE(run.chosen) << run.error;
@@ -377,6 +378,7 @@ TEST(AutoModel, AWholeRunDifferenceIsCheckedByAFinerPair) {
         if (!e.evaluated || e.model.step < 0.1 - 1e-12) continue;
         EXPECT_TRUE(e.wholeRun) << e.model.Describe(true, false);
         EXPECT_GT(e.estimate, 1.732 / 2.0) << e.model.Describe(true, false) << " misses the budget";
+        EXPECT_NE(e.note.find("by the finer pair"), std::string::npos) << "--explain-model says why: " << e.note;
     }
 }
 
