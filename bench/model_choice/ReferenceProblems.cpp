@@ -285,7 +285,7 @@ private:
 /// before or after passing it (the motion is symmetric in time about the bottom). RK4 at about 1e-5 s on
 /// theta'' = -(g / L) sin theta, from theta = 0 at the bottom's angular speed sqrt(2 g / L (1 - cos theta0)).
 double ChordFromBottom(double theta0, double delay) {
-    const double w2 = kG / 1.0;
+    const double w2 = kG;  // g / L, L = 1 m
     const int n = std::max(1, static_cast<int>(std::ceil(delay / 1e-5)));
     const double h = delay / n;
     double th = 0.0, om = std::sqrt(2.0 * w2 * (1.0 - std::cos(theta0)));
@@ -298,7 +298,7 @@ double ChordFromBottom(double theta0, double delay) {
         th += h / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
         om += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
     }
-    return 2.0 * 1.0 * std::sin(std::fabs(th) / 2.0);
+    return 2.0 * std::sin(std::fabs(th) / 2.0);  // 2 L sin(theta / 2)
 }
 
 template <class T, class... Args>
