@@ -501,8 +501,9 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
     const bool refined = budget.quantity != BudgetQuantity::Constraint;
     const ModelCandidate fine = Refine(e->model, space);
     e->wholeRun = (!space.hasVolumes || space.volumeCount <= 1.0) && settings.wholeRunWork > 0.0 &&
-                  settings.runSeconds * (PredictedWork(e->model, space) + (refined ? PredictedWork(fine, space) : 0.0) +
-                                         (refined ? PredictedWork(Refine(fine, space), space) : 0.0)) <=
+                  settings.runSeconds *
+                          (PredictedWork(e->model, space) +
+                           (refined ? PredictedWork(fine, space) + PredictedWork(Refine(fine, space), space) : 0.0)) <=
                       settings.wholeRunWork;
     double raisedFrom = -1.0;  // the pair's own estimate, when the third probe raised it
     const std::vector<PlannedWindow> whole{plan[0]};
@@ -534,8 +535,9 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
             break;
         }
     }
-    if (e->wholeRun && e->stable && std::isfinite(e->estimate)) e->note = "measured over the whole run";
-    if (e->wholeRun && e->stable && std::isfinite(e->estimate) && raisedFrom >= 0.0) {
+    if (e->wholeRun && e->stable && std::isfinite(e->estimate) && raisedFrom < 0.0) {
+        e->note = "measured over the whole run";
+    } else if (e->wholeRun && e->stable && std::isfinite(e->estimate)) {
         char text[128];
         std::snprintf(text, sizeof text,
                       "measured over the whole run; raised from %.3g by the finer pair (a quarter step)", raisedFrom);
