@@ -272,11 +272,16 @@ struct WindowResult {
     double simulated = 0.0;        // s the candidate's probe ran
     double work = 0.0;             // PredictedWork units both probes did (a deterministic measure of their cost)
     double pairObserved = -1.0;    // a whole run raised by its third probe: what the pair alone observed, else < 0
+    double missedAt = -1.0;        // s into the measured part where it already missed `missBound`, else < 0
+    double share = 1.0;            // the part of the window that ran (1 unless it stopped early)
 };
 
+/// A window with `missBound` > 0 stops at the first sample whose difference, with the Richardson factor, already
+/// exceeds it: the window's contribution can only be larger (its growth is at least 0), so the candidate misses,
+/// and what is left of the window would only say by how much. Its result is then that lower bound (`missedAt`).
 WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
                        const ErrorBudget& budget, double window, int warmSteps, double fixedGrowth = -1.0,
-                       bool wholeRun = false) {
+                       bool wholeRun = false, double missBound = -1.0) {
     WindowResult r;
     const double start = ThreadCpuSeconds();
     std::unique_ptr<ModelProbe> coarse = factory();
@@ -307,6 +312,7 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     double last = 0.0;              // the difference at the end
     double cpu = 0.0;
     bool ok = true;
+    long long reached = 0;  // steps of the candidate run, the warm-up included
     auto advance = [&](double t) {
         const double before = ThreadCpuSeconds();
         const bool coarseOk = coarse->AdvanceTo(t);
@@ -325,8 +331,11 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
         ok = advance(candidate.step * static_cast<double>(warm));
         if (ok) q.Rebase(*coarse, fine.get());
     }
+    reached = warm;
+    const double factor = observed ? 1.0 : RichardsonFactor(OrderOf(candidate, space));
     for (int s = 1; ok && s <= samples; ++s) {
-        ok = advance(candidate.step * static_cast<double>(warm + (measured * s) / samples));
+        reached = warm + (measured * s) / samples;
+        ok = advance(candidate.step * static_cast<double>(reached));
         if (!ok) break;
         const double d = q.Measure(*coarse, fine.get());
         if (!std::isfinite(d)) {
@@ -338,14 +347,27 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
         last = d;
         if (third && !atEnd) finer = std::max(finer, q2.Measure(*fine, finest.get()));
         if (2 * s <= samples) half = full;
+        if (missBound > 0.0 && !atEnd && s < samples && factor * full > missBound) {
+            r.missedAt = candidate.step * static_cast<double>(reached - warm);
+            break;
+        }
     }
     r.cpuSeconds = cpu;
     r.probeCpuSeconds = ThreadCpuSeconds() - start;
-    r.simulated = candidate.step * static_cast<double>(warm + measured);
+    r.simulated = candidate.step * static_cast<double>(reached);
+    r.share = static_cast<double>(reached) / static_cast<double>(warm + measured);
     r.work = r.simulated * (PredictedWork(candidate, space) + (observed ? 0.0 : PredictedWork(refined, space)) +
                             (third ? PredictedWork(Refine(refined, space), space) : 0.0));
     if (!ok) return r;
     const double length = candidate.step * static_cast<double>(measured);
+    if (r.missedAt >= 0.0) {
+        // A lower bound: the difference so far, nothing extrapolated.
+        r.observed = full;
+        r.length = length;
+        r.factor = factor;
+        r.growth = 0.0;
+        return r;
+    }
     // Growth in time, fitted from the measured part's halves, 0 (bounded: a symplectic integrator's energy error, a
     // stack that settled) to 1 (a drift: a phase error, a velocity bias). Nothing is extrapolated faster than
     // linearly: an instability starting is left to the live checks.
@@ -355,7 +377,7 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     r.growth = growth;
     r.observed = full;
     r.length = length;
-    r.factor = observed ? 1.0 : RichardsonFactor(OrderOf(candidate, space));
+    r.factor = factor;
     if (third) {
         if (atEnd) finer = std::fabs(WorldEnergy(fine->World()) - WorldEnergy(finest->World())) / q.energyScale;
         if (!std::isfinite(finer)) {
@@ -489,6 +511,7 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
               const ErrorBudget& budget, const ChoiceSettings& settings, double bound, CandidateEstimate* e,
               double* cpuSeconds, double* work) {
     e->estimate = 0.0;
+    e->share = 0.0;
     e->segments.clear();
     double cpu = 0.0, simulated = 0.0;
     // A cheap world without volumes, or with one (no stack to topple: a whole run is a measurement, not a chaotic
@@ -510,10 +533,14 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
     const std::vector<PlannedWindow>& windows = e->wholeRun ? whole : plan;
     const double length = e->wholeRun ? settings.runSeconds : window;
     for (std::size_t k = 0; k < windows.size(); ++k) {
-        const WindowResult w =
-            RunWindow(windows[k].factory, e->model, space, budget, length, windows[k].warmSteps, -1.0, e->wholeRun);
+        // A window stops as soon as its own difference misses (RunWindow); a whole run does not, as its estimate
+        // is what a finer rung of its family is floored by (RaiseToFamilyFloor), and a lower bound is not.
+        const WindowResult w = RunWindow(windows[k].factory, e->model, space, budget, length, windows[k].warmSteps,
+                                         -1.0, e->wholeRun,
+                                         e->wholeRun || !settings.stopWindowsAtMiss ? -1.0 : bound);
         *cpuSeconds += w.probeCpuSeconds;
         *work += w.work;
+        e->share += w.share / static_cast<double>(windows.size());
         cpu += w.cpuSeconds;
         simulated += w.simulated;
         if (!w.stable || !std::isfinite(w.observed)) {
@@ -527,6 +554,14 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
         const double c = Contribution(windows[k], w, budget);
         e->segments.push_back(c);
         e->estimate = budget.quantity == BudgetQuantity::Constraint ? std::max(e->estimate, c) : e->estimate + c;
+        if (w.missedAt >= 0.0) {
+            e->partial = true;
+            char text[96];
+            std::snprintf(text, sizeof text, "missed %.3g s into window %zu of %zu", w.missedAt, k + 1,
+                          windows.size());
+            e->note = text;
+            break;
+        }
         if (e->estimate > bound && k + 1 < windows.size()) {
             e->partial = true;
             char text[96];
@@ -661,7 +696,7 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
             e.note = why;
             continue;
         }
-        if (result.evaluatedCount >= settings.maxEvaluations) {
+        if (result.evaluatedShare >= settings.maxEvaluations) {
             e.note = "not run: evaluation limit reached";
             continue;
         }
@@ -669,6 +704,7 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
         e.evaluated = true;
         Evaluate(plan, window, space, budget, settings, bound, &e, &result.calibrationCpuSeconds,
                  &result.calibrationWork);
+        result.evaluatedShare += e.share;
         RaiseToFamilyFloor(result.candidates, order, k, space, &e);
         e.meets = e.stable && !e.partial && e.estimate <= bound;
         if (e.meets) result.chosen = static_cast<int>(order[k]);

@@ -130,11 +130,16 @@ struct ChoiceSettings {
     /// instead of windows: the largest difference over the run, measured rather than extrapolated (a bounce's or a
     /// period's error, which a window cannot see). About 0.13 s of CPU for a particle world; 0: never.
     double wholeRunWork = 5e6;
+    /// A calibration window (not a whole run) stops at the first sample whose difference alone already misses the
+    /// budget: the candidate misses, and the rest of the window would only say by how much. False runs every
+    /// window to its end (the same choice at a higher cost, as a comparison).
+    bool stopWindowsAtMiss = true;
     /// A candidate meets the budget when safety * estimate <= bound.
     double safety = 2.0;
     /// Candidates estimated at most (the rest are reported as not run): a bound on the calibration of a budget
-    /// nothing meets. The validation's cases need at most 90 (a world of volumes has up to 180 candidates); 60
-    /// refused the incline at 1e-3 and the tower of 10 at 1e-3, which finer candidates meet.
+    /// nothing meets. A candidate whose window stopped early at a miss counts for the part of its windows that
+    /// ran. The validation's cases need at most 90 (a world of volumes has up to 180 candidates); 60 refused the
+    /// incline at 1e-3 and the tower of 10 at 1e-3, which finer candidates meet.
     int maxEvaluations = 100;
     /// The live check: a window of this fraction of the calibration window, run every `checkEvery` seconds of
     /// simulated time (0 = a sixth of the run).
@@ -154,6 +159,7 @@ struct CandidateEstimate {
     bool meets = false;            ///< safety * estimate <= bound
     bool partial = false;          ///< the estimate stopped at a window where it already missed (a lower bound)
     bool wholeRun = false;         ///< estimated over the whole run (ChoiceSettings::wholeRunWork), not windows
+    double share = 0.0;            ///< the part of its windows that ran (below 1 when one stopped at a miss)
     std::vector<double> segments;  ///< each window's share of the estimate (start window first)
     std::string note;              ///< why skipped, or why the estimate is not trusted
 };
@@ -170,6 +176,7 @@ struct ModelChoiceResult {
     double calibrationWork = 0.0;
     std::vector<double> eventTimes;  ///< s: where the calibration's event windows start
     int evaluatedCount = 0;          ///< candidates estimated
+    double evaluatedShare = 0.0;     ///< their windows that ran, in candidates (ChoiceSettings::maxEvaluations)
     double windowSeconds = 0.0;      ///< s of simulated time per calibration run
 };
 

@@ -194,13 +194,13 @@ bool ApplyModel(ParameterSet* params, const ModelCandidate& model, std::string* 
 }  // namespace
 
 bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double step, double runSeconds,
-                       const AutoModelRequest& r, std::string* error) {
+                       const AutoModelRequest& r, std::string* error, const ChoiceSettings& tuning) {
     request = r;
     const ErrorBudget budget = r.Budget();
     if (!ValidateBudget(budget, error)) return false;
     hostStep = step;
     space = SpaceOf(*params, world, hostStep);
-    settings = ChoiceSettings();
+    settings = tuning;
     settings.runSeconds = runSeconds;
     choice = ChooseModel(FactoryOf(world), space, budget, settings);
     if (!choice.feasible) {
@@ -214,10 +214,10 @@ bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double 
                           ToString(budget.quantity), budget.bound, BudgetUnit(budget.quantity), settings.safety,
                           b.estimate, BudgetUnit(budget.quantity),
                           b.model.Describe(space.hasParticles, space.hasVolumes).c_str(), choice.evaluatedCount);
-            if (choice.evaluatedCount >= settings.maxEvaluations) {
+            if (choice.evaluatedShare >= settings.maxEvaluations) {
                 std::snprintf(text + std::strlen(text), sizeof text - std::strlen(text),
-                              "; the evaluation limit of %d candidates was reached, so finer candidates were not "
-                              "tried",
+                              "; the evaluation limit of %d candidates' windows was reached, so finer candidates "
+                              "were not tried",
                               settings.maxEvaluations);
             }
         } else {

@@ -39,8 +39,9 @@ public:
 
     /// Estimates the candidates on `world` and, when one meets the budget, applies the cheapest through `params`.
     /// False when the budget is invalid or no candidate meets it: *error then says so with the best estimate.
+    /// `tuning` is the estimator's settings (its runSeconds is replaced by `runSeconds`).
     bool Choose(ParameterSet* params, const PhysicsSystem& world, double hostStep, double runSeconds,
-                const AutoModelRequest& request, std::string* error);
+                const AutoModelRequest& request, std::string* error, const ChoiceSettings& tuning = {});
     /// After each frame: the live watch (time = simulated s since the start); a switch is applied through `params`
     /// and logged (Log()).
     void AfterFrame(ParameterSet* params, const PhysicsSystem& world, double time);

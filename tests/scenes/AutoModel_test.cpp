@@ -256,21 +256,23 @@ struct Chosen {
     bool chosen = false;
     std::string error;
 
-    Chosen(const SceneDescription& d, double runSeconds, const AutoModelRequest& request) : description(d) {
+    Chosen(const SceneDescription& d, double runSeconds, const AutoModelRequest& request,
+           const ChoiceSettings& tuning = {})
+        : description(d) {
         scene = std::make_unique<FileScene>(description);
         scene->AddParameters(&params);
-        chosen = autoModel.Choose(&params, scene->System(), kHostStep, runSeconds, request, &error);
+        chosen = autoModel.Choose(&params, scene->System(), kHostStep, runSeconds, request, &error, tuning);
     }
 };
 
 /// A reference problem of the validation (scenes/reference/NAME.json, docs/model-choice-validation.md), over its
 /// duration with a position budget of `bound` m.
-Chosen ReferenceChoice(const std::string& name, double bound) {
+Chosen ReferenceChoice(const std::string& name, double bound, const ChoiceSettings& tuning = {}) {
     SceneDescription d;
     std::vector<std::string> errors;
     const std::string path = std::string(PSB_SOURCE_DIR "/scenes/reference/") + name + ".json";
     EXPECT_TRUE(LoadSceneFile(path, &d, &errors)) << path;
-    return Chosen(d, d.duration, Budget(bound));
+    return Chosen(d, d.duration, Budget(bound), tuning);
 }
 
 // In a world without volumes the pilot finds the bounce the start window cannot see, and the calibration gives it
@@ -478,7 +480,41 @@ TEST(AutoModel, TheEvaluationLimitReachesPastTheSixtiethCandidate) {
     const Chosen run = ReferenceChoice("incline", 0.00265);
     ASSERT_TRUE(run.chosen) << run.error;
     EXPECT_GT(run.autoModel.Choice().evaluatedCount, 60);
-    EXPECT_LE(run.autoModel.Choice().evaluatedCount, ChoiceSettings().maxEvaluations);
+    EXPECT_LE(run.autoModel.Choice().evaluatedShare, ChoiceSettings().maxEvaluations);
+}
+
+// A calibration window stops at the first sample whose difference alone already misses the budget: the tower of
+// five at 1 cm chooses the same model as with every window run to its end, for less work, and every candidate
+// stopped early did miss.
+TEST(AutoModel, AWindowStopsAtItsFirstMiss) {
+    ChoiceSettings whole;
+    whole.stopWindowsAtMiss = false;
+    const Chosen stopping = ReferenceChoice("stack-5", 0.01), full = ReferenceChoice("stack-5", 0.01, whole);
+    ASSERT_TRUE(stopping.chosen) << stopping.error;
+    ASSERT_TRUE(full.chosen) << full.error;
+    const ModelChoiceResult &a = stopping.autoModel.Choice(), &b = full.autoModel.Choice();
+    EXPECT_EQ(a.candidates[a.chosen].model.Describe(), b.candidates[b.chosen].model.Describe());
+    EXPECT_EQ(a.candidates[a.chosen].estimate, b.candidates[b.chosen].estimate);
+    int stopped = 0;
+    for (const CandidateEstimate& c : a.candidates) {
+        if (!c.evaluated || c.share >= 1.0) continue;
+        ++stopped;
+        EXPECT_TRUE(c.partial) << c.model.Describe();
+        EXPECT_GT(c.estimate, 0.01 / ChoiceSettings().safety) << c.model.Describe();
+        EXPECT_NE(c.note.find("into window"), std::string::npos) << c.note;
+    }
+    EXPECT_GT(stopped, 0);
+    EXPECT_LT(a.calibrationWork, 0.5 * b.calibrationWork);
+}
+
+// The evaluation limit counts a candidate stopped early for the part of its windows that ran: the tower of ten at
+// 1 mm is met by the accumulated solver at 0.5 ms after more than 100 candidates, most of them stopped early; counted
+// whole, the limit refused it.
+TEST(AutoModel, TheEvaluationLimitCountsTheWindowsThatRan) {
+    const Chosen run = ReferenceChoice("stack-10", 0.001);
+    ASSERT_TRUE(run.chosen) << run.error;
+    EXPECT_GT(run.autoModel.Choice().evaluatedCount, ChoiceSettings().maxEvaluations);
+    EXPECT_LE(run.autoModel.Choice().evaluatedShare, ChoiceSettings().maxEvaluations);
 }
 
 TEST(AutoModel, RefusesABudgetNoCandidateMeets) {
