@@ -536,8 +536,7 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
         // A window stops as soon as its own difference misses (RunWindow); a whole run does not, as its estimate
         // is what a finer rung of its family is floored by (RaiseToFamilyFloor), and a lower bound is not.
         const WindowResult w = RunWindow(windows[k].factory, e->model, space, budget, length, windows[k].warmSteps,
-                                         -1.0, e->wholeRun,
-                                         e->wholeRun || !settings.stopWindowsAtMiss ? -1.0 : bound);
+                                         -1.0, e->wholeRun, e->wholeRun || !settings.stopWindowsAtMiss ? -1.0 : bound);
         *cpuSeconds += w.probeCpuSeconds;
         *work += w.work;
         e->share += w.share / static_cast<double>(windows.size());
@@ -557,8 +556,7 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
         if (w.missedAt >= 0.0) {
             e->partial = true;
             char text[96];
-            std::snprintf(text, sizeof text, "missed %.3g s into window %zu of %zu", w.missedAt, k + 1,
-                          windows.size());
+            std::snprintf(text, sizeof text, "missed %.3g s into window %zu of %zu", w.missedAt, k + 1, windows.size());
             e->note = text;
             break;
         }
