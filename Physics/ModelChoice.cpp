@@ -859,6 +859,26 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
         }
         return false;
     }
+    // A finer model changes only the current model's part of the estimate: what its latest window adds and the
+    // rest of the run it stands for. When that is less than what earlier windows and models left (which no
+    // refinement undoes), a refinement would take off less than a quarter of the estimate at twice the cost: the
+    // model stays, unless its window itself misses the budget.
+    const double currentPart =
+        budget.quantity == BudgetQuantity::Position ? latest + (running - measured) : running - carried;
+    const double earlier = running - currentPart;
+    if (currentPart < earlier && latest <= budget.bound) {
+        if (!keptReported) {
+            char text[320];
+            std::snprintf(text, sizeof text,
+                          "t = %.2f s: estimated %s error at the end %.3g exceeds the budget %g, but %.3g of it was "
+                          "made before this check and %s adds %.3g: a finer model would take off little, so it stays",
+                          time, ToString(budget.quantity), running, budget.bound, earlier,
+                          current.Describe(space.hasParticles, space.hasVolumes).c_str(), currentPart);
+            *log = text;
+            keptReported = true;
+        }
+        return false;
+    }
     // Refine within the family: the next smaller step the space allows, else more passes.
     ModelCandidate next = current;
     double smaller = 0.0;

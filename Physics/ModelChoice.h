@@ -241,6 +241,7 @@ private:
     double work = 0.0;
     int switches = 0;
     bool lostReported = false;  // the error already made exceeds the budget (said once)
+    bool keptReported = false;  // a check kept the model, as a finer one would change little (said once)
     // Events: the host's last three frames' positions and the last acceleration, the irregularity the calibration
     // window saw, the pending event, and the two newest snapshots.
     std::vector<double> x0, x1, x2, acceleration;
