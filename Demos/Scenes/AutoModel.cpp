@@ -267,10 +267,10 @@ std::string AutoModel::Explain() const {
     char line[512];
     std::snprintf(line, sizeof line,
                   "auto model: %s error budget %g %s, safety factor %g; calibration window %g s of a %g s run; %d "
-                  "of %zu candidates estimated in %.3g s CPU\n",
+                  "of %zu candidates estimated (%.3g candidates' worth of windows; limit %d) in %.3g s CPU\n",
                   ToString(budget.quantity), budget.bound, BudgetUnit(budget.quantity), settings.safety,
                   choice.windowSeconds, settings.runSeconds, choice.evaluatedCount, choice.candidates.size(),
-                  choice.calibrationCpuSeconds);
+                  choice.evaluatedShare, settings.maxEvaluations, choice.calibrationCpuSeconds);
     out << line;
     std::snprintf(line, sizeof line, "  %-6s %-44s %-12s %-12s %-12s %s\n", "chosen", "candidate", "estimate",
                   "work/sim-s", "cpu-s/sim-s", "note");
