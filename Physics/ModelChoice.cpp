@@ -861,8 +861,8 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
     }
     // A finer model changes only the current model's part of the estimate: what its latest window adds and the
     // rest of the run it stands for. When that is less than what earlier windows and models left (which no
-    // refinement undoes), a refinement would take off less than a quarter of the estimate at twice the cost: the
-    // model stays, unless its window itself misses the budget.
+    // refinement undoes), a refinement would take off less than half of the estimate (a quarter at first order) at
+    // twice the cost: the model stays, unless its window itself misses the budget.
     const double currentPart =
         budget.quantity == BudgetQuantity::Position ? latest + (running - measured) : running - carried;
     const double earlier = running - currentPart;
