@@ -553,17 +553,16 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
         const double c = Contribution(windows[k], w, budget);
         e->segments.push_back(c);
         e->estimate = budget.quantity == BudgetQuantity::Constraint ? std::max(e->estimate, c) : e->estimate + c;
-        if (w.missedAt >= 0.0) {
+        // Missed already, within this window or after it: the rest can only add (a lower bound).
+        if (w.missedAt >= 0.0 || (e->estimate > bound && k + 1 < windows.size())) {
             e->partial = true;
             char text[96];
-            std::snprintf(text, sizeof text, "missed %.3g s into window %zu of %zu", w.missedAt, k + 1, windows.size());
-            e->note = text;
-            break;
-        }
-        if (e->estimate > bound && k + 1 < windows.size()) {
-            e->partial = true;
-            char text[96];
-            std::snprintf(text, sizeof text, "missed after %zu of %zu windows", k + 1, windows.size());
+            if (w.missedAt >= 0.0) {
+                std::snprintf(text, sizeof text, "missed %.3g s into window %zu of %zu", w.missedAt, k + 1,
+                              windows.size());
+            } else {
+                std::snprintf(text, sizeof text, "missed after %zu of %zu windows", k + 1, windows.size());
+            }
             e->note = text;
             break;
         }
