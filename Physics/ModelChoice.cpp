@@ -312,7 +312,6 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     double last = 0.0;              // the difference at the end
     double cpu = 0.0;
     bool ok = true;
-    long long reached = 0;  // steps of the candidate run, the warm-up included
     auto advance = [&](double t) {
         const double before = ThreadCpuSeconds();
         const bool coarseOk = coarse->AdvanceTo(t);
@@ -331,7 +330,7 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
         ok = advance(candidate.step * static_cast<double>(warm));
         if (ok) q.Rebase(*coarse, fine.get());
     }
-    reached = warm;
+    long long reached = warm;  // steps of the candidate run, the warm-up included
     const double factor = observed ? 1.0 : RichardsonFactor(OrderOf(candidate, space));
     for (int s = 1; ok && s <= samples; ++s) {
         reached = warm + (measured * s) / samples;

@@ -138,8 +138,9 @@ struct ChoiceSettings {
     double safety = 2.0;
     /// Candidates estimated at most (the rest are reported as not run): a bound on the calibration of a budget
     /// nothing meets. A candidate whose window stopped early at a miss counts for the part of its windows that
-    /// ran. The validation's cases need at most 90 (a world of volumes has up to 180 candidates); 60 refused the
-    /// incline at 1e-3 and the tower of 10 at 1e-3, which finer candidates meet.
+    /// ran. The validation's cases need at most 66 (the incline at 1e-3, whose whole runs never stop early; the
+    /// tower of 10 at 1e-3 estimates 122 candidates for 8.4 candidates' worth, a world of volumes having up to
+    /// 180); 60 whole candidates refused the incline and the tower of 10 at 1e-3, which finer candidates meet.
     int maxEvaluations = 100;
     /// The live check: a window of this fraction of the calibration window, run every `checkEvery` seconds of
     /// simulated time (0 = a sixth of the run).
