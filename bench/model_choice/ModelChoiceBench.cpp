@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "Demos/Scenes/AutoModel.h"
+#include "Demos/Scenes/FileScene.h"
+#include "Demos/Scenes/SceneExport.h"
 #include "Demos/Scenes/SceneFile.h"
 #include "Platform/Files/AtomicFile.h"
 #include "bench/model_choice/ReferenceProblems.h"
@@ -192,7 +194,24 @@ struct ProblemRuns {
     const ReferenceProblem* problem;
     RunResult book, accurate;
     const SweepRow* accurateRow = nullptr;
+    double probeCpuSeconds = 0.0;  ///< one probe's build: the world described, then a FileScene built from that
 };
+
+/// CPU s of what auto does before a probe runs a step: describe the host's world (DescribeWorld) and build a
+/// FileScene from the description (Demos/Scenes/AutoModel.cpp's probes). The fastest of five batches of 200.
+double ProbeBuildCpuSeconds(const SceneDescription& d) {
+    FileScene host(d);
+    double best = INFINITY;
+    for (int batch = 0; batch < 5; ++batch) {
+        const double start = sweep::CpuNow();
+        for (int i = 0; i < 200; ++i) {
+            std::vector<std::string> notes;
+            FileScene probe(DescribeWorld(host.System(), "probe", &notes));
+        }
+        best = std::min(best, (sweep::CpuNow() - start) / 200.0);
+    }
+    return best;
+}
 
 std::string Verdict(const Case& c) {
     if (!c.autoRun.ok) return "failed: " + c.autoRun.message;
@@ -274,11 +293,11 @@ std::string Report(const std::vector<Case>& cases, const std::vector<ProblemRuns
         md << "\n**The same problems with fixed models** (the book's model at the host step 0.03 s; the most accurate "
               "setting of the sweep):\n\n";
         md << "| problem | book's model at 0.03 s: error | CPU s per s | most accurate in the sweep | its error | "
-              "CPU s per s |\n|---|---|---|---|---|---|\n";
+              "CPU s per s | one probe's build, CPU s |\n|---|---|---|---|---|---|---|\n";
         for (const ProblemRuns& r : perProblem)
             md << "| " << r.problem->name << " | " << Num(r.book.error) << " | " << Num(r.book.cpuPerSimSecond) << " | "
                << (r.accurateRow ? r.accurateRow->Describe() : "none") << " | " << Num(r.accurate.error) << " | "
-               << Num(r.accurate.cpuPerSimSecond) << " |\n";
+               << Num(r.accurate.cpuPerSimSecond) << " | " << Num(r.probeCpuSeconds) << " |\n";
     }
     return md.str();
 }
@@ -398,6 +417,7 @@ int main(int argc, char** argv) {
             ProblemRuns r{p, {}, {}, MostAccurate(rows, p->sweepProblem, p->sweepParam)};
             r.book = RunScene(d, *p, {}, nullptr, minCpu, repeats);
             if (r.accurateRow) r.accurate = RunScene(d, *p, r.accurateRow->ToAssignments(), nullptr, minCpu, repeats);
+            r.probeCpuSeconds = ProbeBuildCpuSeconds(d);
             std::fprintf(stderr, "%s: book %s, most accurate %s\n", p->name.c_str(), Num(r.book.error).c_str(),
                          Num(r.accurate.error).c_str());
             perProblem.push_back(r);
