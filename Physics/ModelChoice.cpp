@@ -267,7 +267,7 @@ struct WindowResult {
     double length = 0.0;           // s: the measured part
     double factor = 1.0;           // the Richardson factor
     double growth = 1.0;           // the exponent used
-    double cpuSeconds = 0.0;       // candidate's probe only
+    double cpuSeconds = 0.0;       // candidate's probe only: the window's CPU apportioned by predicted work
     double probeCpuSeconds = 0.0;  // both probes
     double simulated = 0.0;        // s the candidate's probe ran
     double work = 0.0;             // PredictedWork units both probes did (a deterministic measure of their cost)
@@ -310,13 +310,9 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     double half = 0.0, full = 0.0;  // running maximum at the measured part's middle and end
     double finer = 0.0;             // the third probe's: the largest over the run of the finer pair's difference
     double last = 0.0;              // the difference at the end
-    double cpu = 0.0;
     bool ok = true;
     auto advance = [&](double t) {
-        const double before = ThreadCpuSeconds();
-        const bool coarseOk = coarse->AdvanceTo(t);
-        cpu += ThreadCpuSeconds() - before;
-        if (!coarseOk) {
+        if (!coarse->AdvanceTo(t)) {
             r.stable = false;
             return false;
         }
@@ -351,12 +347,15 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
             break;
         }
     }
-    r.cpuSeconds = cpu;
     r.probeCpuSeconds = ThreadCpuSeconds() - start;
     r.simulated = candidate.step * static_cast<double>(reached);
     r.share = static_cast<double>(reached) / static_cast<double>(warm + measured);
-    r.work = r.simulated * (PredictedWork(candidate, space) + (observed ? 0.0 : PredictedWork(refined, space)) +
+    const double own = PredictedWork(candidate, space);
+    r.work = r.simulated * (own + (observed ? 0.0 : PredictedWork(refined, space)) +
                             (third ? PredictedWork(Refine(refined, space), space) : 0.0));
+    // The candidate's part of the window's CPU, by predicted work: the thread's CPU clock is a system call (about
+    // 0.25 us), and reading it around every sample's advance was a fifth of a microsecond problem's calibration.
+    r.cpuSeconds = r.work > 0.0 ? r.probeCpuSeconds * own * r.simulated / r.work : 0.0;
     if (!ok) return r;
     const double length = candidate.step * static_cast<double>(measured);
     if (r.missedAt >= 0.0) {

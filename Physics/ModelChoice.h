@@ -153,7 +153,7 @@ struct CandidateEstimate {
     ModelCandidate model;
     double estimate = 0.0;         ///< the budget's quantity at the end of the run, estimated (inf: unstable)
     double predictedWork = 0.0;    ///< PredictedWork: what "cheapest" means
-    double cpuPerSimSecond = 0.0;  ///< s of CPU per simulated s, measured on the calibration window (reported only)
+    double cpuPerSimSecond = 0.0;  ///< s CPU per simulated s: its windows' CPU x its share of their work (reported)
     double growth = 0.0;           ///< the error's fitted growth exponent in time
     bool evaluated = false;        ///< false: skipped (its predicted cost was above the chosen one's)
     bool stable = true;
