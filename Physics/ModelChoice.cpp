@@ -351,12 +351,13 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     r.simulated = candidate.step * static_cast<double>(reached);
     r.share = static_cast<double>(reached) / static_cast<double>(warm + measured);
     const double own = PredictedWork(candidate, space);
-    r.work = r.simulated * (own + (observed ? 0.0 : PredictedWork(refined, space)) +
-                            (third ? PredictedWork(Refine(refined, space), space) : 0.0));
+    const double perSecond = own + (observed ? 0.0 : PredictedWork(refined, space)) +
+                             (third ? PredictedWork(Refine(refined, space), space) : 0.0);
+    r.work = r.simulated * perSecond;
     // The candidate's part of the window's CPU, by predicted work: the thread's CPU clock is a system call (about
     // 0.25 us), and reading it around every sample's advance was half a microsecond problem's calibration (the
     // projectile's: 69 us with it, 36 us without).
-    r.cpuSeconds = r.work > 0.0 ? r.probeCpuSeconds * own * r.simulated / r.work : 0.0;
+    r.cpuSeconds = r.probeCpuSeconds * own / perSecond;
     if (!ok) return r;
     const double length = candidate.step * static_cast<double>(measured);
     if (r.missedAt >= 0.0) {

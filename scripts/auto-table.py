@@ -30,14 +30,8 @@ def main():
     path = sys.argv[1] if len(sys.argv) > 1 else "docs/sweep/auto.csv"
     with open(path, newline="") as f:
         rows = list(csv.DictReader(f))
-    budgets = []
-    for r in rows:
-        if r["budget"] not in budgets:
-            budgets.append(r["budget"])
-    problems = []
-    for r in rows:
-        if r["problem"] not in problems:
-            problems.append(r["problem"])
+    budgets = list(dict.fromkeys(r["budget"] for r in rows))  # in the CSV's order, each once
+    problems = list(dict.fromkeys(r["problem"] for r in rows))
     labels = ["budget 1e-1", "1e-2", "1e-3"] if budgets == ["0.1", "0.01", "0.001"] else budgets
     print("| problem | " + " | ".join(labels) + " |")
     print("|---" * (len(budgets) + 1) + "|")
