@@ -28,6 +28,10 @@ using namespace modelchoice;
 
 namespace {
 
+/// Auto's safety factor (a candidate meets a budget when safety * estimate <= budget): ChoiceSettings's, or
+/// --safety's.
+double kSafety = ChoiceSettings{}.safety;
+
 constexpr const char* kUsage =
     "usage: psb-model-choice-bench [--problem NAME]... [--budgets LIST] [--quick] [--check] [--out FILE.md]\n"
     "                              [--csv FILE.csv] [--scenes DIR] [--results FILE] [--explain] [--list]\n"
@@ -44,7 +48,9 @@ constexpr const char* kUsage =
     "  --csv FILE      write auto's points: problem,budget,...,error,cpu_per_sim_s (for the sweep figures)\n"
     "  --scenes DIR    the reference scene files (default: the source tree's scenes/reference)\n"
     "  --results FILE  the full sweep (default: the source tree's docs/sweep/results.csv)\n"
-    "  --explain       print auto's candidates (AutoModel::Explain) and its log for every case on stderr\n";
+    "  --explain       print auto's candidates (AutoModel::Explain) and its log for every case on stderr\n"
+    "  --safety S      auto's safety factor (default 2: a candidate meets a budget when S x estimate <= budget),\n"
+    "                  to measure what another factor buys in accuracy and costs\n";
 
 std::string Num(double v, int digits = 3) {
     if (std::isinf(v)) return "inf";
@@ -159,6 +165,10 @@ struct Case {
     RunResult autoRun;
     const SweepRow* cheapest = nullptr;
     RunResult cheapestRun;
+    /// The cheapest sweep setting meeting the budget over auto's safety factor: what auto would choose among the
+    /// sweep's settings if its estimates were exact and free (nullptr where none does, or in --quick).
+    const SweepRow* margin = nullptr;
+    RunResult marginRun;
     double own = NAN;  ///< OwnQuantity of auto's run
     bool Ran() const { return autoRun.ok && !autoRun.refused; }
     bool Within() const { return Ran() ? autoRun.error <= budget : cheapest == nullptr; }
@@ -166,6 +176,12 @@ struct Case {
     double CostRatio() const {
         return Ran() && cheapest != nullptr && cheapestRun.cpuPerSimSecond > 0.0
                    ? autoRun.cpuPerSimSecond / cheapestRun.cpuPerSimSecond
+                   : NAN;
+    }
+    /// The margin setting's CPU over the cheapest's: what the safety factor alone costs.
+    double MarginRatio() const {
+        return cheapest != nullptr && margin != nullptr && cheapestRun.cpuPerSimSecond > 0.0
+                   ? marginRun.cpuPerSimSecond / cheapestRun.cpuPerSimSecond
                    : NAN;
     }
 };
@@ -290,6 +306,18 @@ std::string Report(const std::vector<Case>& cases, const std::vector<ProblemRuns
                << " times auto's CPU where auto ran (from " << Num(accurateOverAuto.front(), 2) << " to "
                << Num(accurateOverAuto.back(), 2) << ")";
         md << "\n";
+        int margined = 0, marginUnder2 = 0, autoOverMarginUnder2 = 0;
+        for (const Case& c : cases)
+            if (!std::isnan(c.MarginRatio()) && !std::isnan(c.CostRatio())) {
+                ++margined;
+                marginUnder2 += c.MarginRatio() <= 2.0 ? 1 : 0;
+                autoOverMarginUnder2 += c.CostRatio() / c.MarginRatio() <= 2.0 ? 1 : 0;
+            }
+        md << "- the safety factor's share: the cheapest sweep setting meeting the budget over " << Num(kSafety)
+           << " (auto's safety factor; what auto would run, among the sweep's settings, if its estimates were exact "
+              "and cost nothing) is within 2x of the cheapest meeting the budget in "
+           << marginUnder2 << " / " << margined << " cases where auto ran; auto is within 2x of that setting in "
+           << autoOverMarginUnder2 << " / " << margined << "\n";
         md << "\n**The same problems with fixed models** (the book's model at the host step 0.03 s; the most accurate "
               "setting of the sweep):\n\n";
         md << "| problem | book's model at 0.03 s: error | CPU s per s | most accurate in the sweep | its error | "
@@ -298,6 +326,23 @@ std::string Report(const std::vector<Case>& cases, const std::vector<ProblemRuns
             md << "| " << r.problem->name << " | " << Num(r.book.error) << " | " << Num(r.book.cpuPerSimSecond) << " | "
                << (r.accurateRow ? r.accurateRow->Describe() : "none") << " | " << Num(r.accurate.error) << " | "
                << Num(r.accurate.cpuPerSimSecond) << " | " << Num(r.probeCpuSeconds) << " |\n";
+        md << "\n**The safety factor's share of the cost** (the cheapest sweep setting meeting the budget over "
+           << Num(kSafety)
+           << ", run side by side like the others; \"over the cheapest\": its CPU over the cheapest "
+              "setting meeting the budget; \"auto over it\": auto's CPU, calibration included, over its CPU):\n\n";
+        md << "| problem | budget | cheapest meeting the budget / " << Num(kSafety)
+           << " | its error here | its CPU s per s | over the cheapest | auto over it "
+              "|\n|---|---|---|---|---|---|---|\n";
+        for (const Case& c : cases) {
+            if (c.cheapest == nullptr) continue;
+            const double ratio = c.MarginRatio();
+            const double autoOver = c.CostRatio() / ratio;
+            md << "| " << c.problem->name << " | " << Num(c.budget) << " | "
+               << (c.margin ? c.margin->Describe() : "none") << " | " << (c.margin ? Num(c.marginRun.error) : "-")
+               << " | " << (c.margin ? Num(c.marginRun.cpuPerSimSecond) : "-") << " | "
+               << (std::isnan(ratio) ? "-" : Num(ratio, 2)) << " | " << (std::isnan(autoOver) ? "-" : Num(autoOver, 2))
+               << " |\n";
+        }
     }
     return md.str();
 }
@@ -311,7 +356,8 @@ std::string NoCommas(std::string text) {
 std::string Csv(const std::vector<Case>& cases) {
     std::ostringstream csv;
     csv << "problem,sweep_problem,param,budget,quantity,auto_bound,refused,model,error,cpu_per_sim_s,"
-           "overhead_cpu_s,switches,cheapest,cheapest_error,cheapest_cpu_per_sim_s,cost_ratio,own_quantity\n";
+           "overhead_cpu_s,switches,cheapest,cheapest_error,cheapest_cpu_per_sim_s,cost_ratio,own_quantity,margin,"
+           "margin_error,margin_cpu_per_sim_s\n";
     for (const Case& c : cases) {
         const ReferenceProblem& p = *c.problem;
         csv << p.name << "," << p.sweepProblem << "," << p.sweepParam << "," << Num(c.budget, 6) << ","
@@ -322,7 +368,9 @@ std::string Csv(const std::vector<Case>& cases) {
             << (c.cheapest ? Num(c.cheapestRun.error, 6) : "-") << ","
             << (c.cheapest ? Num(c.cheapestRun.cpuPerSimSecond, 6) : "-") << ","
             << (std::isnan(c.CostRatio()) ? "-" : Num(c.CostRatio(), 4)) << ","
-            << (std::isnan(c.own) ? "-" : Num(c.own, 6)) << "\n";
+            << (std::isnan(c.own) ? "-" : Num(c.own, 6)) << "," << (c.margin ? c.margin->Describe() : "-") << ","
+            << (c.margin ? Num(c.marginRun.error, 6) : "-") << ","
+            << (c.margin ? Num(c.marginRun.cpuPerSimSecond, 6) : "-") << "\n";
     }
     return csv.str();
 }
@@ -379,6 +427,10 @@ int main(int argc, char** argv) {
             check = true;
         } else if (a == "--explain") {
             explain = true;
+        } else if (a == "--safety") {
+            const std::vector<double> v = ParseList(value());
+            if (v.size() != 1 || v[0] < 1.0) return Usage("--safety: one finite number of at least 1");
+            kSafety = v[0];
         } else if (a == "--out") {
             out = value();
         } else if (a == "--csv") {
@@ -391,7 +443,7 @@ int main(int argc, char** argv) {
             return Usage("unknown argument '" + a + "'");
         }
         if (a != "--scenes" && a != "--results" && a != "--out" && a != "--csv") command += " " + a;
-        if (a == "--problem" || a == "--budgets") command += " " + std::string(argv[i]);
+        if (a == "--problem" || a == "--budgets" || a == "--safety") command += " " + std::string(argv[i]);
     }
     std::vector<const ReferenceProblem*> problems;
     for (const ReferenceProblem& p : ReferenceProblems())
@@ -406,6 +458,8 @@ int main(int argc, char** argv) {
     }
     if (check) return Check(problems, scenes, rows);
 
+    ChoiceSettings tuning;
+    tuning.safety = kSafety;
     const double minCpu = quick ? 0.0 : 0.05;
     const int repeats = quick ? 1 : 20;
     std::vector<Case> cases;
@@ -423,18 +477,31 @@ int main(int argc, char** argv) {
             perProblem.push_back(r);
         }
         for (double budget : budgets) {
-            Case c{p, budget, p->AutoBound(budget), {}, CheapestMeeting(rows, p->sweepProblem, p->sweepParam, budget),
+            Case c{p,
+                   budget,
+                   p->AutoBound(budget),
+                   {},
+                   CheapestMeeting(rows, p->sweepProblem, p->sweepParam, budget),
+                   {},
+                   nullptr,
                    {}};
             AutoModelRequest request;
             request.model = 1;
             request.tolerance = float(c.autoBound);
             request.quantity = int(p->quantity);
-            c.autoRun = RunScene(d, *p, {}, &request, minCpu, repeats);
+            c.autoRun = RunScene(d, *p, {}, &request, minCpu, repeats, tuning);
             if (!c.autoRun.ok) {
                 std::cerr << "psb-model-choice-bench: " << p->name << ": " << c.autoRun.message << "\n";
                 return 3;
             }
             if (c.cheapest) c.cheapestRun = RunScene(d, *p, c.cheapest->ToAssignments(), nullptr, minCpu, repeats);
+            if (c.cheapest && !quick) {
+                c.margin = CheapestMeeting(rows, p->sweepProblem, p->sweepParam, budget / kSafety);
+                if (c.margin == c.cheapest)
+                    c.marginRun = c.cheapestRun;
+                else if (c.margin)
+                    c.marginRun = RunScene(d, *p, c.margin->ToAssignments(), nullptr, minCpu, repeats);
+            }
             std::fprintf(stderr, "%s budget %g: auto %s, %lld steps to %g s, error %s (%s)%s\n", p->name.c_str(),
                          budget, c.autoRun.refused ? "refused" : c.autoRun.chosen.c_str(), c.autoRun.steps,
                          c.autoRun.simSeconds, Num(c.autoRun.error).c_str(), Verdict(c).c_str(),

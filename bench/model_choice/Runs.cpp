@@ -48,7 +48,7 @@ bool Apply(ParameterSet* set, const Assignments& assignments, std::string* messa
 
 /// One run, not repeated. `sweepSteps` > 0: that many steps of the scene's step, no frames (RunSweepStyle).
 RunResult RunOnce(const SceneDescription& description, const ReferenceProblem& problem, const Assignments& assignments,
-                  const AutoModelRequest* request, long long sweepSteps) {
+                  const AutoModelRequest* request, long long sweepSteps, const ChoiceSettings& tuning = {}) {
     RunResult r;
     FileScene scene(description);
     ParameterSet set;
@@ -74,7 +74,7 @@ RunResult RunOnce(const SceneDescription& description, const ReferenceProblem& p
     const double cpu0 = sweep::CpuNow();
     if (request != nullptr) {
         std::string error;
-        if (!autoModel.Choose(&set, scene.System(), hostStep, duration, *request, &error)) {
+        if (!autoModel.Choose(&set, scene.System(), hostStep, duration, *request, &error, tuning)) {
             r.cpuSeconds = sweep::CpuNow() - cpu0;
             r.refused = true;
             r.message = error;
@@ -141,12 +141,13 @@ double HostStep(const SceneDescription& scene) {
 }
 
 RunResult RunScene(const SceneDescription& scene, const ReferenceProblem& problem, const Assignments& assignments,
-                   const AutoModelRequest* request, double minCpuSeconds, int maxRepeats) {
-    RunResult first = RunOnce(scene, problem, assignments, request, 0);
+                   const AutoModelRequest* request, double minCpuSeconds, int maxRepeats,
+                   const ChoiceSettings& tuning) {
+    RunResult first = RunOnce(scene, problem, assignments, request, 0, tuning);
     if (!first.ok) return first;
     double total = first.cpuSeconds;
     for (int i = 1; i < maxRepeats && total < minCpuSeconds; ++i) {
-        const RunResult again = RunOnce(scene, problem, assignments, request, 0);
+        const RunResult again = RunOnce(scene, problem, assignments, request, 0, tuning);
         total += again.cpuSeconds;
         if (again.cpuSeconds < first.cpuSeconds) {  // the fastest repeat's time and auto overhead
             first.cpuSeconds = again.cpuSeconds;

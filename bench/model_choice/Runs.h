@@ -44,8 +44,10 @@ double HostStep(const SceneDescription& scene);
 /// Runs `scene` for its duration with the assignments applied (the `--set` keys of FileScene::AddParameters), or,
 /// with `request`, with auto choosing the model. Repeats the run until `minCpuSeconds` of CPU have been spent (at
 /// most `maxRepeats` times) and keeps the smallest CPU time; the error is the first run's (runs are deterministic).
+/// `tuning` is auto's (its safety factor, for one).
 RunResult RunScene(const SceneDescription& scene, const ReferenceProblem& problem, const Assignments& assignments,
-                   const AutoModelRequest* request, double minCpuSeconds = 0.05, int maxRepeats = 20);
+                   const AutoModelRequest* request, double minCpuSeconds = 0.05, int maxRepeats = 20,
+                   const ChoiceSettings& tuning = {});
 
 /// Runs `scene` at a fixed step dt for round(seconds / dt) steps, exactly as the sweep steps its problems (no
 /// frames): the scene-file counterpart of a sweep row, for the equivalence check.

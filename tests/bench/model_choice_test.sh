@@ -25,18 +25,25 @@ fi
 # The small grid: auto within 3x the budget wherever it runs; a refusal only where the sweep has no setting either.
 "$bench" --quick --csv "$dir/quick.csv" --out "$dir/quick.md" >/dev/null 2>"$dir/quick.err" ||
   { cat "$dir/quick.err" >&2; fail "--quick exited $?"; }
-header='problem,sweep_problem,param,budget,quantity,auto_bound,refused,model,error,cpu_per_sim_s,overhead_cpu_s,switches,cheapest,cheapest_error,cheapest_cpu_per_sim_s,cost_ratio,own_quantity'
+header='problem,sweep_problem,param,budget,quantity,auto_bound,refused,model,error,cpu_per_sim_s,overhead_cpu_s,switches,cheapest,cheapest_error,cheapest_cpu_per_sim_s,cost_ratio,own_quantity,margin,margin_error,margin_cpu_per_sim_s'
 [ "$(head -n 1 "$dir/quick.csv")" = "$header" ] || fail "unexpected CSV header: $(head -n 1 "$dir/quick.csv")"
 [ "$(($(wc -l <"$dir/quick.csv") - 1))" -ge 6 ] || fail "fewer than 6 cases in the small grid"
 awk -F, 'NR > 1 {
-    if (NF != 17) { print "row " NR " has " NF " columns, not 17"; bad = 1 }
+    if (NF != 20) { print "row " NR " has " NF " columns, not 20"; bad = 1 }
     if ($7 == 1) { if ($13 != "-") { print $1 " at " $4 ": refused, but the sweep meets it with " $13; bad = 1 } }
     else if ($9 == "-" || $9 + 0 > 3 * $4) { print $1 " at " $4 ": auto error " $9 " is above 3x the budget (" $8 ")"; bad = 1 }
   } END { exit bad }' "$dir/quick.csv" || fail "accuracy above"
 grep -q 'within budget:' "$dir/quick.md" || fail "the report has no criteria"
 
+# --safety reaches auto: its explanation states the factor it chose with.
+"$bench" --problem projectile --budgets 0.1 --safety 1.5 --explain >/dev/null 2>"$dir/safety.err" ||
+  { cat "$dir/safety.err" >&2; fail "--safety 1.5 exited $?"; }
+grep -q 'safety factor 1.5;' "$dir/safety.err" || fail "--safety 1.5 did not reach auto: $(grep -m1 'safety factor' "$dir/safety.err")"
+
 # Bad usage is refused with exit 2.
 set +e
+"$bench" --safety 0.5 >/dev/null 2>&1; [ $? -eq 2 ] || fail "--safety 0.5 not refused with exit 2"
+"$bench" --safety nan >/dev/null 2>&1; [ $? -eq 2 ] || fail "--safety nan not refused with exit 2"
 "$bench" --budgets 0,-1 >/dev/null 2>&1; [ $? -eq 2 ] || fail "--budgets 0,-1 not refused with exit 2"
 "$bench" --problem nonesuch >/dev/null 2>&1; [ $? -eq 2 ] || fail "--problem nonesuch not refused with exit 2"
 exit 0
