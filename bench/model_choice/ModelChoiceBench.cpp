@@ -28,10 +28,6 @@ using namespace modelchoice;
 
 namespace {
 
-/// Auto's safety factor (a candidate meets a budget when safety * estimate <= budget): ChoiceSettings's, or
-/// --safety's.
-double kSafety = ChoiceSettings{}.safety;
-
 constexpr const char* kUsage =
     "usage: psb-model-choice-bench [--problem NAME]... [--budgets LIST] [--quick] [--check] [--out FILE.md]\n"
     "                              [--csv FILE.csv] [--scenes DIR] [--results FILE] [--explain] [--list]\n"
@@ -159,9 +155,9 @@ int Check(const std::vector<const ReferenceProblem*>& problems, const std::strin
 // ---- the validation.
 
 struct Case {
-    const ReferenceProblem* problem;
-    double budget;
-    double autoBound;
+    const ReferenceProblem* problem = nullptr;
+    double budget = 0.0;
+    double autoBound = 0.0;
     RunResult autoRun;
     const SweepRow* cheapest = nullptr;
     RunResult cheapestRun;
@@ -240,8 +236,9 @@ std::string Verdict(const Case& c) {
     return v;
 }
 
+/// The markdown report. `safety` is the factor auto ran with (its margin settings meet the budget over it).
 std::string Report(const std::vector<Case>& cases, const std::vector<ProblemRuns>& perProblem, bool quick,
-                   const std::string& command) {
+                   double safety, const std::string& command) {
     std::ostringstream md;
     char date[64];
     const std::time_t now = std::time(nullptr);
@@ -313,7 +310,7 @@ std::string Report(const std::vector<Case>& cases, const std::vector<ProblemRuns
                 marginUnder2 += c.MarginRatio() <= 2.0 ? 1 : 0;
                 autoOverMarginUnder2 += c.CostRatio() / c.MarginRatio() <= 2.0 ? 1 : 0;
             }
-        md << "- the safety factor's share: the cheapest sweep setting meeting the budget over " << Num(kSafety)
+        md << "- the safety factor's share: the cheapest sweep setting meeting the budget over " << Num(safety)
            << " (auto's safety factor; what auto would run, among the sweep's settings, if its estimates were exact "
               "and cost nothing) is within 2x of the cheapest meeting the budget in "
            << marginUnder2 << " / " << margined << " cases where auto ran; auto is within 2x of that setting in "
@@ -327,10 +324,10 @@ std::string Report(const std::vector<Case>& cases, const std::vector<ProblemRuns
                << (r.accurateRow ? r.accurateRow->Describe() : "none") << " | " << Num(r.accurate.error) << " | "
                << Num(r.accurate.cpuPerSimSecond) << " | " << Num(r.probeCpuSeconds) << " |\n";
         md << "\n**The safety factor's share of the cost** (the cheapest sweep setting meeting the budget over "
-           << Num(kSafety)
+           << Num(safety)
            << ", run side by side like the others; \"over the cheapest\": its CPU over the cheapest "
               "setting meeting the budget; \"auto over it\": auto's CPU, calibration included, over its CPU):\n\n";
-        md << "| problem | budget | cheapest meeting the budget / " << Num(kSafety)
+        md << "| problem | budget | cheapest meeting the budget / " << Num(safety)
            << " | its error here | its CPU s per s | over the cheapest | auto over it "
               "|\n|---|---|---|---|---|---|---|\n";
         for (const Case& c : cases) {
@@ -402,6 +399,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> names;
     std::vector<double> budgets{0.1, 0.01, 0.001};
     bool quick = false, check = false, budgetsGiven = false, explain = false;
+    ChoiceSettings tuning;  // auto's; --safety sets its safety factor
     std::string command = "psb-model-choice-bench";
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -430,7 +428,7 @@ int main(int argc, char** argv) {
         } else if (a == "--safety") {
             const std::vector<double> v = ParseList(value());
             if (v.size() != 1 || v[0] < 1.0) return Usage("--safety: one finite number of at least 1");
-            kSafety = v[0];
+            tuning.safety = v[0];
         } else if (a == "--out") {
             out = value();
         } else if (a == "--csv") {
@@ -458,8 +456,6 @@ int main(int argc, char** argv) {
     }
     if (check) return Check(problems, scenes, rows);
 
-    ChoiceSettings tuning;
-    tuning.safety = kSafety;
     const double minCpu = quick ? 0.0 : 0.05;
     const int repeats = quick ? 1 : 20;
     std::vector<Case> cases;
@@ -477,14 +473,11 @@ int main(int argc, char** argv) {
             perProblem.push_back(r);
         }
         for (double budget : budgets) {
-            Case c{p,
-                   budget,
-                   p->AutoBound(budget),
-                   {},
-                   CheapestMeeting(rows, p->sweepProblem, p->sweepParam, budget),
-                   {},
-                   nullptr,
-                   {}};
+            Case c;
+            c.problem = p;
+            c.budget = budget;
+            c.autoBound = p->AutoBound(budget);
+            c.cheapest = CheapestMeeting(rows, p->sweepProblem, p->sweepParam, budget);
             AutoModelRequest request;
             request.model = 1;
             request.tolerance = float(c.autoBound);
@@ -496,7 +489,7 @@ int main(int argc, char** argv) {
             }
             if (c.cheapest) c.cheapestRun = RunScene(d, *p, c.cheapest->ToAssignments(), nullptr, minCpu, repeats);
             if (c.cheapest && !quick) {
-                c.margin = CheapestMeeting(rows, p->sweepProblem, p->sweepParam, budget / kSafety);
+                c.margin = CheapestMeeting(rows, p->sweepProblem, p->sweepParam, budget / tuning.safety);
                 if (c.margin == c.cheapest)
                     c.marginRun = c.cheapestRun;
                 else if (c.margin)
@@ -515,7 +508,7 @@ int main(int argc, char** argv) {
             cases.push_back(std::move(c));
         }
     }
-    const std::string report = Report(cases, perProblem, quick, command);
+    const std::string report = Report(cases, perProblem, quick, tuning.safety, command);
     std::cout << report;
     if (!out.empty() && !Write(out, report)) return 3;
     if (!csvOut.empty() && !Write(csvOut, Csv(cases))) return 3;
