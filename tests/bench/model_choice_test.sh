@@ -35,6 +35,15 @@ awk -F, 'NR > 1 {
   } END { exit bad }' "$dir/quick.csv" || fail "accuracy above"
 grep -q 'within budget:' "$dir/quick.md" || fail "the report has no criteria"
 
+# Outside --quick each case also runs the cheapest sweep setting meeting the budget over the safety factor (2): its
+# error, re-measured here, is within half the budget (spring-phase at 0.1: the cheapest meeting 0.1 is 0.07 off).
+"$bench" --problem spring-phase --csv "$dir/margin.csv" >/dev/null 2>"$dir/margin.err" ||
+  { cat "$dir/margin.err" >&2; fail "--problem spring-phase exited $?"; }
+awk -F, 'NR > 1 {
+    if ($18 == "-" || $19 == "-") { print $1 " at " $4 ": no margin setting"; bad = 1 }
+    else if ($19 + 0 > $4 / 2) { print $1 " at " $4 ": margin " $18 " is " $19 " off, above half the budget"; bad = 1 }
+  } END { exit bad }' "$dir/margin.csv" || fail "margin settings above"
+
 # --safety reaches auto: its explanation states the factor it chose with.
 "$bench" --problem projectile --budgets 0.1 --safety 1.5 --explain >/dev/null 2>"$dir/safety.err" ||
   { cat "$dir/safety.err" >&2; fail "--safety 1.5 exited $?"; }
