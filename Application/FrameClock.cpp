@@ -90,3 +90,13 @@ void FrameClock::SetStep(const Rational& step) {
 }
 
 double FrameClock::FrameSeconds() const { return double(frames * frameTime.num) / double(frameTime.den); }
+
+double FrameClock::PhysicsSeconds() const { return FrameSeconds() - double(accumulator) / double(ticksPerSecond); }
+
+double FrameClock::LandOnFrameTime() {
+    if (accumulator == 0) return 0.0;
+    const double owed = double(accumulator) / double(ticksPerSecond);
+    accumulator = 0;
+    ++steps;
+    return owed;
+}

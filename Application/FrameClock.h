@@ -38,6 +38,13 @@ public:
     std::int64_t Steps() const { return steps; }
     /// Simulated seconds of output frames so far (frames * frameTime), rounded once.
     double FrameSeconds() const;
+    /// Simulated seconds the physics has reached: the frames' time less what is still owed in the accumulator
+    /// (the strict rule above leaves up to one step owed, so the physics lags the frames by (0, step]).
+    double PhysicsSeconds() const;
+    /// Ends a run on its frames' time: hands out what the accumulator still owes as one shortened step and
+    /// returns its length in seconds (0 when nothing is owed). After it PhysicsSeconds() == FrameSeconds()
+    /// (docs/app.md "Time").
+    double LandOnFrameTime();
     /// Time left in the accumulator, in ticks (0 <= remainder <= step).
     std::int64_t RemainderTicks() const { return accumulator; }
     std::int64_t TicksPerSecond() const { return ticksPerSecond; }

@@ -245,6 +245,7 @@ struct RunLoop {
     std::vector<BodyState> bodies;
     std::string rows;
     std::size_t nextOnly = 0;
+    int missedAt = -1;      ///< the frame from which an auto model's running estimate stayed over its budget
     double queueCpu = 0.0;  // main-thread CPU spent inside Push (serial mode: the encode itself)
 
     RunLoop(const Options& options, DemoWindow& w, DemoBase& d, RunOutputs& out, RunStats* s, float yaw)
@@ -299,8 +300,9 @@ void WatchModel(RunLoop& r, double time) {
     }
 }
 
-// The state checks and the --state rows of one frame; false with *failure (exit 3).
-bool CheckAndRecordState(RunLoop& r, int frame, double time, std::string* failure) {
+// The state checks and, when `record`, the --state rows of one frame at physics time `time`; false with *failure
+// (exit 3).
+bool CheckAndRecordState(RunLoop& r, int frame, double time, bool record, std::string* failure) {
     std::string where;
     bool finite = r.demo.StateIsFinite(&where);
     if (frame == r.o.debugNonFiniteAt) finite = false, where = "body -1 (injected by --debug-nonfinite-at)";
@@ -310,7 +312,7 @@ bool CheckAndRecordState(RunLoop& r, int frame, double time, std::string* failur
         *failure = head + where;
         return false;
     }
-    if (!r.outputs.state.IsOpen()) return true;
+    if (!record || !r.outputs.state.IsOpen()) return true;
     r.bodies.clear();
     r.demo.CollectState(&r.bodies);
     r.rows.clear();
@@ -350,6 +352,23 @@ bool QueueFrame(RunLoop& r, int frame, bool selected) {
     return queued;
 }
 
+// After the last frame is drawn: the step the strict accumulator still owes, shortened, so the physics ends at the
+// run's time (docs/app.md "Time"). The frame was drawn before it, so every picture stays the book's.
+void LandOnRunTime(RunLoop& r) {
+    const double owed = r.clock.LandOnFrameTime();
+    if (owed > 0.0) r.window.OnFixedUpdate(float(owed));
+}
+
+// An auto model whose running estimate is over its budget: the frame where it went over and stayed (exit 4 at the
+// end unless a later model brings it back).
+void TrackBudget(RunLoop& r, int frame) {
+    if (r.autoModel == nullptr) return;
+    if (r.autoModel->RunningEstimate() <= r.autoModel->Request().tolerance)
+        r.missedAt = -1;
+    else if (r.missedAt < 0)
+        r.missedAt = frame;
+}
+
 /// One output frame. False ends the run: *failure set for exit 3 (empty when a queued job failed).
 bool RunFrame(RunLoop& r, int frame, std::string* failure) {
     const Clock::time_point renderStart = Clock::now();
@@ -357,9 +376,10 @@ bool RunFrame(RunLoop& r, int frame, std::string* failure) {
     std::string report;
     const bool blownUp = r.demo.Unstable(&report);
     SimulateFrame(r, frame);
-    const double time = r.clock.FrameSeconds();  // simulated time of this frame's state
-    if (r.autoModel != nullptr) WatchModel(r, time);
-    if (!CheckAndRecordState(r, frame, time, failure)) {
+    if (r.autoModel != nullptr) WatchModel(r, r.clock.PhysicsSeconds());
+    const bool last = frame + 1 == r.o.frames;
+    // The last frame's row waits for the landing step below; its state is checked before it is drawn all the same.
+    if (!CheckAndRecordState(r, frame, r.clock.PhysicsSeconds(), !last, failure)) {
         if (!r.o.noUi) ImGui::EndFrame();
         return false;
     }
@@ -371,6 +391,11 @@ bool RunFrame(RunLoop& r, int frame, std::string* failure) {
         *failure = "frame " + std::to_string(frame) + ": unstable simulation, stopped: " + report;
         return false;
     }
+    if (last) {
+        LandOnRunTime(r);
+        if (!CheckAndRecordState(r, frame, r.clock.PhysicsSeconds(), true, failure)) return false;
+    }
+    TrackBudget(r, frame);
     return true;
 }
 
@@ -381,7 +406,7 @@ int RunFrames(RunLoop& r, Clock::time_point wallStart) {
     bool ok = true;
     for (int frame = 0; ok && frame < r.o.frames; ++frame) {
         ok = RunFrame(r, frame, &failure);
-        if (ok) r.progress.Frame(frame + 1, r.clock.FrameSeconds(), Since(wallStart));
+        if (ok) r.progress.Frame(frame + 1, r.clock.PhysicsSeconds(), Since(wallStart));
     }
     std::string report;
     if (ok && r.demo.Unstable(&report))  // blew up during the last frame's steps
@@ -395,12 +420,23 @@ int RunFrames(RunLoop& r, Clock::time_point wallStart) {
 void FillStats(const RunLoop& r, Clock::time_point wallStart, double processCpuStart, RunStats* stats) {
     stats->frames = int(r.clock.Frames());
     stats->steps = r.clock.Steps();
-    stats->simulatedSeconds = r.clock.FrameSeconds();
+    stats->simulatedSeconds = r.clock.PhysicsSeconds();
     stats->encodeSeconds = r.outputs.results.encodeSeconds;
     stats->encodeCpuSeconds = r.outputs.results.encodeCpuSeconds;
     stats->processCpuSeconds = CpuSeconds(CLOCK_PROCESS_CPUTIME_ID) - processCpuStart;
     stats->waitSeconds = r.outputs.queue.ProducerWaitSeconds();
     stats->wallSeconds = Since(wallStart);
+}
+
+// The run ended with an auto model's running estimate over its budget (TrackBudget): exit 4, or 1 when a golden
+// comparison also failed (a mismatch is the older, more specific report). Outputs are already complete.
+int ReportMissedBudget(const RunLoop& r, int code) {
+    const AutoModel& model = *r.autoModel;
+    std::fprintf(stderr,
+                 "physics-sandbox: %s: ran, but missed its error budget: the running estimate %.3g went over the "
+                 "budget %.3g at frame %d and no finer model brought it back (outputs written; exit 4)\n",
+                 r.o.demo.c_str(), model.RunningEstimate(), double(model.Request().tolerance), r.missedAt);
+    return code == kExitOk ? kExitMissedBudget : code;
 }
 
 void PrintSummary(const Options& o, const RunStats& s, const std::string& frameDir, const DemoBase& demo) {
@@ -511,6 +547,7 @@ int RunUnguarded(const Options& given, RunStats* stats) {
     FillStats(loop, wallStart, processCpuStart, stats);
     if (code == kExitOk || code == kExitMismatch) code = outputs.ReportComparisons(code);
     if (!o.quiet && code != kExitFailure) PrintSummary(o, *stats, outputs.FrameDir(), demo);
+    if ((code == kExitOk || code == kExitMismatch) && loop.missedAt >= 0) return ReportMissedBudget(loop, code);
     return code;
 }
 

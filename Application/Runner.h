@@ -27,7 +27,9 @@ struct RunStats {
 };
 
 /// Exit codes of physics-sandbox.
-enum ExitCode { kExitOk = 0, kExitMismatch = 1, kExitUsage = 2, kExitFailure = 3 };
+/// Exit codes of physics-sandbox (docs/app.md "Exit codes"). kExitMissedBudget: the run finished and wrote its
+/// outputs, but an auto model's running estimate ended over its budget.
+enum ExitCode { kExitOk = 0, kExitMismatch = 1, kExitUsage = 2, kExitFailure = 3, kExitMissedBudget = 4 };
 
 /// Runs one parsed command line (Mode::Run). Returns an ExitCode; messages go to stderr. Out of memory is
 /// exit 3 with a message, the run's partial output removed.

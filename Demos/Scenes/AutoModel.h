@@ -47,6 +47,8 @@ public:
     void AfterFrame(ParameterSet* params, const PhysicsSystem& world, double time);
 
     bool Active() const { return active; }
+    /// The budget asked for (its bound is `tolerance`, in the quantity's unit).
+    const AutoModelRequest& Request() const { return request; }
     const ModelChoiceResult& Choice() const { return choice; }
     const ModelCandidate& Current() const;
     /// The running estimate at the end of the run (budget unit); the calibration's until the first check.

@@ -81,3 +81,23 @@ TEST(FrameClock, SetStepKeepsTheAccumulatedTimeExactly) {
     EXPECT_EQ(clock.TicksPerSecond(), tps);
     EXPECT_EQ(clock.StepTicks(), 300);
 }
+
+TEST(FrameClock, PhysicsTimeLagsByTheOwedStepAndLandsOnTheFramesTime) {
+    // Step 0.1 s at 60 frames per second: after 90 frames (1.5 s) the strict rule has run 14 steps (1.4 s) and
+    // owes 0.1 s; landing hands it out as a 15th step and the physics is at 1.5 s.
+    FrameClock clock({1, 60}, {1, 10});
+    for (int i = 0; i < 90; ++i) clock.AdvanceFrame();
+    EXPECT_EQ(clock.Steps(), 14);
+    EXPECT_NEAR(clock.PhysicsSeconds(), 1.4, 1e-12);
+    EXPECT_NEAR(clock.LandOnFrameTime(), 0.1, 1e-12);
+    EXPECT_EQ(clock.Steps(), 15);
+    EXPECT_DOUBLE_EQ(clock.PhysicsSeconds(), clock.FrameSeconds());
+    EXPECT_EQ(clock.LandOnFrameTime(), 0.0);  // nothing owed any more
+    EXPECT_EQ(clock.Steps(), 15);
+    // The book's step: 91 frames (455 ticks of 1/300 s) run 50 steps and owe 5 ticks; the landing step is 5 ticks.
+    FrameClock book({1, 60}, {3, 100});
+    for (int i = 0; i < 91; ++i) book.AdvanceFrame();
+    EXPECT_NEAR(book.PhysicsSeconds(), 1.5, 1e-12);
+    EXPECT_NEAR(book.LandOnFrameTime(), 5.0 / 300.0, 1e-12);
+    EXPECT_NEAR(book.PhysicsSeconds(), 91.0 / 60.0, 1e-12);
+}

@@ -1,7 +1,8 @@
 // One stepping contract for every demo: the physics step (--set dt= for demos with a dt parameter, --dt for the
 // others) changes accuracy, never the speed of simulated time. Each demo runs at the book's 0.03 s and at 0.01 s;
-// the --state CSV's time column must be the simulated time of the frame (frames * 1/60 s, the same in both runs),
-// and the body that moved furthest must be where the coarse run has it, within the error a 0.03 s step allows.
+// the --state CSV's time column must be the physics time of the state it holds (the whole steps the strict
+// accumulator handed out, and the run's time, frames * 1/60 s, on the last row), and the body that moved furthest
+// must be where the coarse run has it, within the error a 0.03 s step allows.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -53,6 +54,16 @@ std::vector<Row> ReadState(const std::string& path) {
         rows.push_back(r);
     }
     return rows;
+}
+
+/// The physics time of frame `frame`'s row at step `step` (0.03 or 0.01 s): in ticks of 1/300 s a frame is 5 and the
+/// step 9 or 3; the strict accumulator runs n = ceil(owed / step) - 1 whole steps, and the last row lands on the
+/// frames' time (docs/app.md "Time").
+double PhysicsTimeOfRow(int frame, double step, bool last) {
+    const long long owed = 5LL * (frame + 1);
+    if (last) return double(owed) / 300.0;
+    const long long stepTicks = step == kCoarseStep ? 9 : 3;
+    return double((owed - 1) / stepTicks * stepTicks) / 300.0;
 }
 
 /// True if the demo has a `dt` parameter (--params lists "  dt = ...").
@@ -107,11 +118,16 @@ TEST(Stepping, EveryDemoKeepsSimulatedTimeAtTwoSteps) {
         ASSERT_EQ(coarse.size(), fine.size()) << id;
         if (coarse.empty()) continue;  // raycast and collision-features simulate no bodies: nothing to time
 
-        // The time column is the simulated time of the frame, whatever the step: (frame + 1) frames of 1/60 s.
+        // The time column is the physics time of the row's state; both runs end at the same time, the frames'.
         for (std::size_t i = 0; i < coarse.size(); ++i) {
-            const double expected = (coarse[i].frame + 1) * kFrameTime;
-            ASSERT_NEAR(coarse[i].time, expected, 1e-8) << id << " frame " << coarse[i].frame;
-            ASSERT_EQ(fine[i].time, coarse[i].time) << id << " frame " << fine[i].frame;
+            const bool last = coarse[i].frame == kFrames - 1;
+            ASSERT_NEAR(coarse[i].time, PhysicsTimeOfRow(coarse[i].frame, kCoarseStep, last), 1e-8)
+                << id << " frame " << coarse[i].frame;
+            ASSERT_NEAR(fine[i].time, PhysicsTimeOfRow(fine[i].frame, kFineStep, last), 1e-8)
+                << id << " frame " << fine[i].frame;
+            if (last) {
+                ASSERT_NEAR(coarse[i].time, kFrames * kFrameTime, 1e-8) << id;
+            }
         }
 
         // The body that moved furthest by the last frame (the falling or thrown one) is where the coarse run has
@@ -143,4 +159,28 @@ TEST(Stepping, EveryDemoKeepsSimulatedTimeAtTwoSteps) {
         ++compared;
     }
     EXPECT_GE(compared, 7) << "every demo with bodies must be compared";
+}
+
+TEST(Stepping, TheLastRowHoldsThePhysicsAtTheRunsTime) {
+    // A projectile at 0.1 s steps for 1.5 s (90 frames): the book's strict accumulator alone would leave the
+    // physics at 1.4 s, 1.26 m short of x(1.5) in this scene. Velocity Verlet is exact for a constant force, so the
+    // last row must be the exact x(t), y(t) at its own time, and that time must be 1.5 s.
+    const std::string dir = ScratchDir("stepping_last_row");
+    const std::string scene = dir + "/projectile.json";
+    std::ofstream(scene) << R"({"format": 1, "name": "projectile", "duration": 1.5,
+        "world": {"step": 0.1, "integrator": "velocity-verlet"},
+        "bodies": [{"id": "ball", "type": "particle", "position": [0, 1, 0], "velocity": [12.6, 9.5, 0],
+                    "mass": 1, "velocityRetention": 1}]})";
+    const std::string csv = dir + "/projectile.csv";
+    const SandboxResult r = RunSandboxExe({"--scene", scene, "--no-ui", "--state", csv});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("1.500 simulated s, 15 steps"), std::string::npos) << r.err;
+    const std::vector<Row> rows = ReadState(csv);
+    ASSERT_EQ(rows.size(), 90u);
+    const Row& last = rows.back();
+    EXPECT_NEAR(last.time, 1.5, 1e-8);
+    EXPECT_NEAR(last.x, 12.6 * last.time, 1e-4);
+    EXPECT_NEAR(last.y, 1.0 + 9.5 * last.time - 0.5 * kGravity * last.time * last.time, 1e-4);
+    // Every earlier row is where its own time says too (exact integrator: any lag would show as an offset).
+    for (const Row& row : rows) EXPECT_NEAR(row.x, 12.6 * row.time, 1e-4) << "frame " << row.frame;
 }
