@@ -41,6 +41,8 @@ CH14Demo::CH14Demo() {
     params.AddChoice("integrator", &integratorIndex, ids, "particle integrator (book: euler)",
                      [this] { scene.SetIntegrator(kAllIntegrators[integratorIndex]); });
     params.AddFloat("dt", &stepDt, 0.0f, kMaxSceneDt, "physics step in s; 0 = the host's fixed step (book: 0.03)");
+    AddParticleContactParameter(&params, &contactIndex,
+                                [this] { scene.SetParticleContact(ParticleContactAt(contactIndex)); });
     params.AddInt("seed", &seed, 0, 2147483647, "MSVC rand() seed of the spawns (book: 1); on reset", resetIfFresh);
     AddShowHelpButton();
     AddAutoModelKeys();
@@ -52,6 +54,7 @@ void CH14Demo::ResetDemo() {
     p.integrator = kAllIntegrators[integratorIndex];
     p.dt = stepDt > 0.0f ? stepDt : Ch14Params().dt;
     p.seed = static_cast<std::uint32_t>(seed);
+    p.particleContact = ParticleContactAt(contactIndex);
     scene.Reset(p);
 }
 

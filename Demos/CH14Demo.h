@@ -40,6 +40,7 @@ private:
     Ch14Scene scene;
     int particleCount = Ch14Params().particleCount;
     int integratorIndex = static_cast<int>(Ch14Params().integrator);  // index into kAllIntegrators
+    int contactIndex = 0;                                             // index of the "particle-contact" choice (book)
     float stepDt = 0.0f;                                              // 0: the host's fixed step
     int seed = static_cast<int>(Ch14Params().seed);
     std::deque<float> deltas;  // the last 120 fixed deltas (ms), as the book's deque

@@ -93,16 +93,34 @@ inline bool SegmentMissesBounds(const vec3& a, const vec3& b, const ParticleCons
 
 }  // namespace
 
-ParticleConstraint PrepareParticleConstraint(const OBB& box) {
+const char* ToString(ParticleContact contact) { return contact == ParticleContact::Skin ? "skin" : "book"; }
+
+bool ParseParticleContact(const std::string& text, ParticleContact* out) {
+    for (ParticleContact c : {ParticleContact::Book, ParticleContact::Skin})
+        if (text == ToString(c)) {
+            *out = c;
+            return true;
+        }
+    return false;
+}
+
+ParticleConstraint PrepareParticleConstraint(const OBB& box, ParticleContact contact) {
     ParticleConstraint c;
     c.box = box;
-    const float* m = box.orientation.asArray;
+    if (contact == ParticleContact::Skin) {
+        // The surface a particle rests on is kContactOffset out, as in the book, but it is the surface tested, so a
+        // hit moves the particle back only along the step it took (docs/ch14.md "Contact that converges").
+        const float skin = Particle::kContactOffset;
+        c.box.size = vec3(std::fabs(box.size.x) + skin, std::fabs(box.size.y) + skin, std::fabs(box.size.z) + skin);
+        c.placement = 0.0f;
+    }
+    const float* m = c.box.orientation.asArray;
     for (int w = 0; w < 3; ++w) {
         // World half-extent along axis w: sum over local axes of |axis_i[w]| * size_i.
         float extent = 0.0f;
-        for (int i = 0; i < 3; ++i) extent += std::fabs(m[3 * i + w]) * std::fabs(box.size[i]);
-        c.boundsMin[w] = box.position[w] - extent;
-        c.boundsMax[w] = box.position[w] + extent;
+        for (int i = 0; i < 3; ++i) extent += std::fabs(m[3 * i + w]) * std::fabs(c.box.size[i]);
+        c.boundsMin[w] = c.box.position[w] - extent;
+        c.boundsMax[w] = c.box.position[w] + extent;
     }
     return c;
 }
@@ -125,26 +143,31 @@ void Particle::SolveConstraints(const std::vector<OBB>& constraints) {
     for (const OBB& box : constraints)
         if (ClipSegment(box, oldPosition, delta, &hit) && hit.t < best.t) best = hit;
     if (best.t == FLT_MAX) return;
-    ResolveHit(best.point, best.normal);
+    ResolveHit(best.point, best.normal, kContactOffset);
 }
 
 void Particle::SolveConstraints(const ParticleConstraint* constraints, std::size_t count) {
     SegmentHit best, hit;
+    float placement = kContactOffset;
     const vec3 delta(position.x - oldPosition.x, position.y - oldPosition.y, position.z - oldPosition.z);
     for (std::size_t i = 0; i < count; ++i) {
         if (SegmentMissesBounds(oldPosition, position, constraints[i])) continue;
-        if (ClipSegment(constraints[i].box, oldPosition, delta, &hit) && hit.t < best.t) best = hit;
+        if (!ClipSegment(constraints[i].box, oldPosition, delta, &hit) || !(hit.t < best.t)) continue;
+        // The skin's particle rests on the tested surface itself, so its next segment starts on it (inside, to
+        // rounding): leaving through that face is no hit, or it could never lift off.
+        if (constraints[i].placement == 0.0f && hit.t < 0.0f && Dot3(delta, hit.normal) > 0.0f) continue;
+        best = hit;
+        placement = constraints[i].placement;
     }
     if (best.t == FLT_MAX) return;
-    ResolveHit(best.point, best.normal);
+    ResolveHit(best.point, best.normal, placement);
 }
 
-void Particle::ResolveHit(const vec3& point, const vec3& normal) {
+void Particle::ResolveHit(const vec3& point, const vec3& normal, float offset) {
     // Book: place the particle just off the surface, reflect the normal part of the velocity with `bounce`
     // and keep the tangential part. Only an approaching normal part is reflected (a particle pushed out of a
     // box while already leaving keeps its velocity). oldPosition = position: the next segment starts here.
-    position = vec3(point.x + normal.x * kContactOffset, point.y + normal.y * kContactOffset,
-                    point.z + normal.z * kContactOffset);
+    position = vec3(point.x + normal.x * offset, point.y + normal.y * offset, point.z + normal.z * offset);
     oldPosition = position;
     const float vn = Dot3(velocity, normal);
     if (vn < 0.0f) {

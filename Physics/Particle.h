@@ -4,19 +4,37 @@
 // (0.03 s), not contact friction (docs/STYLE.md, "Renames in the engine").
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "Physics/Geometry/Geometry3D.h"
 #include "Physics/Integrator.h"
 #include "Physics/Rigidbody.h"
 
+/// How a particle meets an OBB constraint (WorldSettings::particleContact; docs/ch14.md "Contact that converges").
+enum class ParticleContact {
+    /// The book's: the segment is tested against the box and the particle put Particle::kContactOffset off the
+    /// surface. Each hit lifts it by that offset with no energy taken for it, so a particle at rest keeps hopping
+    /// (a limit cycle of about sqrt(2 g offset / (1 - e^2)) m/s) whatever the step: its error does not shrink.
+    Book,
+    /// The box is inflated by kContactOffset and the particle put on the inflated surface where it crossed it: the
+    /// same resting height, no lift beyond the step's own travel, so it converges as the step shrinks.
+    Skin,
+};
+/// "book" or "skin".
+const char* ToString(ParticleContact contact);
+/// Parses an id from ToString; false (output untouched) for anything else.
+bool ParseParticleContact(const std::string& text, ParticleContact* out);
+
 /// An OBB constraint prepared once per step for particle tests: its world AABB (a cheap reject) and the box.
 struct ParticleConstraint {
     OBB box;
     vec3 boundsMin, boundsMax;
+    float placement = 0.003f;  ///< m off the tested surface a hit particle is put (Particle::kContactOffset, or 0)
 };
-/// Copies the box and computes its world-space AABB (half-extents projected on the world axes).
-ParticleConstraint PrepareParticleConstraint(const OBB& box);
+/// Copies the box and computes its world-space AABB (half-extents projected on the world axes). With
+/// ParticleContact::Skin the box is inflated by Particle::kContactOffset on every side and hits are placed on it.
+ParticleConstraint PrepareParticleConstraint(const OBB& box, ParticleContact contact = ParticleContact::Book);
 
 class Particle : public Rigidbody {
 public:
@@ -77,5 +95,5 @@ protected:
     float mass = 1.0f;
 
 private:
-    void ResolveHit(const vec3& point, const vec3& normal);
+    void ResolveHit(const vec3& point, const vec3& normal, float offset);
 };

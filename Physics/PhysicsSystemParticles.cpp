@@ -25,7 +25,7 @@ void PhysicsSystem::SolveParticleConstraints() {
     if (!constraints.empty()) {
         if (preparedConstraints.size() != constraints.size()) preparedConstraints.resize(constraints.size());
         for (std::size_t i = 0; i < constraints.size(); ++i)
-            preparedConstraints[i] = PrepareParticleConstraint(constraints[i]);
+            preparedConstraints[i] = PrepareParticleConstraint(constraints[i], settings.particleContact);
         for (Particle* p : particles) p->SolveConstraints(preparedConstraints.data(), preparedConstraints.size());
     }
     // Joints move their particles and re-solve them against `constraints` themselves.

@@ -8,6 +8,7 @@
 
 #include "Physics/ContactSolver.h"
 #include "Physics/Integrator.h"
+#include "Physics/Particle.h"
 
 /// The book's fixed step, s (GetFixedFPS()/1000, docs/book-reference.md §1.2). The per-step factors the book
 /// defines (a particle's velocity retention 0.95) are defined at this step.
@@ -44,6 +45,10 @@ struct WorldSettings {
     /// s: the step at which Particle::velocityRetention is defined (book: 0.03, its fixed step). A step of dt
     /// retains velocityRetention^(dt / particleRetentionStep), the same fraction per second.
     float particleRetentionStep = kBookStep;
+    /// How free and cloth particles meet OBB constraints (Particle.h). Book: ParticleContact::Book, whose resting
+    /// particles hop by a step-independent amount; Skin converges as the step shrinks. Jointed particles keep the
+    /// book's contact (DistanceJoint re-solves them against the raw boxes).
+    ParticleContact particleContact = ParticleContact::Book;
 
     // ---- rigid volumes (ch15)
     /// How contact impulses are solved (ContactSolver.h). Book: its per-contact solver.

@@ -199,6 +199,12 @@ bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double 
     const ErrorBudget budget = r.Budget();
     if (!ValidateBudget(budget, error)) return false;
     hostStep = step;
+    // Step doubling needs a model that converges as its step shrinks: the book's particle contact does not (a resting
+    // particle hops by a step-independent amount), so an auto run uses its convergent form, the skin, before any
+    // probe is made (docs/model-choice.md "Particle contact").
+    if (params->Find("particle-contact") != nullptr && params->Get("particle-contact") != "skin" &&
+        !params->Set("particle-contact", "skin", error))
+        return false;
     space = SpaceOf(*params, world, hostStep);
     settings = tuning;
     settings.runSeconds = runSeconds;

@@ -21,6 +21,7 @@ void Ch14Scene::Reset(const Ch14Params& p) {
     if (!(params.dt > 0.0f) || !std::isfinite(params.dt)) params.dt = Ch14Params().dt;
     system = std::make_unique<PhysicsSystem>();
     system->settings.integrator = params.integrator;
+    system->settings.particleContact = params.particleContact;
     for (const OBB& box : Constraints()) system->AddConstraint(box);
 
     bodies.clear();
@@ -55,4 +56,9 @@ void Ch14Scene::Step(float dt) {
 void Ch14Scene::SetIntegrator(Integrator integrator) {
     params.integrator = integrator;
     system->settings.integrator = integrator;
+}
+
+void Ch14Scene::SetParticleContact(ParticleContact contact) {
+    params.particleContact = contact;
+    system->settings.particleContact = contact;
 }

@@ -15,7 +15,8 @@
 /// The demo's panel and model values (--set particles=, integrator=, dt=, seed=).
 struct Ch14Params {
     int particleCount = 50;  ///< the book's numParticles (the panel's range is CH14Demo's table; benchmarks go beyond)
-    Integrator integrator = Integrator::SemiImplicitEuler;  ///< the book's shipped integrator
+    Integrator integrator = Integrator::SemiImplicitEuler;    ///< the book's shipped integrator
+    ParticleContact particleContact = ParticleContact::Book;  ///< how particles meet the boards (book)
     /// s: the physics step the demo asks its host for (book: 0.03, erratum 5.2-16); Step(dt) takes the step.
     float dt = kBookStep;
     std::uint32_t seed = 1;  ///< MsvcRand seed; the book never seeds (1)
@@ -35,6 +36,8 @@ public:
     void Step(float dt);
     /// Switches the integrator without a reset (the particles keep their state).
     void SetIntegrator(Integrator integrator);
+    /// Switches how particles meet the boards without a reset (WorldSettings::particleContact).
+    void SetParticleContact(ParticleContact contact);
 
     const Ch14Params& Params() const { return params; }
     PhysicsSystem& System() { return *system; }

@@ -37,6 +37,7 @@ void Ch16Scene::Reset() {
 void Ch16Scene::Build() {
     system = std::make_unique<PhysicsSystem>();
     system->settings.integrator = params.integrator;
+    system->settings.particleContact = stepping.Contact();
     cloth = std::make_unique<Cloth>();
     cloth->Initialize(params.particlesPerSide, params.particleSpacing, vec3(0.0f, kClothHeight, 0.0f));
     const float k = FromBookSpringConstant(params.springK);
@@ -73,4 +74,5 @@ void Ch16Scene::AddParameters(ParameterSet* set) {
         .Alias("damping");
     set->AddAction("reset", reset, "rebuild the scene with the panel values").OnPanel(Widget::Button("Reset"));
     stepping.AddParameters(set, &params.dt, reset);
+    stepping.AddContactParameter(set, [this] { system->settings.particleContact = stepping.Contact(); });
 }

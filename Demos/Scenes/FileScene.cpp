@@ -5,6 +5,7 @@
 #include <iterator>
 
 #include "Demos/Scenes/ContactSolverParameters.h"
+#include "Demos/Scenes/SoftSceneCommon.h"
 #include "Demos/Scenes/WorldBuilder.h"
 
 namespace {
@@ -49,6 +50,11 @@ void FileScene::AddParameters(ParameterSet* set) {
     std::vector<std::string> integrators;
     for (Integrator i : kAllIntegrators) integrators.emplace_back(ToString(i));
     set->AddChoice("integrator", &integratorChoice, integrators, "how particles are integrated", apply);
+    contactChoice = w.particleContact == ParticleContact::Skin ? 1 : 0;
+    AddParticleContactParameter(set, &contactChoice, [this] {
+        description.world.particleContact = ParticleContactAt(contactChoice);
+        ApplyWorldSettings();
+    });
     AddContactSolverParameters(set, &solverChoice, &w.soft, &w.sleep.enabled,
                                "contact solver: the book's per-contact impulses, accumulated impulses or the soft step",
                                apply);
@@ -87,6 +93,7 @@ void FileScene::ApplyWorldSettings() {
     const SceneWorld& w = description.world;
     WorldSettings& s = system->settings;
     s.integrator = w.integrator;
+    s.particleContact = w.particleContact;
     s.contactSolver = w.contactSolver;
     s.solverIterations = w.iterations;
     s.penetrationSlop = w.penetrationSlop;

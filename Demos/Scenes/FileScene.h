@@ -55,6 +55,7 @@ private:
 
     SceneDescription description;
     int integratorChoice = 0;  // index into kAllIntegrators, mirrors description.world.integrator
+    int contactChoice = 0;     // the "particle-contact" choice (0 book, 1 skin)
     int solverChoice = 0;      // index of ContactSolverChoices(), mirrors description.world.contactSolver
     std::unique_ptr<PhysicsSystem> system;
     std::vector<Particle> particles;       // never resized after Reset: the system and springs point in

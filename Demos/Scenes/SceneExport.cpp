@@ -78,6 +78,7 @@ SceneDescription DescribeWorld(const PhysicsSystem& system, const std::string& n
     d.name = name;
     const WorldSettings& s = system.settings;
     d.world.integrator = s.integrator;
+    d.world.particleContact = s.particleContact;
     d.world.contactSolver = s.contactSolver;
     d.world.iterations = s.solverIterations;
     d.world.penetrationSlop = s.penetrationSlop;
@@ -245,6 +246,8 @@ std::string WriteSceneText(const SceneDescription& d) {
                   {"warmStartFactor", J(w.warmStartFactor)},
                   {"baumgarte", J(w.baumgarte)},
                   {"restitutionThreshold", J(w.restitutionThreshold)}};
+    // Only a non-book contact is written, so exports of the book's scenes stay as they were.
+    if (w.particleContact != ParticleContact::Book) world["particleContact"] = ToString(w.particleContact);
     if (w.step > 0.0f) world["step"] = J(w.step);
     // Written only where they differ from the defaults (docs/scenes.md, "Export").
     if (const Json soft = SoftObject(w.soft); !soft.empty()) world["soft"] = soft;

@@ -245,6 +245,10 @@ void ReadWorld(const Json& j, SceneWorld* w, Problems* problems) {
                       &j.at("integrator"));
     }
     name.clear();
+    r.String("particleContact", &name);
+    if (!name.empty() && !ParseParticleContact(name, &w->particleContact))
+        problems->Add("world.particleContact", "is not a particle contact (book, skin)", &j.at("particleContact"));
+    name.clear();
     r.String("contactSolver", &name);
     if (!name.empty() && !ParseContactSolver(name, &w->contactSolver)) {
         problems->Add("world.contactSolver", "is not a contact solver (" + ContactSolverIds() + ")",

@@ -12,6 +12,7 @@
 #include "Math/vectors.h"
 #include "Physics/ContactSolver.h"
 #include "Physics/Integrator.h"
+#include "Physics/Particle.h"
 #include "Physics/WorldSettings.h"
 
 /// Documented limits of one scene file (docs/scenes.md, "Limits"); larger files or counts are errors.
@@ -36,6 +37,7 @@ struct SceneWorld {
     vec3 gravity{0.0f, -9.82f, 0.0f};  ///< m/s^2, applied to every body and cloth particle
     float step = 0.0f;                 ///< s, the physics step; 0 = the host's (--dt, book 0.03)
     Integrator integrator = Integrator::SemiImplicitEuler;
+    ParticleContact particleContact = ParticleContact::Book;  ///< how particles meet boxes (Physics/Particle.h)
     ContactSolver contactSolver = ContactSolver::Book;
     int iterations = 5;             ///< solver passes per (sub)step
     float penetrationSlop = 0.01f;  ///< m

@@ -37,6 +37,15 @@ void AddStepParameters(ParameterSet* set, int* integratorIndex, float* dt, const
                   "physics step in s (book: 0.03); the host runs whole steps of it");
 }
 
+void AddParticleContactParameter(ParameterSet* set, int* index, const std::function<void()>& apply) {
+    set->AddChoice("particle-contact", index, {ToString(ParticleContact::Book), ToString(ParticleContact::Skin)},
+                   "how particles meet boxes: book (put 3 mm off the surface: resting particles keep hopping at any "
+                   "step) or skin (the same 3 mm, converges as the step shrinks)",
+                   apply);
+}
+
+ParticleContact ParticleContactAt(int index) { return index == 1 ? ParticleContact::Skin : ParticleContact::Book; }
+
 void ClampAboveFloor(std::vector<Particle>* particles, float floorY) {
     for (Particle& particle : *particles) {
         const vec3 pos = particle.GetPosition();

@@ -25,6 +25,12 @@ constexpr float kMaxSceneDt = 0.1f;
 /// is the step the host runs (DemoBase::PhysicsStep).
 void AddStepParameters(ParameterSet* set, int* integratorIndex, float* dt, const std::function<void()>& onChange);
 
+/// Registers "particle-contact" (book|skin, bound to *index) on *set: how free and cloth particles meet their
+/// boxes (ParticleContact, docs/ch14.md "Contact that converges"). `apply` puts the choice into the world at once.
+void AddParticleContactParameter(ParameterSet* set, int* index, const std::function<void()>& apply);
+/// The ParticleContact at an index of that choice (book for anything else).
+ParticleContact ParticleContactAt(int index);
+
 /// The "integrator" choice behind a chapter 16 scene's panel. The scene owns its params; this holds the rest.
 /// Host time is not accumulated here: the host runs whole physics steps of the scene's dt (DemoBase::PhysicsStep).
 class SoftSceneStepping {
@@ -37,9 +43,15 @@ public:
     void AddParameters(ParameterSet* set, float* dt, const std::function<void()>& onChange) {
         AddStepParameters(set, &integratorIndex, dt, onChange);
     }
+    /// The "particle-contact" choice (AddParticleContactParameter); `apply` puts Contact() into the scene's world.
+    void AddContactParameter(ParameterSet* set, const std::function<void()>& apply) {
+        AddParticleContactParameter(set, &contactIndex, apply);
+    }
+    ParticleContact Contact() const { return ParticleContactAt(contactIndex); }
 
 private:
     int integratorIndex = 0;
+    int contactIndex = 0;
 };
 
 /// Raises every particle below floorY to it (the book's Update clamp y >= -5 in springs and joints).

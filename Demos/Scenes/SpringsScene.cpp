@@ -20,6 +20,7 @@ void SpringsScene::Reset() {
 void SpringsScene::Build() {
     system = std::make_unique<PhysicsSystem>();
     system->settings.integrator = params.integrator;
+    system->settings.particleContact = stepping.Contact();
     system->AddConstraint(Ground());
 
     // docs/book-reference.md §2.6: p0 at (0,6,0) with mass 50, p1 at (2,6,0) with mass 1; bounce/friction stay default.
@@ -59,4 +60,5 @@ void SpringsScene::AddParameters(ParameterSet* set) {
         .OnPanel(Widget::Slider("l").Width(100.0f).SameLine());
     set->AddAction("reset", reset, "rebuild the scene with the panel values").OnPanel(Widget::Button("Reset"));
     stepping.AddParameters(set, &params.dt, reset);
+    stepping.AddContactParameter(set, [this] { system->settings.particleContact = stepping.Contact(); });
 }

@@ -4,6 +4,7 @@
 // Runs are short (30 frames = 0.5 s), so the calibration stays small.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -270,4 +271,66 @@ TEST(AutoModelCli, ARunThatMissesItsBudgetExitsFourWithItsOutputsWhole) {
     const SandboxResult met = RunSandboxExe(
         {"--demo", "momentum", "--set", "model=auto", "--set", "tolerance=5", "--frames", "30", "--no-ui", "--quiet"});
     EXPECT_EQ(met.exitCode, 0) << met.err;
+}
+
+namespace {
+
+/// The largest distance between the two runs' last-frame rows (same bodies, same order), and both rows' times.
+double LastFrameDistance(const std::string& a, const std::string& b, double* timeA, double* timeB) {
+    auto lastRows = [](const std::string& csv) {
+        std::vector<std::vector<double>> rows;
+        std::vector<std::string> lines = Lines(ReadText(csv));
+        const std::string lastFrame = lines.back().substr(0, lines.back().find(','));
+        for (const std::string& line : lines) {
+            if (line.rfind(lastFrame + ",", 0) != 0) continue;
+            std::vector<double> cells;
+            std::stringstream ss(line);
+            std::string cell;
+            while (std::getline(ss, cell, ',')) cells.push_back(std::atof(cell.c_str()));
+            rows.push_back(cells);
+        }
+        return rows;
+    };
+    const auto ra = lastRows(a), rb = lastRows(b);
+    EXPECT_EQ(ra.size(), rb.size());
+    double worst = 0.0;
+    for (std::size_t i = 0; i < std::min(ra.size(), rb.size()); ++i) {
+        const double dx = ra[i][4] - rb[i][4], dy = ra[i][5] - rb[i][5], dz = ra[i][6] - rb[i][6];
+        worst = std::max(worst, std::sqrt(dx * dx + dy * dy + dz * dz));
+        *timeA = ra[i][1];
+        *timeB = rb[i][1];
+    }
+    return worst;
+}
+
+}  // namespace
+
+TEST(AutoModelCli, ACentimetreSpringsBudgetIsMetAgainstAConvergedReference) {
+    // 1 cm over 300 frames must run (exit 0) and its last row must be within the budget of a converged reference:
+    // RK4 at 0.5 ms with the skin contact auto runs (checked converged by the same run at 1 ms: the two differ by
+    // under a hundredth of the budget). The README's 1 mm over 600 frames is still refused: the whole-run estimate
+    // is the largest difference over the run (the first bounce's timing), far above the end's (docs/model-choice.md).
+    const std::string dir = ScratchDir("auto_model_readme_springs");
+    for (const auto& [tolerance, frames] : std::vector<std::pair<std::string, std::string>>{{"1e-2", "300"}}) {
+        const std::string csv = dir + "/auto-" + frames + ".csv";
+        const SandboxResult r =
+            RunSandboxExe({"--demo", "springs", "--set", "model=auto", "--set", "tolerance=" + tolerance, "--frames",
+                           frames, "--state", csv, "--no-ui", "--quiet"});
+        ASSERT_EQ(r.exitCode, 0) << tolerance << ": " << r.err;
+        std::string reference[2];
+        const char* steps[2] = {"0.0005", "0.001"};
+        for (int i = 0; i < 2; ++i) {
+            reference[i] = dir + "/reference-" + frames + "-" + steps[i] + ".csv";
+            const SandboxResult ref = RunSandboxExe(
+                {"--demo", "springs", "--set", "integrator=rk4", "--set", "particle-contact=skin", "--set",
+                 std::string("dt=") + steps[i], "--frames", frames, "--state", reference[i], "--no-ui", "--quiet"});
+            ASSERT_EQ(ref.exitCode, 0) << ref.err;
+        }
+        const double budget = std::atof(tolerance.c_str());
+        double t0 = 0.0, t1 = 0.0;
+        EXPECT_LT(LastFrameDistance(reference[0], reference[1], &t0, &t1), 0.01 * budget) << "reference not converged";
+        const double error = LastFrameDistance(csv, reference[0], &t0, &t1);
+        EXPECT_EQ(t0, t1) << "the auto run's last row and the reference's are at different times";
+        EXPECT_LE(error, budget) << tolerance << " over " << frames << " frames";
+    }
 }

@@ -292,7 +292,7 @@ TEST(AutoModel, PilotFindsTheImpactOfAParticleWorld) {
 // refinement's and a third probe's at a quarter of the step, costs at most ChoiceSettings::wholeRunWork; the costlier
 // ones keep their windows. A bouncing particle over 100 s at a tight budget has candidates of both kinds.
 TEST(AutoModel, CheapCandidatesAreMeasuredOverTheWholeRun) {
-    const Chosen run(DroppedParticle(), 100.0, Budget(1e-3));  // met or refused
+    const Chosen run(DroppedParticle(), 100.0, Budget(1e-6));  // met or refused; 1 um: with the skin contact (auto's) coarse candidates meet 1 mm whole
     const double limit = ChoiceSettings().wholeRunWork;
     int whole = 0, windowed = 0;
     for (const CandidateEstimate& e : run.autoModel.Choice().candidates) {
@@ -409,6 +409,7 @@ double EnergyAtTheEnd(const SceneDescription& d, Integrator integrator, double s
     SceneDescription fixed = d;
     fixed.world.integrator = integrator;
     fixed.world.step = static_cast<float>(step);
+    fixed.world.particleContact = ParticleContact::Skin;  // the contact an auto run uses (docs/model-choice.md)
     FileScene scene(fixed);
     const long long steps = std::llround(std::floor(d.duration / step + 1e-9));
     for (long long k = 0; k < steps; ++k) scene.Step(static_cast<float>(step));
