@@ -133,9 +133,28 @@ int CheckBackend(const Options& o) {
     return kExitUsage;
 }
 
-// One headless context, ImGui with its OpenGL2 back end (no ini file, fixed display size and delta time, the
-// book's look: docs/book-reference.md §1.7), the window and the demo. Exit 3 when the context or the demo cannot start.
+// The window and the demo, with the context current when drawing. Exit 3 when the demo cannot start.
+int StartDemo(const Options& o, const SceneDescription* scene, Session* s, bool drawing) {
+    s->window = std::make_unique<DemoWindow>("Physics Sandbox", o.width, o.height);
+    s->window->SetDrawing(drawing);
+    s->window->OnInitialize();
+    s->window->OnResize(o.width, o.height);
+    s->window->SetUIVisible(!o.noUi);
+    s->window->SetNominalFrameTime(float(1000.0 * o.frameTime.ToDouble()));
+    const bool started = scene != nullptr ? s->window->StartDemo(std::make_unique<SceneFileDemo>(*scene), o.demo)
+                                          : s->window->StartDemo(o.demo);
+    if (!started || !s->window->CurrentDemo()) {
+        std::fprintf(stderr, "physics-sandbox: demo '%s' failed to start\n", o.demo.c_str());
+        return kExitFailure;
+    }
+    return kExitOk;
+}
+
+// Without pictures (o.draws false): the window and the demo only, no GL context. Otherwise one headless context,
+// ImGui with its OpenGL2 back end (no ini file, fixed display size and delta time, the book's look:
+// docs/book-reference.md §1.7), the window and the demo. Exit 3 when the context or the demo cannot start.
 int StartSession(const Options& o, const SceneDescription* scene, Session* s, RunStats* stats) {
+    if (!o.draws) return StartDemo(o, scene, s, false);
     PinSoftwareRasterizer();
     HeadlessInfo info;
     std::string error;
@@ -158,19 +177,7 @@ int StartSession(const Options& o, const SceneDescription* scene, Session* s, Ru
     io.DeltaTime = float(o.frameTime.ToDouble());
     ApplyBookImGuiStyle();  // StyleColorsClassic() plus the book's 1.50 look (Windows/)
     ImGui_ImplOpenGL2_Init();
-
-    s->window = std::make_unique<DemoWindow>("Physics Sandbox", o.width, o.height);
-    s->window->OnInitialize();
-    s->window->OnResize(o.width, o.height);
-    s->window->SetUIVisible(!o.noUi);
-    s->window->SetNominalFrameTime(float(1000.0 * o.frameTime.ToDouble()));
-    const bool started = scene != nullptr ? s->window->StartDemo(std::make_unique<SceneFileDemo>(*scene), o.demo)
-                                          : s->window->StartDemo(o.demo);
-    if (!started || !s->window->CurrentDemo()) {
-        std::fprintf(stderr, "physics-sandbox: demo '%s' failed to start\n", o.demo.c_str());
-        return kExitFailure;
-    }
-    return kExitOk;
+    return StartDemo(o, scene, s, true);
 }
 
 // --set in order (exit 2 naming the key and listing the table).
@@ -363,7 +370,7 @@ bool RunFrame(RunLoop& r, int frame, std::string* failure) {
         if (!r.o.noUi) ImGui::EndFrame();
         return false;
     }
-    RenderFrame(r);
+    if (r.o.draws) RenderFrame(r);
     r.stats->renderSeconds += Since(renderStart);
     const bool selected = r.outputs.WantsFrames() && Selected(r, frame);
     if ((selected || r.outputs.Recording()) && !QueueFrame(r, frame, selected)) return false;
@@ -483,6 +490,10 @@ int RunUnguarded(const Options& given, RunStats* stats) {
     if (code == kExitOk) code = CheckBackend(o);
     if (code == kExitOk) code = CheckOutputArguments(o);
     if (code != kExitOk) return code;
+    // A run that writes no picture makes no GL context and draws nothing; its UI frames go too (the panels
+    // only read the parameters), so the physics and the --state rows are those of a drawn run.
+    o.draws = !o.outDir.empty() || !o.compareDir.empty() || !o.videoFile.empty();
+    if (!o.draws) o.noUi = true, stats->renderer = "no drawing";
     Session session;
     if ((code = StartSession(o, fromFile ? &scene : nullptr, &session, stats)) != kExitOk) return code;
     DemoBase& demo = *session.window->CurrentDemo();
