@@ -13,6 +13,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+/// OUT/mismatch/*.amplified.png: |expected - actual| x 16, so a difference of 16 per channel is full scale.
+constexpr int kAmplifiedDiffGain = 16;
+
 std::string FrameName(int frame) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%05d.png", frame);
@@ -244,7 +247,9 @@ bool RunOutputs::WriteEvidence(const std::string& name, const FrameComparison& c
     std::vector<std::uint8_t> other;
     return EncodePng(expected, png, &other, error) && WriteFileAtomic(stem + ".expected.png", other, error) &&
            EncodePng(MakeDiffImage(expected, actual, o.thresholds), png, &other, error) &&
-           WriteFileAtomic(stem + ".diff.png", other, error);
+           WriteFileAtomic(stem + ".diff.png", other, error) &&
+           EncodePng(MakeAmplifiedDiff(expected, actual, kAmplifiedDiffGain), png, &other, error) &&
+           WriteFileAtomic(stem + ".amplified.png", other, error);
 }
 
 int RunOutputs::Finish(int code) {
@@ -275,10 +280,13 @@ int RunOutputs::ReportComparisons(int code) {
         lines += c.name + ": " + DescribeFrame(c, o.thresholds) + "\n";
         if (c.Failed()) ++failures;
     }
-    char counts[160];
-    std::snprintf(counts, sizeof counts, ": %d frame(s), %d mismatch(es); tolerance %d, max fraction %g\n",
+    char counts[256];
+    char minSsim[48] = "";
+    if (o.thresholds.minSsim >= 0.0) std::snprintf(minSsim, sizeof minSsim, ", min SSIM %g", o.thresholds.minSsim);
+    std::snprintf(counts, sizeof counts,
+                  ": %d frame(s), %d mismatch(es); tolerance %d, max fraction %g%s; SSIM of luminance, 8x8 windows\n",
                   int(results.comparisons.size()), failures, o.thresholds.channelTolerance,
-                  o.thresholds.maxDifferingFraction);
+                  o.thresholds.maxDifferingFraction, minSsim);
     const std::string report = "compare with " + o.compareDir + counts + lines;
     std::string error;
     if (!WriteFileAtomic(JoinPath(o.outDir, "compare.txt"), std::vector<std::uint8_t>(report.begin(), report.end()),

@@ -213,6 +213,43 @@ TEST(Cli, SameCommandGivesByteIdenticalFramesAndState) {
     }
 }
 
+TEST(Cli, MinSsimPassesAFrameFromTheOtherBackEndThatPixelsFail) {
+    // Goldens through OSMesa; frames through EGL (docs/rendering.md "Back ends"), once as made and once seen from
+    // 0.93 degrees further round (SSIM about 0.999 at 160x120), compared with no pixel tolerance at all.
+    const std::string golden = ScratchDir("ssim_golden");
+    const std::vector<std::string> base = {"--demo", "ch15",   "--frames", "31",     "--only-frames",
+                                           "30",     "--size", "160x120",  "--quiet"};
+    auto args = base;
+    args.insert(args.end(), {"--backend", "osmesa", "--compare", golden, "--update-golden"});
+    SandboxResult r = RunSandboxExe(args);
+    if (r.exitCode == 2 && r.err.find("this build has no") != std::string::npos) GTEST_SKIP() << r.err;
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string out = ScratchDir("ssim_out");
+    auto compare = [&](const std::vector<std::string>& extra) {
+        fs::remove_all(out);
+        auto a = base;
+        a.insert(a.end(),
+                 {"--backend", "egl", "--compare", golden, "--out", out, "--tolerance", "0", "--max-diff", "0"});
+        a.insert(a.end(), extra.begin(), extra.end());
+        return RunSandboxExe(a);
+    };
+    r = compare({"--min-ssim", "0.99"});
+    if (r.exitCode == 2 || r.err.find("no OpenGL context") != std::string::npos) GTEST_SKIP() << "no EGL: " << r.err;
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(ReadText(out + "/compare.txt").find("frame_00030.png: "), std::string::npos);
+
+    r = compare({"--camera-yaw", "-67"});
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_NE(r.err.find(", SSIM 0.99"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(out + "/mismatch/frame_00030.amplified.png"));
+    r = compare({"--camera-yaw", "-67", "--min-ssim", "0.995"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    const std::string report = ReadText(out + "/compare.txt");
+    EXPECT_NE(report.find(": pass on SSIM"), std::string::npos) << report;
+    EXPECT_NE(report.find("min SSIM 0.995"), std::string::npos) << report;
+    EXPECT_EQ(compare({"--camera-yaw", "-67", "--min-ssim", "0.9999"}).exitCode, 1);
+}
+
 TEST(Cli, CompareReportsExactAndFlagsAMismatch) {
     REQUIRE_DEMO(id);
     const std::string golden = ScratchDir("golden");
@@ -243,7 +280,8 @@ TEST(Cli, CompareReportsExactAndFlagsAMismatch) {
     EXPECT_EQ(r.exitCode, 1) << r.err;
     EXPECT_NE(r.err.find("frame_00000.png: exact"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("frame_00001.png: max channel diff 128"), std::string::npos) << r.err;
-    for (const char* f : {"frame_00001.expected.png", "frame_00001.actual.png", "frame_00001.diff.png"})
+    for (const char* f :
+         {"frame_00001.expected.png", "frame_00001.actual.png", "frame_00001.diff.png", "frame_00001.amplified.png"})
         EXPECT_TRUE(fs::exists(out + "/mismatch/" + f)) << f;
     EXPECT_FALSE(fs::exists(out + "/mismatch/frame_00000.diff.png"));
     EXPECT_NE(ReadText(out + "/compare.txt").find("1 mismatch"), std::string::npos);
