@@ -207,6 +207,17 @@ bool LoadGolden(const std::string& path, const Image& actual, Image* expected, F
     return true;
 }
 
+/// DIR/renderer.txt's first line (what --update-golden recorded), or "unrecorded".
+std::string GoldenRenderer(const std::string& dir) {
+    std::vector<std::uint8_t> bytes;
+    ReadFailure failure = ReadFailure::None;
+    std::string problem;
+    if (!ReadRegularFile(JoinPath(dir, "renderer.txt"), 4096, &bytes, &failure, &problem)) return "unrecorded";
+    std::string text(bytes.begin(), bytes.end());
+    text = text.substr(0, text.find('\n'));
+    return text.empty() ? "unrecorded" : text;
+}
+
 std::string DescribeFrame(const FrameComparison& c, const CompareThresholds& thresholds) {
     switch (c.golden) {
         case FrameComparison::Golden::Missing:
@@ -262,6 +273,13 @@ int RunOutputs::Finish(int code) {
         std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
         code = kExitFailure;
     }
+    const std::string line = renderer + "\n";
+    if (o.updateGolden && code == kExitOk && !renderer.empty() &&
+        !WriteFileAtomic(JoinPath(frameDir, "renderer.txt"), std::vector<std::uint8_t>(line.begin(), line.end()),
+                         &error)) {
+        std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
+        code = kExitFailure;
+    }
     if (video.IsOpen() && code == kExitOk && !video.Finish(&error)) {
         std::fprintf(stderr, "physics-sandbox: --video %s: %s\n", o.videoFile.c_str(), error.c_str());
         code = kExitFailure;
@@ -287,7 +305,8 @@ int RunOutputs::ReportComparisons(int code) {
                   ": %d frame(s), %d mismatch(es); tolerance %d, max fraction %g%s; SSIM of luminance, 8x8 windows\n",
                   int(results.comparisons.size()), failures, o.thresholds.channelTolerance,
                   o.thresholds.maxDifferingFraction, minSsim);
-    const std::string report = "compare with " + o.compareDir + counts + lines;
+    const std::string report = "compare with " + o.compareDir + counts + "renderer: " + renderer +
+                               "\ngolden renderer: " + GoldenRenderer(o.compareDir) + "\n" + lines;
     std::string error;
     if (!WriteFileAtomic(JoinPath(o.outDir, "compare.txt"), std::vector<std::uint8_t>(report.begin(), report.end()),
                          &error)) {

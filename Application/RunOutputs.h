@@ -62,7 +62,9 @@ public:
     /// Ends the run: waits for the jobs, then commits --state on success or abandons it. Returns code, or
     /// kExitFailure when a job or the commit failed (message printed).
     int Finish(int code);
-    /// With --compare: the per-frame summary on stderr and in OUT/compare.txt; kExitMismatch on a difference.
+    /// With --compare: the per-frame summary on stderr and in OUT/compare.txt (after the header, the renderer of
+    /// each side: "renderer: ..." and "golden renderer: ..." from DIR/renderer.txt, "unrecorded" without one);
+    /// kExitMismatch on a difference.
     int ReportComparisons(int code);
     const std::string& FrameDir() const { return frameDir; }
 
@@ -74,6 +76,9 @@ public:
         double encodeCpuSeconds = 0.0;
     };
 
+    /// The GL strings of the run's context (RunStats::glStrings): written to the golden directory's renderer.txt
+    /// by --update-golden, and beside the golden's own renderer.txt into compare.txt.
+    std::string renderer;
     AtomicFile state;
     VideoEncoder video;  ///< open while --video records; the file appears at Finish on success
     JobResults results;

@@ -167,6 +167,8 @@ int StartSession(const Options& o, const SceneDescription* scene, Session* s, Ru
         return kExitFailure;
     }
     stats->renderer = info.renderer + " via " + info.backend + (info.device.empty() ? "" : " " + info.device);
+    stats->glStrings = "GL_VENDOR " + info.vendor + "; GL_RENDERER " + info.renderer + "; GL_VERSION " + info.version +
+                       "; back end " + info.backend + (info.device.empty() ? "" : " " + info.device);
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     s->imgui = true;
@@ -511,6 +513,7 @@ int RunUnguarded(const Options& given, RunStats* stats) {
 
     // From here on a failure is a run-time failure (exit 3).
     RunOutputs outputs(o);
+    outputs.renderer = stats->glStrings;
     std::string error;
     if (!outputs.Open(&error, demo.AutoModelOf().Active())) {
         std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());

@@ -116,6 +116,7 @@ std::unique_ptr<HeadlessContext> CreateHeadlessContext(int width, int height, He
         };
         info->backend = context->BackendName();
         info->device = device;
+        info->vendor = text(GL_VENDOR);
         info->renderer = text(GL_RENDERER);
         info->version = text(GL_VERSION);
         info->depthBits = depthBits;

@@ -257,7 +257,12 @@ TEST(Cli, CompareReportsExactAndFlagsAMismatch) {
     auto args = base;
     args.insert(args.end(), {"--compare", golden, "--update-golden", "--quiet"});
     ASSERT_EQ(RunSandboxExe(args).exitCode, 0);
-    ASSERT_EQ(FilesIn(golden).size(), 3u);
+    ASSERT_EQ(FilesIn(golden),
+              (std::vector<std::string>{"frame_00000.png", "frame_00001.png", "frame_00002.png", "renderer.txt"}));
+    const std::string made = ReadText(golden + "/renderer.txt");
+    EXPECT_EQ(made.rfind("GL_VENDOR ", 0), 0u) << made;
+    EXPECT_NE(made.find("; GL_RENDERER "), std::string::npos) << made;
+    EXPECT_NE(made.find("; GL_VERSION "), std::string::npos) << made;
 
     const std::string out = ScratchDir("compare_out");
     args = base;
@@ -265,6 +270,11 @@ TEST(Cli, CompareReportsExactAndFlagsAMismatch) {
     SandboxResult r = RunSandboxExe(args);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.err.find("frame_00001.png: exact"), std::string::npos) << r.err;
+    // compare.txt names the renderer of both sides.
+    const std::string line = made.substr(0, made.find('\n'));
+    EXPECT_NE(ReadText(out + "/compare.txt").find("\nrenderer: " + line + "\ngolden renderer: " + line + "\n"),
+              std::string::npos)
+        << ReadText(out + "/compare.txt");
 
     // Paint a block of frame 1's golden: beyond any tolerance over ~4 % of the pixels.
     Image img;
