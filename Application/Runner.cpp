@@ -4,7 +4,16 @@
 #include <glad/gl.h>
 // clang-format off
 #include <imgui.h>
+#if PSB_HAVE_DRAWING
 #include <backends/imgui_impl_opengl2.h>
+#else
+// The physics-only build (PSB_WITH_RENDERING=OFF) links no GL library, so not ImGui's OpenGL2 back end either; it
+// refuses every run that draws (CheckBackend), so these are never called.
+inline bool ImGui_ImplOpenGL2_Init() { return false; }
+inline void ImGui_ImplOpenGL2_Shutdown() {}
+inline void ImGui_ImplOpenGL2_NewFrame() {}
+inline void ImGui_ImplOpenGL2_RenderDrawData(ImDrawData*) {}
+#endif
 // clang-format on
 #include <unistd.h>
 
@@ -124,10 +133,17 @@ int CheckDemoId(const std::string& id) {
     return kExitUsage;
 }
 
-// --backend names a back end this build has (exit 2 otherwise).
+// --backend names a back end this build has, when the run draws (exit 2 otherwise).
 int CheckBackend(const Options& o) {
     HeadlessBackend backend = HeadlessBackend::Auto;
-    if (ParseHeadlessBackend(o.backend, &backend) && HeadlessBackendBuilt(backend)) return kExitOk;
+    const bool known = ParseHeadlessBackend(o.backend, &backend);
+    if (known && (!o.draws || HeadlessBackendBuilt(backend))) return kExitOk;
+    if (known && !HeadlessBackendBuilt(HeadlessBackend::Auto)) {
+        std::fprintf(stderr,
+                     "physics-sandbox: this build draws nothing (CMake PSB_WITH_RENDERING=OFF): --out, --compare and "
+                     "--video need a build with rendering; runs with --state alone need none\n");
+        return kExitUsage;
+    }
     std::fprintf(stderr, "physics-sandbox: --backend %s: this build has no %s back end (CMake PSB_WITH_%s)\n",
                  o.backend.c_str(), o.backend.c_str(), backend == HeadlessBackend::Egl ? "EGL" : "OSMESA");
     return kExitUsage;
@@ -488,14 +504,14 @@ int RunUnguarded(const Options& given, RunStats* stats) {
     Options o = given;
     SceneDescription scene;
     const bool fromFile = !o.scene.empty();
-    int code = fromFile ? LoadScene(&o, &scene) : CheckDemoId(o.demo);
-    if (code == kExitOk) code = CheckBackend(o);
-    if (code == kExitOk) code = CheckOutputArguments(o);
-    if (code != kExitOk) return code;
     // A run that writes no picture makes no GL context and draws nothing; its UI frames go too (the panels
     // only read the parameters), so the physics and the --state rows are those of a drawn run.
     o.draws = !o.outDir.empty() || !o.compareDir.empty() || !o.videoFile.empty();
     if (!o.draws) o.noUi = true, stats->renderer = "no drawing";
+    int code = fromFile ? LoadScene(&o, &scene) : CheckDemoId(o.demo);
+    if (code == kExitOk) code = CheckBackend(o);
+    if (code == kExitOk) code = CheckOutputArguments(o);
+    if (code != kExitOk) return code;
     Session session;
     if ((code = StartSession(o, fromFile ? &scene : nullptr, &session, stats)) != kExitOk) return code;
     DemoBase& demo = *session.window->CurrentDemo();

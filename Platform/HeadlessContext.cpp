@@ -74,7 +74,7 @@ std::unique_ptr<HeadlessContext> CreateBackend(int width, int height, HeadlessBa
     *device = choice.platform == "device" ? "device " + choice.device : choice.platform;
     return context;
 #else
-    (void)device;
+    (void)width, (void)height, (void)device;
     return nullptr;
 #endif
 }
