@@ -6,6 +6,7 @@
 
 #include "Application/Runner.h"
 #include "Application/StateCsv.h"
+#include "Platform/HeadlessContext.h"
 
 namespace fs = std::filesystem;
 
@@ -102,6 +103,21 @@ int CheckOutputArguments(const Options& o) {
     }
     if (!o.videoFile.empty() && CheckVideoPath(o) != kExitOk) return kExitUsage;
     return o.stateFile.empty() ? kExitOk : CheckStatePath(o);
+}
+
+int CheckBackend(const Options& o) {
+    HeadlessBackend backend = HeadlessBackend::Auto;
+    const bool known = ParseHeadlessBackend(o.backend, &backend);
+    if (known && (!o.draws || HeadlessBackendBuilt(backend))) return kExitOk;
+    if (known && !HeadlessBackendBuilt(HeadlessBackend::Auto)) {
+        std::fprintf(stderr,
+                     "physics-sandbox: this build draws nothing (CMake PSB_WITH_RENDERING=OFF): --out, --compare and "
+                     "--video need a build with rendering; runs with --state alone need none\n");
+        return kExitUsage;
+    }
+    std::fprintf(stderr, "physics-sandbox: --backend %s: this build has no %s back end (CMake PSB_WITH_%s)\n",
+                 o.backend.c_str(), o.backend.c_str(), backend == HeadlessBackend::Egl ? "EGL" : "OSMESA");
+    return kExitUsage;
 }
 
 RunOutputs::RunOutputs(const Options& options)

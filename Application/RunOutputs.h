@@ -28,6 +28,10 @@ double CpuSeconds(clockid_t which);
 /// --video must name an .mp4, .webm or .gif in an existing directory, with the ffmpeg program installed.
 int CheckOutputArguments(const Options& o);
 
+/// --backend names a back end this build has, when the run draws (o.draws); a build without any (PSB_WITH_RENDERING
+/// =OFF) refuses every run that draws. Returns kExitOk or kExitUsage (message printed).
+int CheckBackend(const Options& o);
+
 /// One frame's golden comparison, filled in by the encode thread.
 struct FrameComparison {
     enum class Golden { Compared, Missing, Unreadable, SizeMismatch };

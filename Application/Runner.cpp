@@ -2,19 +2,6 @@
 
 // glad first: it must precede anything that could pull in <GL/gl.h>.
 #include <glad/gl.h>
-// clang-format off
-#include <imgui.h>
-#if PSB_HAVE_DRAWING
-#include <backends/imgui_impl_opengl2.h>
-#else
-// The physics-only build (PSB_WITH_RENDERING=OFF) links no GL library, so not ImGui's OpenGL2 back end either; it
-// refuses every run that draws (CheckBackend), so these are never called.
-inline bool ImGui_ImplOpenGL2_Init() { return false; }
-inline void ImGui_ImplOpenGL2_Shutdown() {}
-inline void ImGui_ImplOpenGL2_NewFrame() {}
-inline void ImGui_ImplOpenGL2_RenderDrawData(ImDrawData*) {}
-#endif
-// clang-format on
 #include <unistd.h>
 
 #include <algorithm>
@@ -30,6 +17,7 @@ inline void ImGui_ImplOpenGL2_RenderDrawData(ImDrawData*) {}
 #include <vector>
 
 #include "Application/AutoModelHost.h"
+#include "Application/ImGuiGl.h"
 #include "Application/RunOutputs.h"
 #include "Application/StateCsv.h"
 #if PSB_HAVE_WINDOW
@@ -130,22 +118,6 @@ int CheckDemoId(const std::string& id) {
     for (const DemoInfo& d : AllDemos()) ids += (ids.empty() ? "" : ", ") + d.id;
     std::fprintf(stderr, "physics-sandbox: unknown demo '%s'; valid ids: %s\n", id.c_str(),
                  ids.empty() ? "(none registered)" : ids.c_str());
-    return kExitUsage;
-}
-
-// --backend names a back end this build has, when the run draws (exit 2 otherwise).
-int CheckBackend(const Options& o) {
-    HeadlessBackend backend = HeadlessBackend::Auto;
-    const bool known = ParseHeadlessBackend(o.backend, &backend);
-    if (known && (!o.draws || HeadlessBackendBuilt(backend))) return kExitOk;
-    if (known && !HeadlessBackendBuilt(HeadlessBackend::Auto)) {
-        std::fprintf(stderr,
-                     "physics-sandbox: this build draws nothing (CMake PSB_WITH_RENDERING=OFF): --out, --compare and "
-                     "--video need a build with rendering; runs with --state alone need none\n");
-        return kExitUsage;
-    }
-    std::fprintf(stderr, "physics-sandbox: --backend %s: this build has no %s back end (CMake PSB_WITH_%s)\n",
-                 o.backend.c_str(), o.backend.c_str(), backend == HeadlessBackend::Egl ? "EGL" : "OSMESA");
     return kExitUsage;
 }
 

@@ -33,7 +33,7 @@ struct CompareResult {
 /// 8x8 windows with uniform weights placed every 4 pixels (the last row and column of windows moved in to end at
 /// the border; an image under 8 pixels on a side is one window that wide). Per window, with population
 /// variances and covariance, SSIM = (2 mu_a mu_b + C1)(2 cov + C2) / ((mu_a^2 + mu_b^2 + C1)(var_a + var_b + C2)),
-/// C1 = (0.01 * 255)^2, C2 = (0.03 * 255)^2 (Wang et al. 2004). In -1..1; 1 for equal images. Same size only
+/// C1 = (0.01 * 255)^2, C2 = (0.03 * 255)^2, the usual SSIM constants. In -1..1; 1 for equal images. Same size only
 /// (0 otherwise).
 double Ssim(const Image& a, const Image& b);
 /// Compares actual with expected. Images of different sizes never pass.
