@@ -100,7 +100,7 @@ for c in "${cases[@]}"; do
     [ -f "$dir/renderer.txt" ] && golden_renderer=$(head -n 1 "$dir/renderer.txt")
     if [ -f "$run_out/compare.txt" ]; then
       actual_renderer=$(sed -n 's/^renderer: //p' "$run_out/compare.txt" | head -n 1)
-      frame_lines=$(grep -E '^frame_[0-9]+\.png: ' "$run_out/compare.txt" | frame_fields)
+      frame_lines=$({ grep -E '^frame_[0-9]+\.png: ' "$run_out/compare.txt" || true; } | frame_fields)
     fi
     if [ "$code" -ne 0 ]; then
       status="FAIL"

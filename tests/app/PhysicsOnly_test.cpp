@@ -52,9 +52,11 @@ TEST(PhysicsOnly, EveryShippedSceneGivesTheDrawnRunsState) {
     EXPECT_GE(scenes, 5);
 }
 
-TEST(PhysicsOnly, NonBookSettingsAndTheUiFlagGiveTheSameState) {
+TEST(PhysicsOnly, NonBookSettingsTheUiFlagAndAnAutoModelGiveTheSameState) {
     // A changed integrator and step (the demo's own PhysicsStep), and --no-ui on the drawn side's twin.
     ExpectSameStateDrawnOrNot({"--demo", "ch16", "--set", "integrator=velocity-verlet", "--set", "dt=0.01"},
                               "ch16-verlet");
     ExpectSameStateDrawnOrNot({"--demo", "ch15", "--no-ui"}, "ch15-no-ui");
+    // An auto model (docs/model-choice.md): its choice, live watch and error_estimate column.
+    ExpectSameStateDrawnOrNot({"--demo", "springs", "--set", "model=auto"}, "springs-auto");
 }
