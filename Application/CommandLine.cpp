@@ -139,7 +139,8 @@ const Flag kFlags[] = {
      "write (and compare) only these frames; all frames are still simulated",
      [](Options& o, const FlagValue& v) { o.onlyFrames = v.frames; }},
     {"--compare", "DIR", ValueType::Text, 0, 0,
-     "compare each written frame with DIR/<same name>; on a mismatch write OUT/mismatch/*.{expected,actual,diff}.png "
+     "compare each written frame with DIR/<same name>; on a mismatch write "
+     "OUT/mismatch/*.{expected,actual,diff,amplified}.png "
      "and OUT/compare.txt, exit 1 (DIR must not be OUT)",
      [](Options& o, const FlagValue& v) { o.compareDir = v.text; }},
     {"--update-golden", "", ValueType::None, 0, 0,
@@ -149,6 +150,9 @@ const Flag kFlags[] = {
      [](Options& o, const FlagValue& v) { o.thresholds.channelTolerance = int(v.integer); }},
     {"--max-diff", "F", ValueType::Float, 0, 1, "fraction of pixels allowed beyond the tolerance (default 0.002)",
      [](Options& o, const FlagValue& v) { o.thresholds.maxDifferingFraction = v.real; }},
+    {"--min-ssim", "S", ValueType::Float, 0, 1,
+     "a frame whose SSIM (luminance, 8x8 windows) is at least S passes whatever its pixel counts (default off)",
+     [](Options& o, const FlagValue& v) { o.thresholds.minSsim = v.real; }},
     {"--png-level", "N", ValueType::Int, 0, 9, "zlib level (default 3)",
      [](Options& o, const FlagValue& v) { o.pngLevel = int(v.integer); }},
     {"--serial-encode", "", ValueType::None, 0, 0, "encode PNGs on the main thread (same files; for measurement)",

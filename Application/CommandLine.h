@@ -27,6 +27,8 @@ struct Options {
     int height = 600;
     std::vector<std::pair<std::string, std::string>> sets;  ///< --set key=value, in order
     bool noUi = false;
+    /// Set by the run, not a flag: a GL context is made and frames drawn only for --out, --compare or --video.
+    bool draws = true;
     bool showParams = false;  ///< --params: print the demo's parameters (after --set) and exit
     /// --explain-model: with an auto model (`--set model=auto`, a scene's "model": "auto"), print every candidate
     /// with its estimated error and cost, the chosen one marked, and exit without running (docs/model-choice.md).

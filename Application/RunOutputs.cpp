@@ -6,12 +6,16 @@
 
 #include "Application/Runner.h"
 #include "Application/StateCsv.h"
+#include "Platform/HeadlessContext.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+/// OUT/mismatch/*.amplified.png: |expected - actual| x 16, so a difference of 16 per channel is full scale.
+constexpr int kAmplifiedDiffGain = 16;
 
 std::string FrameName(int frame) {
     char name[32];
@@ -99,6 +103,21 @@ int CheckOutputArguments(const Options& o) {
     }
     if (!o.videoFile.empty() && CheckVideoPath(o) != kExitOk) return kExitUsage;
     return o.stateFile.empty() ? kExitOk : CheckStatePath(o);
+}
+
+int CheckBackend(const Options& o) {
+    HeadlessBackend backend = HeadlessBackend::Auto;
+    const bool known = ParseHeadlessBackend(o.backend, &backend);
+    if (known && (!o.draws || HeadlessBackendBuilt(backend))) return kExitOk;
+    if (known && !HeadlessBackendBuilt(HeadlessBackend::Auto)) {
+        std::fprintf(stderr,
+                     "physics-sandbox: this build draws nothing (CMake PSB_WITH_RENDERING=OFF): --out, --compare and "
+                     "--video need a build with rendering; runs with --state alone need none\n");
+        return kExitUsage;
+    }
+    std::fprintf(stderr, "physics-sandbox: --backend %s: this build has no %s back end (CMake PSB_WITH_%s)\n",
+                 o.backend.c_str(), o.backend.c_str(), backend == HeadlessBackend::Egl ? "EGL" : "OSMESA");
+    return kExitUsage;
 }
 
 RunOutputs::RunOutputs(const Options& options)
@@ -204,6 +223,17 @@ bool LoadGolden(const std::string& path, const Image& actual, Image* expected, F
     return true;
 }
 
+/// DIR/renderer.txt's first line (what --update-golden recorded), or "unrecorded".
+std::string GoldenRenderer(const std::string& dir) {
+    std::vector<std::uint8_t> bytes;
+    ReadFailure failure = ReadFailure::None;
+    std::string problem;
+    if (!ReadRegularFile(JoinPath(dir, "renderer.txt"), 4096, &bytes, &failure, &problem)) return "unrecorded";
+    std::string text(bytes.begin(), bytes.end());
+    text = text.substr(0, text.find('\n'));
+    return text.empty() ? "unrecorded" : text;
+}
+
 std::string DescribeFrame(const FrameComparison& c, const CompareThresholds& thresholds) {
     switch (c.golden) {
         case FrameComparison::Golden::Missing:
@@ -244,7 +274,9 @@ bool RunOutputs::WriteEvidence(const std::string& name, const FrameComparison& c
     std::vector<std::uint8_t> other;
     return EncodePng(expected, png, &other, error) && WriteFileAtomic(stem + ".expected.png", other, error) &&
            EncodePng(MakeDiffImage(expected, actual, o.thresholds), png, &other, error) &&
-           WriteFileAtomic(stem + ".diff.png", other, error);
+           WriteFileAtomic(stem + ".diff.png", other, error) &&
+           EncodePng(MakeAmplifiedDiff(expected, actual, kAmplifiedDiffGain), png, &other, error) &&
+           WriteFileAtomic(stem + ".amplified.png", other, error);
 }
 
 int RunOutputs::Finish(int code) {
@@ -254,6 +286,13 @@ int RunOutputs::Finish(int code) {
         code = kExitFailure;
     }
     if (state.IsOpen() && code == kExitOk && !state.Commit(&error)) {
+        std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
+        code = kExitFailure;
+    }
+    const std::string line = renderer + "\n";
+    if (o.updateGolden && code == kExitOk && !renderer.empty() &&
+        !WriteFileAtomic(JoinPath(frameDir, "renderer.txt"), std::vector<std::uint8_t>(line.begin(), line.end()),
+                         &error)) {
         std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
         code = kExitFailure;
     }
@@ -275,11 +314,15 @@ int RunOutputs::ReportComparisons(int code) {
         lines += c.name + ": " + DescribeFrame(c, o.thresholds) + "\n";
         if (c.Failed()) ++failures;
     }
-    char counts[160];
-    std::snprintf(counts, sizeof counts, ": %d frame(s), %d mismatch(es); tolerance %d, max fraction %g\n",
+    char counts[256];
+    char minSsim[48] = "";
+    if (o.thresholds.minSsim >= 0.0) std::snprintf(minSsim, sizeof minSsim, ", min SSIM %g", o.thresholds.minSsim);
+    std::snprintf(counts, sizeof counts,
+                  ": %d frame(s), %d mismatch(es); tolerance %d, max fraction %g%s; SSIM of luminance, 8x8 windows\n",
                   int(results.comparisons.size()), failures, o.thresholds.channelTolerance,
-                  o.thresholds.maxDifferingFraction);
-    const std::string report = "compare with " + o.compareDir + counts + lines;
+                  o.thresholds.maxDifferingFraction, minSsim);
+    const std::string report = "compare with " + o.compareDir + counts + "renderer: " + renderer +
+                               "\ngolden renderer: " + GoldenRenderer(o.compareDir) + "\n" + lines;
     std::string error;
     if (!WriteFileAtomic(JoinPath(o.outDir, "compare.txt"), std::vector<std::uint8_t>(report.begin(), report.end()),
                          &error)) {

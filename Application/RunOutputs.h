@@ -28,6 +28,10 @@ double CpuSeconds(clockid_t which);
 /// --video must name an .mp4, .webm or .gif in an existing directory, with the ffmpeg program installed.
 int CheckOutputArguments(const Options& o);
 
+/// --backend names a back end this build has, when the run draws (o.draws); a build without any (PSB_WITH_RENDERING
+/// =OFF) refuses every run that draws. Returns kExitOk or kExitUsage (message printed).
+int CheckBackend(const Options& o);
+
 /// One frame's golden comparison, filled in by the encode thread.
 struct FrameComparison {
     enum class Golden { Compared, Missing, Unreadable, SizeMismatch };
@@ -62,7 +66,9 @@ public:
     /// Ends the run: waits for the jobs, then commits --state on success or abandons it. Returns code, or
     /// kExitFailure when a job or the commit failed (message printed).
     int Finish(int code);
-    /// With --compare: the per-frame summary on stderr and in OUT/compare.txt; kExitMismatch on a difference.
+    /// With --compare: the per-frame summary on stderr and in OUT/compare.txt (after the header, the renderer of
+    /// each side: "renderer: ..." and "golden renderer: ..." from DIR/renderer.txt, "unrecorded" without one);
+    /// kExitMismatch on a difference.
     int ReportComparisons(int code);
     const std::string& FrameDir() const { return frameDir; }
 
@@ -74,6 +80,9 @@ public:
         double encodeCpuSeconds = 0.0;
     };
 
+    /// The GL strings of the run's context (RunStats::glStrings): written to the golden directory's renderer.txt
+    /// by --update-golden, and beside the golden's own renderer.txt into compare.txt.
+    std::string renderer;
     AtomicFile state;
     VideoEncoder video;  ///< open while --video records; the file appears at Finish on success
     JobResults results;

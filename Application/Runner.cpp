@@ -2,10 +2,6 @@
 
 // glad first: it must precede anything that could pull in <GL/gl.h>.
 #include <glad/gl.h>
-// clang-format off
-#include <imgui.h>
-#include <backends/imgui_impl_opengl2.h>
-// clang-format on
 #include <unistd.h>
 
 #include <algorithm>
@@ -21,6 +17,7 @@
 #include <vector>
 
 #include "Application/AutoModelHost.h"
+#include "Application/ImGuiGl.h"
 #include "Application/RunOutputs.h"
 #include "Application/StateCsv.h"
 #if PSB_HAVE_WINDOW
@@ -124,18 +121,28 @@ int CheckDemoId(const std::string& id) {
     return kExitUsage;
 }
 
-// --backend names a back end this build has (exit 2 otherwise).
-int CheckBackend(const Options& o) {
-    HeadlessBackend backend = HeadlessBackend::Auto;
-    if (ParseHeadlessBackend(o.backend, &backend) && HeadlessBackendBuilt(backend)) return kExitOk;
-    std::fprintf(stderr, "physics-sandbox: --backend %s: this build has no %s back end (CMake PSB_WITH_%s)\n",
-                 o.backend.c_str(), o.backend.c_str(), backend == HeadlessBackend::Egl ? "EGL" : "OSMESA");
-    return kExitUsage;
+// The window and the demo, with the context current when drawing. Exit 3 when the demo cannot start.
+int StartDemo(const Options& o, const SceneDescription* scene, Session* s, bool drawing) {
+    s->window = std::make_unique<DemoWindow>("Physics Sandbox", o.width, o.height);
+    s->window->SetDrawing(drawing);
+    s->window->OnInitialize();
+    s->window->OnResize(o.width, o.height);
+    s->window->SetUIVisible(!o.noUi);
+    s->window->SetNominalFrameTime(float(1000.0 * o.frameTime.ToDouble()));
+    const bool started = scene != nullptr ? s->window->StartDemo(std::make_unique<SceneFileDemo>(*scene), o.demo)
+                                          : s->window->StartDemo(o.demo);
+    if (!started || !s->window->CurrentDemo()) {
+        std::fprintf(stderr, "physics-sandbox: demo '%s' failed to start\n", o.demo.c_str());
+        return kExitFailure;
+    }
+    return kExitOk;
 }
 
-// One headless context, ImGui with its OpenGL2 back end (no ini file, fixed display size and delta time, the
-// book's look: docs/book-reference.md §1.7), the window and the demo. Exit 3 when the context or the demo cannot start.
+// Without pictures (o.draws false): the window and the demo only, no GL context. Otherwise one headless context,
+// ImGui with its OpenGL2 back end (no ini file, fixed display size and delta time, the book's look:
+// docs/book-reference.md §1.7), the window and the demo. Exit 3 when the context or the demo cannot start.
 int StartSession(const Options& o, const SceneDescription* scene, Session* s, RunStats* stats) {
+    if (!o.draws) return StartDemo(o, scene, s, false);
     PinSoftwareRasterizer();
     HeadlessInfo info;
     std::string error;
@@ -148,6 +155,8 @@ int StartSession(const Options& o, const SceneDescription* scene, Session* s, Ru
         return kExitFailure;
     }
     stats->renderer = info.renderer + " via " + info.backend + (info.device.empty() ? "" : " " + info.device);
+    stats->glStrings = "GL_VENDOR " + info.vendor + "; GL_RENDERER " + info.renderer + "; GL_VERSION " + info.version +
+                       "; back end " + info.backend + (info.device.empty() ? "" : " " + info.device);
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     s->imgui = true;
@@ -158,19 +167,7 @@ int StartSession(const Options& o, const SceneDescription* scene, Session* s, Ru
     io.DeltaTime = float(o.frameTime.ToDouble());
     ApplyBookImGuiStyle();  // StyleColorsClassic() plus the book's 1.50 look (Windows/)
     ImGui_ImplOpenGL2_Init();
-
-    s->window = std::make_unique<DemoWindow>("Physics Sandbox", o.width, o.height);
-    s->window->OnInitialize();
-    s->window->OnResize(o.width, o.height);
-    s->window->SetUIVisible(!o.noUi);
-    s->window->SetNominalFrameTime(float(1000.0 * o.frameTime.ToDouble()));
-    const bool started = scene != nullptr ? s->window->StartDemo(std::make_unique<SceneFileDemo>(*scene), o.demo)
-                                          : s->window->StartDemo(o.demo);
-    if (!started || !s->window->CurrentDemo()) {
-        std::fprintf(stderr, "physics-sandbox: demo '%s' failed to start\n", o.demo.c_str());
-        return kExitFailure;
-    }
-    return kExitOk;
+    return StartDemo(o, scene, s, true);
 }
 
 // --set in order (exit 2 naming the key and listing the table).
@@ -383,7 +380,7 @@ bool RunFrame(RunLoop& r, int frame, std::string* failure) {
         if (!r.o.noUi) ImGui::EndFrame();
         return false;
     }
-    RenderFrame(r);
+    if (r.o.draws) RenderFrame(r);
     r.stats->renderSeconds += Since(renderStart);
     const bool selected = r.outputs.WantsFrames() && Selected(r, frame);
     if ((selected || r.outputs.Recording()) && !QueueFrame(r, frame, selected)) return false;
@@ -515,6 +512,10 @@ int RunUnguarded(const Options& given, RunStats* stats) {
     Options o = given;
     SceneDescription scene;
     const bool fromFile = !o.scene.empty();
+    // A run that writes no picture makes no GL context and draws nothing; its UI frames go too (the panels
+    // only read the parameters), so the physics and the --state rows are those of a drawn run.
+    o.draws = !o.outDir.empty() || !o.compareDir.empty() || !o.videoFile.empty();
+    if (!o.draws) o.noUi = true, stats->renderer = "no drawing";
     int code = fromFile ? LoadScene(&o, &scene) : CheckDemoId(o.demo);
     if (code == kExitOk) code = CheckBackend(o);
     if (code == kExitOk) code = CheckOutputArguments(o);
@@ -536,6 +537,7 @@ int RunUnguarded(const Options& given, RunStats* stats) {
 
     // From here on a failure is a run-time failure (exit 3).
     RunOutputs outputs(o);
+    outputs.renderer = stats->glStrings;
     std::string error;
     if (!outputs.Open(&error, demo.AutoModelOf().Active())) {
         std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());

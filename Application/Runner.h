@@ -23,7 +23,10 @@ struct RunStats {
                                      ///< rasterises on this thread with LP_NUM_THREADS=0)
     double encodeCpuSeconds = 0.0;   ///< the thread running the encode jobs
     double processCpuSeconds = 0.0;  ///< whole process over the run
-    std::string renderer;            ///< glGetString(GL_RENDERER)
+    std::string renderer;            ///< glGetString(GL_RENDERER) and the back end, for the summary
+    /// "GL_VENDOR ...; GL_RENDERER ...; GL_VERSION ...; back end ..." ("" without drawing): the renderer line of
+    /// compare.txt and of a golden directory's renderer.txt (RunOutputs::renderer).
+    std::string glStrings;
 };
 
 /// Exit codes of physics-sandbox.

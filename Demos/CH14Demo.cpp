@@ -60,9 +60,10 @@ void CH14Demo::ResetDemo() {
 
 void CH14Demo::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
-    InitializeBookView();
     ResetDemo();
 }
+
+void CH14Demo::InitializeDrawing() { InitializeBookView(); }
 
 void CH14Demo::Update(float dt) {
     DemoBase::Update(dt);

@@ -13,8 +13,10 @@ public:
     /// Help), the model keys integrator, dt, seed and the error-budget keys (DemoBase::AddAutoModelKeys). particles and
     /// seed set before the first step rebuild at once (so --set applies).
     CH14Demo();
-    /// Book camera preset, lighting on, light (0.5, 1, -1.5, 0) until the first Render, scene built.
+    /// Book camera preset, scene built.
     void Initialize(int width, int height) override;
+    /// Lighting on, light (0.5, 1, -1.5, 0) until the first Render.
+    void InitializeDrawing() override;
     /// Origin axes, light (0, 1, 0, 0), then the physics system (red particles, blue ground, green boards).
     void Render() override;
     /// Camera, then one physics step of dt seconds and the y < -5 clamp. The panel's "Simulation delta"

@@ -20,9 +20,12 @@ CH15Demo::CH15Demo() {
 
 void CH15Demo::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
+    scene.Reset();
+}
+
+void CH15Demo::InitializeDrawing() {
     glPointSize(5.0f);
     EnableBookLighting();
-    scene.Reset();
 }
 
 void CH15Demo::Render() {

@@ -8,8 +8,10 @@ class CH15Demo : public DemoBase {
 public:
     /// Registers the scene's table and the contact-solver text row.
     CH15Demo();
-    /// Camera target (3.75622, 2.98255, 0), zoom 12, rotation (-67.9312, 19.8); point size 5; the scene.
+    /// Camera target (3.75622, 2.98255, 0), zoom 12, rotation (-67.9312, 19.8); the scene.
     void Initialize(int width, int height) override;
+    /// Point size 5, lighting on.
+    void InitializeDrawing() override;
     /// Origin, light (0, 1, 0, 0), then the physics system (random colours; edges and manifolds if debug).
     void Render() override;
     /// Camera, then one physics step of dt.

@@ -12,10 +12,11 @@ CH16Demo::CH16Demo() {
 
 void CH16Demo::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
-    InitializeBookView();
     scene.Reset();
     reported = false;
 }
+
+void CH16Demo::InitializeDrawing() { InitializeBookView(); }
 
 void CH16Demo::Update(float dt) {
     DemoBase::Update(dt);

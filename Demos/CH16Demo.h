@@ -9,8 +9,10 @@ class CH16Demo : public DemoBase {
 public:
     /// Registers the scene's table: count, distance, k, spring-damping, reset, integrator, dt (--set resets).
     CH16Demo();
-    /// Book camera preset (CH14's), lighting on, scene rebuilt from the current values.
+    /// Book camera preset (CH14's), scene rebuilt from the current values.
     void Initialize(int width, int height) override;
+    /// Lighting on, light (0.5, 1, -1.5, 0) until the first Render.
+    void InitializeDrawing() override;
     /// Origin, light (0, 1, 0, 0), the four posts drawn thin (half-size 0.1, 0.5, 0.1) in green although they
     /// collide at 0.3, the ground in blue, the cloth as red one-sided triangles (docs/book-reference.md §2.7).
     void Render() override;

@@ -14,12 +14,15 @@ CollisionFeature::CollisionFeature() { AddCollisionFeatureParameters(&params, &p
 
 void CollisionFeature::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
+    scene.Reset();
+}
+
+void CollisionFeature::InitializeDrawing() {
     glPointSize(5.0f);
     glEnable(GL_LIGHTING);
     glEnable(GL_LIGHT0);
     SetLightDirection(kLightDirection);
     SetLightColors(kLightColor, kLightColor);
-    scene.Reset();
 }
 
 void CollisionFeature::ScriptFrame(int frame) {

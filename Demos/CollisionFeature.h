@@ -8,8 +8,10 @@
 class CollisionFeature : public DemoBase {
 public:
     CollisionFeature();
-    /// Point size 5, lighting on, light (0.5, 1, -1.5, 0); the book's start poses.
+    /// The book's start poses.
     void Initialize(int width, int height) override;
+    /// Point size 5, lighting on, light (0.5, 1, -1.5, 0) and its colours.
+    void InitializeDrawing() override;
     /// Manifolds of the current poses; non-colliding shapes solid in the blue light, colliding ones unlit
     /// blue (box edges, wireframe sphere), then every contact point red (r1..r6: erratum 5.2-24).
     void Render() override;

@@ -20,9 +20,12 @@ ConservationOfMomentum::ConservationOfMomentum() {
 
 void ConservationOfMomentum::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
+    scene.Reset();
+}
+
+void ConservationOfMomentum::InitializeDrawing() {
     glPointSize(5.0f);
     EnableBookLighting();
-    scene.Reset();
 }
 
 void ConservationOfMomentum::Render() {

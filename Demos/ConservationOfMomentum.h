@@ -8,8 +8,10 @@ class ConservationOfMomentum : public DemoBase {
 public:
     /// Registers the reset action.
     ConservationOfMomentum();
-    /// The CH14 camera preset with zoom 12; point size 5; the scene (ImpulseIteration 20).
+    /// The CH14 camera preset with zoom 12; the scene (ImpulseIteration 20).
     void Initialize(int width, int height) override;
+    /// Point size 5, lighting on.
+    void InitializeDrawing() override;
     /// Origin, light (0, 1, 0, 0), then the physics system in random colours.
     void Render() override;
     /// Camera, then one physics step of dt.

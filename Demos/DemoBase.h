@@ -31,8 +31,11 @@ public:
     DemoBase(const DemoBase&) = delete;
     DemoBase& operator=(const DemoBase&) = delete;
 
-    /// Calls Resize; subclasses build their scene here.
+    /// Calls Resize; subclasses build their scene here (no GL calls: InitializeDrawing).
     virtual void Initialize(int width, int height);
+    /// The GL state the demo draws with (lights, point size). The host calls it after Initialize, with the
+    /// context current, only when it draws: a run without pictures has no GL context. Default: nothing.
+    virtual void InitializeDrawing() {}
     /// camera.Perspective(60, w/h, 0.01, 1000) and remembers the viewport size.
     virtual void Resize(int width, int height);
     /// Draws the origin axes (no depth test, unlit).
@@ -94,9 +97,9 @@ protected:
     /// the demo's constructor (the book does it in Initialize), so `camera` is the demo's view before any GL context
     /// exists: --export-scene writes it.
     void UseBookCamera(float zoom);
-    /// Turns on GL_LIGHTING and GL_LIGHT0, as each demo's Initialize does (docs/book-reference.md §1.5).
+    /// Turns on GL_LIGHTING and GL_LIGHT0, as each demo's InitializeDrawing does (docs/book-reference.md §1.5).
     static void EnableBookLighting();
-    /// CH14's and the chapter 16 demos' Initialize view: EnableBookLighting, the light (0.5, 1, -1.5, 0) until
+    /// CH14's and the chapter 16 demos' InitializeDrawing: EnableBookLighting, the light (0.5, 1, -1.5, 0) until
     /// the first Render (docs/book-reference.md §1.5). Their camera is set by their constructor (UseBookCamera(9)).
     void InitializeBookView();
 

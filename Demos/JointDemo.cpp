@@ -13,13 +13,14 @@ JointDemo::JointDemo() : scene(JointParams(), &rng) {
 
 void JointDemo::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
-    InitializeBookView();
     // The scene was built in the constructor with the book's first spawn; rebuilding here would draw the
     // next random numbers, so only a later Initialize rebuilds.
     if (initialized) scene.Reset();
     initialized = true;
     reported = false;
 }
+
+void JointDemo::InitializeDrawing() { InitializeBookView(); }
 
 void JointDemo::Update(float dt) {
     DemoBase::Update(dt);

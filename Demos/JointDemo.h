@@ -10,8 +10,10 @@ class JointDemo : public DemoBase {
 public:
     /// Registers the scene's table (particles, reset, integrator, dt; --set resets) and Show Help.
     JointDemo();
-    /// Book camera preset (CH14's), lighting on, scene rebuilt from the current values.
+    /// Book camera preset (CH14's), scene rebuilt from the current values.
     void Initialize(int width, int height) override;
+    /// Lighting on, light (0.5, 1, -1.5, 0) until the first Render.
+    void InitializeDrawing() override;
     /// Origin, light (0, 1, 0, 0), the physics system: red particles, blue ground, green boards, joint lines.
     void Render() override;
     /// Camera, then one physics step of dt seconds (the host runs whole steps of PhysicsStep()); stops and

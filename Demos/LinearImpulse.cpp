@@ -18,9 +18,12 @@ LinearImpulse::LinearImpulse() {
 
 void LinearImpulse::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
+    scene.Reset();
+}
+
+void LinearImpulse::InitializeDrawing() {
     glPointSize(5.0f);
     EnableBookLighting();
-    scene.Reset();
 }
 
 void LinearImpulse::Render() {

@@ -9,8 +9,10 @@ class LinearImpulse : public DemoBase {
 public:
     /// Registers step, frames, reset, pause, spheres and drop.
     LinearImpulse();
-    /// The CH14 camera preset with zoom 9; point size 5; the scene.
+    /// The CH14 camera preset with zoom 9; the scene.
     void Initialize(int width, int height) override;
+    /// Point size 5, lighting on.
+    void InitializeDrawing() override;
     /// Origin, light (0, 1, 0, 0), then the physics system in random colours.
     void Render() override;
     /// Camera, then a step unless paused (or one queued step while paused).

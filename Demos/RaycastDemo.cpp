@@ -50,11 +50,6 @@ RaycastDemo::RaycastDemo() {
 
 void RaycastDemo::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
-    glPointSize(5.0f);
-    glEnable(GL_LIGHTING);
-    glEnable(GL_LIGHT0);
-    SetLightDirection(kLightDirection);
-
     const std::string path = FirstObjFile(PSB_DEMO_ASSET_DIR);
     std::string error = path.empty() ? std::string("no .obj file in " PSB_DEMO_ASSET_DIR) : std::string();
     if (!path.empty() && scene.LoadModel(path, &error)) {
@@ -63,6 +58,13 @@ void RaycastDemo::Initialize(int width, int height) {
         modelStatus = "no model (" + error + ")";
         std::fprintf(stderr, "raycast: %s\n", modelStatus.c_str());
     }
+}
+
+void RaycastDemo::InitializeDrawing() {
+    glPointSize(5.0f);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_LIGHT0);
+    SetLightDirection(kLightDirection);
 }
 
 void RaycastDemo::ScriptFrame(int frame) {

@@ -10,8 +10,10 @@
 class RaycastDemo : public DemoBase {
 public:
     RaycastDemo();
-    /// Point size 5, lighting on, light (0.5, 1, -1.5, 0); loads the first OBJ of Demos/assets.
+    /// Loads the first OBJ of Demos/assets.
     void Initialize(int width, int height) override;
+    /// Point size 5, lighting on, light (0.5, 1, -1.5, 0).
+    void InitializeDrawing() override;
     /// Origin, the shapes in the blue light, then unlit: the hit (red point, green unit normal) and the pick
     /// ray (blue).
     void Render() override;

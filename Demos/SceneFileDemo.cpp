@@ -19,6 +19,9 @@ void SceneFileDemo::Initialize(int width, int height) {
     camera.SetTarget(c.target);
     camera.SetZoom(c.zoom);
     camera.SetRotation(c.rotation);
+}
+
+void SceneFileDemo::InitializeDrawing() {
     glPointSize(5.0f);
     EnableBookLighting();
 }

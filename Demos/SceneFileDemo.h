@@ -12,8 +12,10 @@ public:
     /// Builds the scene and registers its model settings (FileScene::AddParameters), the help button and the
     /// error-budget keys, which start at the file's "model" and "budget".
     explicit SceneFileDemo(const SceneDescription& description);
-    /// The file's camera (the book's orbit camera), point size 5, the book's lighting; the scene.
+    /// The file's camera (the book's orbit camera); the scene.
     void Initialize(int width, int height) override;
+    /// Point size 5, the book's lighting.
+    void InitializeDrawing() override;
     /// Origin, light (0, 1, 0, 0), the physics system as the book draws it, then bodies with a colour of their own.
     void Render() override;
     /// Camera, then one physics step of dt.

@@ -13,10 +13,11 @@ SimpleSprings::SimpleSprings() {
 
 void SimpleSprings::Initialize(int width, int height) {
     DemoBase::Initialize(width, height);
-    InitializeBookView();
     scene.Reset();
     reported = false;
 }
+
+void SimpleSprings::InitializeDrawing() { InitializeBookView(); }
 
 void SimpleSprings::Update(float dt) {
     DemoBase::Update(dt);

@@ -10,8 +10,10 @@ public:
     /// Registers the scene's table (k, spring-damping, rest-length, reset, integrator, dt; --set resets the
     /// scene, the sliders wait for Reset) and the Show Help button.
     SimpleSprings();
-    /// Book camera preset (CH14's), lighting on, scene rebuilt from the current values.
+    /// Book camera preset (CH14's), scene rebuilt from the current values.
     void Initialize(int width, int height) override;
+    /// Lighting on, light (0.5, 1, -1.5, 0) until the first Render.
+    void InitializeDrawing() override;
     /// Origin, light (0, 1, 0, 0), the physics system: red particles, blue ground, the spring line.
     void Render() override;
     /// Camera, then one physics step of dt seconds (the host runs whole steps of PhysicsStep()); stops and

@@ -74,7 +74,7 @@ std::unique_ptr<HeadlessContext> CreateBackend(int width, int height, HeadlessBa
     *device = choice.platform == "device" ? "device " + choice.device : choice.platform;
     return context;
 #else
-    (void)device;
+    (void)width, (void)height, (void)device;
     return nullptr;
 #endif
 }
@@ -116,6 +116,7 @@ std::unique_ptr<HeadlessContext> CreateHeadlessContext(int width, int height, He
         };
         info->backend = context->BackendName();
         info->device = device;
+        info->vendor = text(GL_VENDOR);
         info->renderer = text(GL_RENDERER);
         info->version = text(GL_VERSION);
         info->depthBits = depthBits;

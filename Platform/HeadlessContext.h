@@ -35,6 +35,7 @@ protected:
 struct HeadlessInfo {
     std::string backend;   ///< "osmesa" or "egl"
     std::string device;    ///< EGL: "device <file>", "device software" or "surfaceless"; "" for OSMesa
+    std::string vendor;    ///< glGetString(GL_VENDOR), e.g. "Mesa"
     std::string renderer;  ///< glGetString(GL_RENDERER), e.g. "llvmpipe (LLVM 15.0.6, 128 bits)"
     std::string version;   ///< glGetString(GL_VERSION)
     int depthBits = 0;

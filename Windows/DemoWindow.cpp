@@ -31,7 +31,10 @@ DemoWindow::DemoWindow(const std::string& windowTitle, int w, int h) : GLWindow(
 DemoWindow::~DemoWindow() { StopDemo(); }
 
 void DemoWindow::OnInitialize() {
-    GLWindow::OnInitialize();
+    if (drawing)
+        GLWindow::OnInitialize();
+    else
+        OnResize(width, height);
     selectAll = false;  // the book's constructor sets it, OnInitialize clears it
 }
 
@@ -44,7 +47,7 @@ void DemoWindow::OnRender() {
 }
 
 void DemoWindow::OnResize(int w, int h) {
-    GLWindow::OnResize(w, h);
+    if (drawing) GLWindow::OnResize(w, h);
     if (demo) demo->Resize(w, h);
 }
 
@@ -121,6 +124,7 @@ bool DemoWindow::StartDemo(std::unique_ptr<DemoBase> created, const std::string&
     if (!demo) return false;
     demoId = id;
     demo->Initialize(width, height);
+    if (drawing) demo->InitializeDrawing();
     demo->camera.Update(0.0f);  // erratum 5.2-29: the book shows an identity view until the first fixed step
     prevMousePos = GetMousePosition();
     return true;

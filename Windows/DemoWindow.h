@@ -42,6 +42,11 @@ public:
     DemoBase* CurrentDemo() { return demo.get(); }
     /// "" when no demo runs.
     const std::string& CurrentDemoId() const { return demoId; }
+    /// Off: a host without a GL context (a run that writes no pictures). OnInitialize, OnResize and StartDemo
+    /// then make no GL call (no demo InitializeDrawing), and the host never calls OnRender or OnUpdate with the
+    /// UI visible. Set before OnInitialize; on by default.
+    void SetDrawing(bool value) { drawing = value; }
+    bool Drawing() const { return drawing; }
     /// Hidden: OnUpdate draws nothing (the host then skips the ImGui frame).
     void SetUIVisible(bool visible) { uiVisible = visible; }
     bool UIVisible() const { return uiVisible; }
@@ -58,6 +63,7 @@ private:
     std::unique_ptr<DemoBase> demo;
     std::string demoId;
     bool uiVisible = true;
+    bool drawing = true;
     bool selectAll = false;
     float nominalFrameMs = 16.0f;  // the book's frame limiter: 1000 / 60 in integer ms (docs/book-reference.md §1.2)
     vec2 prevMousePos;

@@ -23,6 +23,7 @@ packages=(
   libglfw3-dev        # --window: the desktop window (X11)
   xvfb xdotool        # the window test: a private X display, driven by synthetic mouse input
   ffmpeg              # --video: MP4, WebM and GIF recording (the ffmpeg and ffprobe programs)
+  chromium            # the review.browser CTest opens scripts/review-goldens.sh's page in headless Chromium
   parallel            # GNU parallel: scripts/sweep-parallel.sh runs sweep shards on cores or ssh hosts
   clang               # libFuzzer targets (scripts/fuzz.sh, docs/testing.md)
   libclang-rt-14-dev  # clang 14's libFuzzer and sanitizer runtimes (only Recommended by clang, so named here)

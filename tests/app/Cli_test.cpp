@@ -213,6 +213,43 @@ TEST(Cli, SameCommandGivesByteIdenticalFramesAndState) {
     }
 }
 
+TEST(Cli, MinSsimPassesAFrameFromTheOtherBackEndThatPixelsFail) {
+    // Goldens through OSMesa; frames through EGL (docs/rendering.md "Back ends"), once as made and once seen from
+    // 0.93 degrees further round (SSIM about 0.999 at 160x120), compared with no pixel tolerance at all.
+    const std::string golden = ScratchDir("ssim_golden");
+    const std::vector<std::string> base = {"--demo", "ch15",   "--frames", "31",     "--only-frames",
+                                           "30",     "--size", "160x120",  "--quiet"};
+    auto args = base;
+    args.insert(args.end(), {"--backend", "osmesa", "--compare", golden, "--update-golden"});
+    SandboxResult r = RunSandboxExe(args);
+    if (r.exitCode == 2 && r.err.find("this build has no") != std::string::npos) GTEST_SKIP() << r.err;
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string out = ScratchDir("ssim_out");
+    auto compare = [&](const std::vector<std::string>& extra) {
+        fs::remove_all(out);
+        auto a = base;
+        a.insert(a.end(),
+                 {"--backend", "egl", "--compare", golden, "--out", out, "--tolerance", "0", "--max-diff", "0"});
+        a.insert(a.end(), extra.begin(), extra.end());
+        return RunSandboxExe(a);
+    };
+    r = compare({"--min-ssim", "0.99"});
+    if (r.exitCode == 2 || r.err.find("no OpenGL context") != std::string::npos) GTEST_SKIP() << "no EGL: " << r.err;
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(ReadText(out + "/compare.txt").find("frame_00030.png: "), std::string::npos);
+
+    r = compare({"--camera-yaw", "-67"});
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_NE(r.err.find(", SSIM 0.99"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(out + "/mismatch/frame_00030.amplified.png"));
+    r = compare({"--camera-yaw", "-67", "--min-ssim", "0.995"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    const std::string report = ReadText(out + "/compare.txt");
+    EXPECT_NE(report.find(": pass on SSIM"), std::string::npos) << report;
+    EXPECT_NE(report.find("min SSIM 0.995"), std::string::npos) << report;
+    EXPECT_EQ(compare({"--camera-yaw", "-67", "--min-ssim", "0.9999"}).exitCode, 1);
+}
+
 TEST(Cli, CompareReportsExactAndFlagsAMismatch) {
     REQUIRE_DEMO(id);
     const std::string golden = ScratchDir("golden");
@@ -220,7 +257,12 @@ TEST(Cli, CompareReportsExactAndFlagsAMismatch) {
     auto args = base;
     args.insert(args.end(), {"--compare", golden, "--update-golden", "--quiet"});
     ASSERT_EQ(RunSandboxExe(args).exitCode, 0);
-    ASSERT_EQ(FilesIn(golden).size(), 3u);
+    ASSERT_EQ(FilesIn(golden),
+              (std::vector<std::string>{"frame_00000.png", "frame_00001.png", "frame_00002.png", "renderer.txt"}));
+    const std::string made = ReadText(golden + "/renderer.txt");
+    EXPECT_EQ(made.rfind("GL_VENDOR ", 0), 0u) << made;
+    EXPECT_NE(made.find("; GL_RENDERER "), std::string::npos) << made;
+    EXPECT_NE(made.find("; GL_VERSION "), std::string::npos) << made;
 
     const std::string out = ScratchDir("compare_out");
     args = base;
@@ -228,6 +270,11 @@ TEST(Cli, CompareReportsExactAndFlagsAMismatch) {
     SandboxResult r = RunSandboxExe(args);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.err.find("frame_00001.png: exact"), std::string::npos) << r.err;
+    // compare.txt names the renderer of both sides.
+    const std::string line = made.substr(0, made.find('\n'));
+    EXPECT_NE(ReadText(out + "/compare.txt").find("\nrenderer: " + line + "\ngolden renderer: " + line + "\n"),
+              std::string::npos)
+        << ReadText(out + "/compare.txt");
 
     // Paint a block of frame 1's golden: beyond any tolerance over ~4 % of the pixels.
     Image img;
@@ -243,7 +290,8 @@ TEST(Cli, CompareReportsExactAndFlagsAMismatch) {
     EXPECT_EQ(r.exitCode, 1) << r.err;
     EXPECT_NE(r.err.find("frame_00000.png: exact"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("frame_00001.png: max channel diff 128"), std::string::npos) << r.err;
-    for (const char* f : {"frame_00001.expected.png", "frame_00001.actual.png", "frame_00001.diff.png"})
+    for (const char* f :
+         {"frame_00001.expected.png", "frame_00001.actual.png", "frame_00001.diff.png", "frame_00001.amplified.png"})
         EXPECT_TRUE(fs::exists(out + "/mismatch/" + f)) << f;
     EXPECT_FALSE(fs::exists(out + "/mismatch/frame_00000.diff.png"));
     EXPECT_NE(ReadText(out + "/compare.txt").find("1 mismatch"), std::string::npos);

@@ -35,6 +35,7 @@ TEST(CommandLine, Defaults) {
     EXPECT_EQ(o.step.den, 100);
     EXPECT_FALSE(o.noUi);
     EXPECT_TRUE(o.encodeThread);
+    EXPECT_LT(o.thresholds.minSsim, 0.0);  // --min-ssim off
 }
 
 TEST(CommandLine, EveryFlag) {
@@ -76,6 +77,8 @@ TEST(CommandLine, EveryFlag) {
                      "4",
                      "--max-diff",
                      "0.01",
+                     "--min-ssim",
+                     "0.95",
                      "--png-level",
                      "6",
                      "--serial-encode",
@@ -105,6 +108,7 @@ TEST(CommandLine, EveryFlag) {
     EXPECT_EQ(o.compareDir, "g");
     EXPECT_EQ(o.thresholds.channelTolerance, 4);
     EXPECT_FLOAT_EQ(float(o.thresholds.maxDifferingFraction), 0.01f);
+    EXPECT_FLOAT_EQ(float(o.thresholds.minSsim), 0.95f);
     EXPECT_EQ(o.pngLevel, 6);
     EXPECT_FALSE(o.encodeThread);
     EXPECT_EQ(o.progressEvery, 5);
@@ -160,6 +164,7 @@ TEST(CommandLine, EveryIntegerIsRangeCheckedWithoutOverflow) {
     }
     ExpectError({"--demo", "x", "--debug-nonfinite-at", "-1"}, "--debug-nonfinite-at -1");
     ExpectError({"--demo", "x", "--tolerance", "256"}, "--tolerance 256");
+    ExpectError({"--demo", "x", "--min-ssim", "1.5"}, "--min-ssim 1.5");
     ExpectError({"--demo", "x", "--frames", "1.5"}, "--frames 1.5");
     ExpectError({"--demo", "x", "--frames", " 5"}, "--frames  5");
     Options o;
@@ -195,6 +200,7 @@ TEST(CommandLine, HelpListsEveryFlagTheParserAccepts) {
                              "--update-golden",
                              "--tolerance",
                              "--max-diff",
+                             "--min-ssim",
                              "--png-level",
                              "--serial-encode",
                              "--progress",

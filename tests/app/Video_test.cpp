@@ -84,7 +84,8 @@ TEST(BackendUsage, UnknownBackendsAreRefusedAndEachBuiltBackendRuns) {
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("vulkan"), std::string::npos) << r.err;
     for (const char* backend : {"osmesa", "egl"}) {
-        r = RunSandboxExe({"--demo", "ch14", "--frames", "2", "--size", "64x48", "--backend", backend});
+        const std::string out = ScratchDir(std::string("backend-") + backend);
+        r = RunSandboxExe({"--demo", "ch14", "--frames", "2", "--size", "64x48", "--backend", backend, "--out", out});
         if (r.exitCode == 2 && r.err.find("this build has no") != std::string::npos) continue;  // left out by CMake
         EXPECT_EQ(r.exitCode, 0) << backend << ": " << r.err;
         EXPECT_NE(r.err.find(std::string("via ") + backend), std::string::npos) << r.err;
