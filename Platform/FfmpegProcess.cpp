@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <sstream>
 #include <thread>
 
@@ -151,6 +152,25 @@ ChildEnd WaitForChild(pid_t pid, double stallSeconds, const std::string& progres
     }
 }
 
+bool WaitForFfmpeg(pid_t pid, double stallSeconds, const std::string& output, const std::string& logPath,
+                   std::string* error) {
+    int code = -1;
+    const ChildEnd end = WaitForChild(pid, stallSeconds, output, &code);
+    const std::string last = LastLineOf(logPath);
+    if (end == ChildEnd::Exited && code == 0 && last.empty()) return true;
+    std::ostringstream text;
+    text << "ffmpeg failed";
+    if (end == ChildEnd::Stalled)
+        text << ": no progress for " << stallSeconds << " s (PSB_ENCODER_TIMEOUT); stopped";
+    else if (end == ChildEnd::Signalled)
+        text << " (killed by a signal)";
+    else if (code != 0)
+        text << " with exit code " << code;
+    if (!last.empty()) text << ": " << last;
+    *error = text.str();
+    return false;
+}
+
 void KillChild(pid_t pid) {
     if (pid <= 0) return;
     kill(pid, SIGKILL);
@@ -158,4 +178,12 @@ void KillChild(pid_t pid) {
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
     }
     UnregisterChildProcess(pid);
+}
+
+std::string LastLineOf(const std::string& outputPath) {
+    std::ifstream in(outputPath);
+    std::string line, last;
+    while (std::getline(in, line))
+        if (!line.empty()) last = line;
+    return last;
 }

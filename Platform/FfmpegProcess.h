@@ -31,8 +31,18 @@ enum class ChildEnd { Exited, Signalled, Stalled };
 /// The child is unregistered in every case.
 ChildEnd WaitForChild(pid_t pid, double stallSeconds, const std::string& progressPath, int* exitCode);
 
+/// Waits for an ffmpeg started at `-loglevel error` with its output in logPath (WaitForChild, output growing
+/// is progress). True only if it exited 0 with nothing in its log: it exits 0 after "Error writing trailer"
+/// (a full disk, a file-size limit), so any line there is a failure. Else false, *error saying how it ended
+/// and its last line.
+bool WaitForFfmpeg(pid_t pid, double stallSeconds, const std::string& output, const std::string& logPath,
+                   std::string* error);
+
 /// Kills pid (SIGKILL), reaps it and unregisters it. Ignores pid <= 0.
 void KillChild(pid_t pid);
+
+/// The last non-empty line of a child's output file ("" if none): its last message.
+std::string LastLineOf(const std::string& outputPath);
 
 /// True if an executable named program is on PATH.
 bool ProgramOnPath(const std::string& program);

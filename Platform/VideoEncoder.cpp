@@ -11,7 +11,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <iterator>
 #include <sstream>
 
@@ -64,15 +63,6 @@ bool WriteWhole(const std::string& path, const std::vector<std::uint8_t>& bytes,
         return false;
     }
     return ok;
-}
-
-/// The last non-empty line of a text file ("" if none).
-std::string LastLine(const std::string& path) {
-    std::ifstream in(path);
-    std::string line, last;
-    while (std::getline(in, line))
-        if (!line.empty()) last = line;
-    return last;
 }
 
 }  // namespace
@@ -165,24 +155,9 @@ bool VideoEncoder::Wait(const std::string& output, std::string* error) {
         *error = "ffmpeg is not running";
         return false;
     }
-    int code = -1;
-    const ChildEnd end = WaitForChild(child, stallSeconds, output, &code);
+    const pid_t pid = child;
     child = -1;
-    // At -loglevel error, ffmpeg writes only errors: a line in the log is a failure even after exit 0 (it exits
-    // 0 after "Error writing trailer", when the disk is full or a file-size limit is reached).
-    const std::string last = LastLine(logPath);
-    if (end == ChildEnd::Exited && code == 0 && last.empty()) return true;
-    std::ostringstream text;
-    text << "ffmpeg failed";
-    if (end == ChildEnd::Stalled)
-        text << ": no progress for " << stallSeconds << " s (PSB_ENCODER_TIMEOUT); stopped";
-    else if (end == ChildEnd::Signalled)
-        text << " (killed by a signal)";
-    else if (code != 0)
-        text << " with exit code " << code;
-    if (!last.empty()) text << ": " << last;
-    *error = text.str();
-    return false;
+    return WaitForFfmpeg(pid, stallSeconds, output, logPath, error);
 }
 
 bool VideoEncoder::WriteFrame(const Image& frame, std::string* error) {
