@@ -279,12 +279,13 @@ int RunOutputs::Finish(int code) {
         std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
         code = kExitFailure;
     }
-    if (state.IsOpen() && code == kExitOk && !state.Commit(&error)) {
-        std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
-        code = kExitFailure;
-    }
+    // The video first: it is checked as it finishes (Platform/VideoFileCheck.h), and a failed run keeps no CSV.
     if (video.IsOpen() && code == kExitOk && !video.Finish(&error)) {
         std::fprintf(stderr, "physics-sandbox: --video %s: %s\n", o.videoFile.c_str(), error.c_str());
+        code = kExitFailure;
+    }
+    if (state.IsOpen() && code == kExitOk && !state.Commit(&error)) {
+        std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
         code = kExitFailure;
     }
     if (code != kExitOk) state.Abandon(), video.Abort();

@@ -72,13 +72,15 @@ TEST_F(VideoFailure, AnFfmpegThatExitsZeroWithoutWritingExitsThreeAndKeepsTheEar
         const std::string bin = FakeFfmpeg("video-fake", body);
         for (const char* name : {"v.mp4", "v.webm", "v.gif"}) {
             const std::string dir = WithGoodVideo(std::string("video-fake-") + name, name);
-            const SandboxResult r = RunSandboxShell(
-                "PATH='" + bin + "':$PATH",
-                {"--demo", "ch15", "--frames", "60", "--size", "320x240", "--video", dir + "/" + name, "--quiet"});
+            // With --state: a run whose video failed keeps no CSV either.
+            const SandboxResult r = RunSandboxShell("PATH='" + bin + "':$PATH",
+                                                    {"--demo", "ch15", "--frames", "60", "--size", "320x240", "--video",
+                                                     dir + "/" + name, "--state", dir + "/s.csv", "--quiet"});
             EXPECT_EQ(r.exitCode, 3) << body << ", " << name << ": " << r.err;
             EXPECT_NE(r.err.find("--video " + dir + "/" + name), std::string::npos) << r.err;
             EXPECT_TRUE(ReadText(dir + "/" + name) == good) << body << ", " << name << ": the earlier video must stay";
-            EXPECT_EQ(Entries(dir), std::vector<std::string>{name}) << body << ": no temporary left";
+            EXPECT_EQ(Entries(dir), std::vector<std::string>{name})
+                << body << ": nothing else left (no temporary, no CSV)";
         }
     }
 }
