@@ -264,19 +264,43 @@ bool ParseValue(const Flag& f, const std::string& text, FlagValue* v) {
     return false;
 }
 
-/// Checks the combinations a single flag cannot (after every flag was read).
-/// The first headless-only flag given with --window, or nullptr.
-const char* HeadlessOnlyFlag(const Options& o) {
-    if (!o.outDir.empty()) return "--out";
-    if (!o.compareDir.empty()) return "--compare";
-    if (!o.stateFile.empty()) return "--state";
-    if (!o.videoFile.empty()) return "--video";
-    if (!o.onlyFrames.empty()) return "--only-frames";
-    if (o.updateGolden) return "--update-golden";
-    if (o.showParams) return "--params";
-    if (o.explainModel) return "--explain-model";
+// ---- Where each flag applies: a flag given where it would be ignored is refused (exit 2), never dropped.
+
+/// A flag that means something besides a headless run. Every flag not listed is for headless runs only.
+struct FlagScope {
+    const char* name;
+    bool window;       ///< --window uses it (Application/WindowedRunner.h: demo, --set, length, size, step, panels)
+    bool exportScene;  ///< --export-scene uses it (the demo's scene after --set, and its camera)
+};
+
+constexpr FlagScope kScopes[] = {
+    {"--demo", true, true},
+    {"--set", true, true},
+    {"--quiet", true, true},
+    {"--window", true, false},
+    {"--frames", true, false},
+    {"--size", true, false},
+    {"--dt", true, false},
+    {"--no-ui", true, false},
+    {"--export-scene", false, true},
+    {"--camera-yaw", false, true},
+    {"--camera-pitch", false, true},
+    {"--camera-zoom", false, true},
+    {"--camera-target", false, true},
+};
+
+/// The first flag given that --window (window) or --export-scene (!window) would ignore, or nullptr.
+const char* IgnoredFlag(const Options& o, bool window) {
+    for (const std::string& given : o.flagsGiven) {
+        const FlagScope* scope = nullptr;
+        for (const FlagScope& s : kScopes)
+            if (given == s.name) scope = &s;
+        if (scope == nullptr || !(window ? scope->window : scope->exportScene)) return FindFlag(given)->name;
+    }
     return nullptr;
 }
+
+/// Checks the combinations a single flag cannot (after every flag was read).
 
 bool CheckCombinations(const Options& o, std::string* error) {
     if (o.mode != Options::Mode::Run) return true;
@@ -293,12 +317,19 @@ bool CheckCombinations(const Options& o, std::string* error) {
             "--export-scene and --explain-model both given; give one (an exported scene keeps \"model\": \"auto\")";
         return false;
     }
+    if (!o.exportScene.empty()) {
+        if (const char* flag = IgnoredFlag(o, false)) {
+            *error = std::string("--export-scene writes the demo's scene file and exits; ") + flag +
+                     " does not apply to it (it takes --demo, --set and the --camera-* flags)";
+            return false;
+        }
+    }
     if (o.window) {
         if (!o.scene.empty()) {
             *error = "--scene runs headless; --window opens the book's demos only";
             return false;
         }
-        if (const char* flag = HeadlessOnlyFlag(o)) {
+        if (const char* flag = IgnoredFlag(o, true)) {
             *error = std::string("--window shows frames on the screen; ") + flag + " is for headless runs";
             return false;
         }
@@ -349,6 +380,7 @@ ParseStatus ParseCommandLine(int argc, const char* const* argv, Options* o, std:
             return ParseStatus::Error;
         }
         flag->apply(*o, value);
+        o->flagsGiven.push_back(flag->name);
     }
     return CheckCombinations(*o, error) ? ParseStatus::Ok : ParseStatus::Error;
 }

@@ -58,6 +58,9 @@ struct Options {
     /// Test hook: report frame N as non-finite (exercises the exit-3 path; DemoBase::StateIsFinite is the
     /// real check). -1 = off.
     int debugNonFiniteAt = -1;
+    /// Every flag on the command line, by its name in the flag table, in order (repeats included): a flag that
+    /// the chosen mode (--window, --export-scene) would ignore is refused.
+    std::vector<std::string> flagsGiven;
 };
 
 enum class ParseStatus { Ok, Error };

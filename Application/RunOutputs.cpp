@@ -35,7 +35,8 @@ int Usage(const std::string& message) {
 /// The absolute path with symlinks and ".." resolved as far as it exists, without a trailing separator.
 fs::path Resolved(const std::string& path) {
     std::error_code ec;
-    fs::path p = fs::weakly_canonical(fs::path(path.empty() ? "." : path), ec);
+    // Absolute first: weakly_canonical leaves a relative path relative when none of it exists yet.
+    fs::path p = fs::weakly_canonical(fs::absolute(fs::path(path.empty() ? "." : path), ec), ec);
     if (ec) p = fs::absolute(path, ec).lexically_normal();
     if (!p.has_filename() && p.has_parent_path() && p != p.root_path()) p = p.parent_path();
     return p;
@@ -44,6 +45,27 @@ fs::path Resolved(const std::string& path) {
 bool SameDirectory(const std::string& a, const std::string& b) {
     std::error_code ec;
     return Resolved(a) == Resolved(b) || (fs::equivalent(a, b, ec) && !ec);
+}
+
+/// True if inner is outer or lies inside it (both resolved as far as they exist).
+bool IsWithin(const std::string& inner, const std::string& outer) {
+    const fs::path in = Resolved(inner), out = Resolved(outer);
+    auto i = in.begin();
+    for (auto o = out.begin(); o != out.end(); ++o, ++i)
+        if (i == in.end() || *i != *o) return false;
+    return true;
+}
+
+/// The directory the run writes its frames into and creates (--out; --compare with --update-golden), or "".
+std::string FrameDirectory(const Options& o) { return o.updateGolden ? o.compareDir : o.outDir; }
+
+/// A file target (--state, --video) must not be the frame directory or one of the directories the run creates on
+/// the way to it: the run would make it a directory, then fail to write the file. Exit 2 if it is.
+int CheckNotTheFrameDirectory(const std::string& flag, const std::string& file, const Options& o) {
+    const std::string dir = FrameDirectory(o);
+    if (dir.empty() || !IsWithin(dir, file)) return kExitOk;
+    return Usage(flag + " " + file + ": the run creates it as a directory for the frames (" +
+                 (o.updateGolden ? "--compare " : "--out ") + dir + "); name a file outside it");
 }
 
 /// A name physics-sandbox writes or reads as a frame, a golden or the comparison report.
@@ -56,6 +78,7 @@ bool IsFrameOrReportName(const std::string& name) {
 int CheckStatePath(const Options& o) {
     std::string error;
     if (!CheckWritableTarget(o.stateFile, &error)) return Usage("--state: " + error);
+    if (CheckNotTheFrameDirectory("--state", o.stateFile, o) != kExitOk) return kExitUsage;
     const fs::path state(o.stateFile);
     const std::string parent = state.parent_path().empty() ? "." : state.parent_path().string();
     for (const std::string& dir : {o.updateGolden ? o.compareDir : o.outDir, o.compareDir})
@@ -73,10 +96,13 @@ int CheckVideoPath(const Options& o) {
     std::string error;
     if (!VideoEncoder::FfmpegAvailable(&error)) return Usage(error);
     if (!CheckWritableTarget(o.videoFile, &error)) return Usage("--video: " + error);
+    if (CheckNotTheFrameDirectory("--video", o.videoFile, o) != kExitOk) return kExitUsage;
     const fs::path video(o.videoFile);
     std::error_code ec;
     const fs::path parent = video.parent_path().empty() ? fs::path(".") : video.parent_path();
-    if (!fs::is_directory(parent, ec))
+    // The frame directory and those on the way to it are created before the recording starts.
+    const std::string frameDir = FrameDirectory(o);
+    if (!fs::is_directory(parent, ec) && (frameDir.empty() || !IsWithin(frameDir, parent.string())))
         return Usage("--video " + o.videoFile + ": directory " + parent.string() + " does not exist");
     if (!o.stateFile.empty() && fs::absolute(video).lexically_normal() == fs::absolute(o.stateFile).lexically_normal())
         return Usage("--video and --state name the same file " + o.videoFile);
@@ -285,6 +311,11 @@ int RunOutputs::Finish(int code) {
         std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
         code = kExitFailure;
     }
+    // The video first: it is checked as it finishes (Platform/VideoFileCheck.h), and a failed run keeps no CSV.
+    if (video.IsOpen() && code == kExitOk && !video.Finish(&error)) {
+        std::fprintf(stderr, "physics-sandbox: --video %s: %s\n", o.videoFile.c_str(), error.c_str());
+        code = kExitFailure;
+    }
     if (state.IsOpen() && code == kExitOk && !state.Commit(&error)) {
         std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
         code = kExitFailure;
@@ -294,10 +325,6 @@ int RunOutputs::Finish(int code) {
         !WriteFileAtomic(JoinPath(frameDir, "renderer.txt"), std::vector<std::uint8_t>(line.begin(), line.end()),
                          &error)) {
         std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
-        code = kExitFailure;
-    }
-    if (video.IsOpen() && code == kExitOk && !video.Finish(&error)) {
-        std::fprintf(stderr, "physics-sandbox: --video %s: %s\n", o.videoFile.c_str(), error.c_str());
         code = kExitFailure;
     }
     if (code != kExitOk) state.Abandon(), video.Abort();

@@ -474,6 +474,11 @@ int LoadScene(Options* o, SceneDescription* scene) {
 /// Exit 2 for a demo whose motion is scripted; each thing the format cannot express is listed on stderr.
 int ExportScene(const Options& o) {
     if (const int code = CheckDemoId(o.demo); code != kExitOk) return code;
+    std::string error;
+    if (!CheckWritableTarget(o.exportScene, &error)) {  // as --state and --video: a link or device is never replaced
+        std::fprintf(stderr, "physics-sandbox: --export-scene: %s\n", error.c_str());
+        return kExitUsage;
+    }
     const DemoInfo* info = FindDemo(o.demo);
     std::unique_ptr<DemoBase> demo = info->create();
     if (const int code = ApplyParameters(o, *demo); code != kExitOk || o.showParams) return code;
@@ -495,7 +500,6 @@ int ExportScene(const Options& o) {
     demo->ExportNotes(&notes);
     if (const AutoModelRequest* request = demo->AutoModelRequestOf()) description.autoModel = *request;
     const std::string text = WriteSceneText(description);
-    std::string error;
     if (!WriteFileAtomic(o.exportScene, std::vector<std::uint8_t>(text.begin(), text.end()), &error)) {
         std::fprintf(stderr, "physics-sandbox: --export-scene: %s\n", error.c_str());
         return kExitFailure;

@@ -200,5 +200,5 @@ int RunWindowed(const WindowedOptions& o) {
     }
     ReportSummary(o, window, frames, steps);
     window.OnShutdown();
-    return kExitOk;
+    return FinishStdout();  // the demo lines and the summary must have reached stdout (exit 3 if not)
 }

@@ -3,7 +3,6 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -12,14 +11,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <iterator>
 #include <sstream>
 
+#include "Platform/FfmpegProcess.h"
 #include "Platform/Files/AtomicFile.h"
 #include "Platform/Files/TempRegistry.h"
 #include "Platform/GifJoin.h"
 #include "Platform/PngCodec.h"
+#include "Platform/VideoFileCheck.h"
 #include "Platform/Yuv420.h"
 
 namespace {
@@ -65,15 +65,6 @@ bool WriteWhole(const std::string& path, const std::vector<std::uint8_t>& bytes,
     return ok;
 }
 
-/// The last non-empty line of a text file ("" if none).
-std::string LastLine(const std::string& path) {
-    std::ifstream in(path);
-    std::string line, last;
-    while (std::getline(in, line))
-        if (!line.empty()) last = line;
-    return last;
-}
-
 }  // namespace
 
 bool VideoEncoder::FormatOf(const std::string& path, Format* out) {
@@ -92,13 +83,7 @@ bool VideoEncoder::FormatOf(const std::string& path, Format* out) {
 }
 
 bool VideoEncoder::FfmpegAvailable(std::string* error) {
-    const char* pathEnv = std::getenv("PATH");
-    std::stringstream dirs(pathEnv ? pathEnv : "/usr/bin:/bin");
-    std::string dir;
-    while (std::getline(dirs, dir, ':')) {
-        const std::string candidate = (dir.empty() ? "." : dir) + "/ffmpeg";
-        if (access(candidate.c_str(), X_OK) == 0) return true;
-    }
+    if (ProgramOnPath("ffmpeg")) return true;
     *error = "--video needs the ffmpeg program, which is not on PATH (Debian package 'ffmpeg')";
     return false;
 }
@@ -115,6 +100,7 @@ bool VideoEncoder::Open(const std::string& target, int w, int h, double framesPe
     }
     if (!FfmpegAvailable(error)) return false;
     signal(SIGPIPE, SIG_IGN);  // a dead ffmpeg must be an error from write(), not the end of this process
+    stallSeconds = EncoderStallSeconds();
     path = target;
     width = w;
     height = h;
@@ -161,56 +147,17 @@ bool VideoEncoder::Open(const std::string& target, int w, int h, double framesPe
 }
 
 bool VideoEncoder::Spawn(const std::vector<std::string>& args, bool pipeIn, std::string* error) {
-    int fds[2] = {-1, -1};
-    if (pipeIn && pipe2(fds, O_CLOEXEC) != 0) {
-        *error = std::string("pipe failed: ") + std::strerror(errno);
-        return false;
-    }
-    std::vector<char*> argv;
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    const int log = open(logPath.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);  // parts share it
-    const pid_t pid = fork();
-    if (pid == 0) {
-        // Child: stdin from the pipe (or /dev/null), stdout and stderr to the log, then ffmpeg.
-        const int in = pipeIn ? fds[0] : open("/dev/null", O_RDONLY);
-        if (in < 0 || dup2(in, 0) < 0) _exit(127);
-        if (log >= 0) dup2(log, 1), dup2(log, 2);
-        signal(SIGPIPE, SIG_DFL);
-        execvp("ffmpeg", argv.data());
-        _exit(127);
-    }
-    if (log >= 0) close(log);
-    if (pipeIn) close(fds[0]);
-    if (pid < 0) {
-        if (pipeIn) close(fds[1]);
-        *error = std::string("cannot start ffmpeg: ") + std::strerror(errno);
-        return false;
-    }
-    child = pid;
-    RegisterChildProcess(pid);
-    pipeFd = pipeIn ? fds[1] : -1;
-    return true;
+    return StartChild(args, pipeIn, logPath, &child, &pipeFd, error);
 }
 
-bool VideoEncoder::Wait(std::string* error) {
+bool VideoEncoder::Wait(const std::string& output, std::string* error) {
     if (child <= 0) {  // never waitpid(-1): it would reap another part's ffmpeg
         *error = "ffmpeg is not running";
         return false;
     }
-    int status = 0;
-    pid_t r;
-    do r = waitpid(child, &status, 0);
-    while (r < 0 && errno == EINTR);
-    UnregisterChildProcess(child);
+    const pid_t pid = child;
     child = -1;
-    if (r > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0) return true;
-    const std::string last = LastLine(logPath);
-    *error = "ffmpeg failed" +
-             (r > 0 && WIFEXITED(status) ? " with exit code " + std::to_string(WEXITSTATUS(status))
-                                         : std::string(" (killed by a signal)")) +
-             (last.empty() ? std::string() : ": " + last);
-    return false;
+    return WaitForFfmpeg(pid, stallSeconds, output, logPath, error);
 }
 
 bool VideoEncoder::WriteFrame(const Image& frame, std::string* error) {
@@ -239,13 +186,18 @@ bool VideoEncoder::RecordFrame(const Image& frame, std::string* error) {
         return false;
     }
     RgbToYuv420(frame, &yuv);
-    if (!WriteAll(pipeFd, yuv.data(), yuv.size(), error, "ffmpeg")) {
-        // ffmpeg went away: its own message says why.
+    bool stalled = false;
+    if (!WriteToChild(pipeFd, yuv.data(), yuv.size(), stallSeconds, &stalled, error)) {
         close(pipeFd);
         pipeFd = -1;
-        std::string why;
-        Wait(&why);
-        *error = why;
+        if (stalled) {  // ffmpeg stopped reading: stopped here
+            KillChild(child);
+            child = -1;
+            *error = "ffmpeg failed: " + *error;
+            return false;
+        }
+        // ffmpeg went away: its own message says why, if it gave one.
+        if (Wait(tempPath, error)) *error = "ffmpeg ended before it read frame " + std::to_string(frames);
         return false;
     }
     ++frames;
@@ -485,26 +437,26 @@ bool VideoEncoder::EndGifPart(std::string* error) {
         // Release the waiting ffmpeg: a 1x1 image on its standard input.
         std::vector<std::uint8_t> png;
         if (!EncodePng(Image(1, 1), PngOptions{}, &png, error)) return close(gateFd), false;
-        const bool sent = WriteAll(gateFd, png.data(), png.size(), error, "ffmpeg");
+        bool stalled = false;
+        const bool sent = WriteToChild(gateFd, png.data(), png.size(), stallSeconds, &stalled, error);
         close(gateFd);
         if (sent) return true;
         // ffmpeg went away before it read the image: its own message says why.
         child = part.pid;
         part.pid = -1;
-        Wait(error);
+        if (!stalled && Wait(part.gif.path, error)) *error = "ffmpeg ended before it read the part's frames";
+        if (!stalled) return false;
+        KillChild(child);
+        child = -1;
+        *error = "ffmpeg failed: " + *error;
         return false;
     }
     // More than 256: palettegen chooses them from the part's frames (stats_mode=full: weighted by area), and
     // paletteuse maps them without dithering and only where a frame changed, in an ffmpeg of its own instead of
     // the waiting one.
     close(gateFd);
-    if (part.pid > 0) {
-        kill(part.pid, SIGKILL);
-        child = part.pid;
-        part.pid = -1;
-        std::string ignored;
-        Wait(&ignored);
-    }
+    KillChild(part.pid);
+    part.pid = -1;
     std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y"};
     for (const std::string& a : GifRawInput(raw.path, "bgra")) args.push_back(a);
     args.push_back("-filter_complex");
@@ -524,7 +476,7 @@ bool VideoEncoder::WaitGifPart(std::size_t k, std::string* error) {
     child = part.pid;
     part.pid = -1;
     part.rawIndex = -1;  // done with its raw file
-    if (!Wait(error) || !ReadFileBytes(part.gif.path, &part.bytes, error)) return false;
+    if (!Wait(part.gif.path, error) || !ReadFileBytes(part.gif.path, &part.bytes, error)) return false;
     // Kept in memory from here on (a part's GIF is small): the file and its registry slot are freed, so a long
     // recording never holds more than a few temporaries.
     unlink(part.gif.path.c_str());
@@ -585,7 +537,11 @@ bool VideoEncoder::Finish(std::string* error) {
     } else {
         close(pipeFd);
         pipeFd = -1;
-        ok = Wait(error);
+        // ffmpeg may exit 0 and leave a file that does not play (its trailer unwritten): checked before it
+        // replaces anything.
+        ok = Wait(tempPath, error) &&
+             CheckVideoFile(tempPath, format == Format::Mp4 ? VideoContainer::Mp4 : VideoContainer::Webm, frames,
+                            logPath, stallSeconds, error);
     }
     if (ok && std::rename(tempPath.c_str(), path.c_str()) != 0) {
         *error = "cannot rename " + tempPath + " to " + path + ": " + std::strerror(errno);
@@ -609,14 +565,7 @@ void VideoEncoder::Abort() {
     }
     if (gifRawFd >= 0) close(gifRawFd), gifRawFd = -1;
     child = -1;
-    for (const pid_t pid : running) {
-        if (pid <= 0) continue;
-        kill(pid, SIGKILL);
-        int status = 0;
-        while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-        }
-        UnregisterChildProcess(pid);
-    }
+    for (const pid_t pid : running) KillChild(pid);
     Cleanup();
 }
 

@@ -8,9 +8,10 @@
 //   encodes); past 256, palettegen and paletteuse (no dithering, so the demos' flat colours stay exact) over
 //   its frames as BGRA. Each part's ffmpeg starts with the part and works while the next part renders; the
 //   parts are joined at Finish (Platform/GifJoin.h).
-// The file appears only when the recording is complete: ffmpeg writes a temporary file beside it, renamed at
-// Finish; Abort (or the destructor) removes it, and so does SIGINT/SIGTERM (Platform/Files/TempRegistry.h),
-// after killing ffmpeg. docs/app.md, "Video".
+// The file appears only when the recording is complete: ffmpeg writes a temporary file beside it, checked
+// (Platform/VideoFileCheck.h) and renamed at Finish; every wait on ffmpeg is bounded (Platform/FfmpegProcess.h); Abort
+// (or the destructor) removes it, and so does SIGINT/SIGTERM (Platform/Files/TempRegistry.h), after killing ffmpeg.
+// docs/app.md, "Video".
 
 #include <sys/types.h>
 
@@ -61,7 +62,9 @@ public:
 private:
     bool RecordFrame(const Image& frame, std::string* error);
     bool Spawn(const std::vector<std::string>& args, bool pipeIn, std::string* error);
-    bool Wait(std::string* error);
+    /// Waits for `child` (bounded: Platform/FfmpegProcess.h, output growing is progress); false with *error if it
+    /// failed, stalled or logged an error.
+    bool Wait(const std::string& output, std::string* error);
     /// GIF: records one frame (after resampling) into the current part, ending the part when it is full.
     bool WriteGifFrame(const Image& frame, std::string* error);
     /// GIF: the index of a colour (0xRRGGBB) in the part's palette, adding it; -1 if the part already has 256.
@@ -130,6 +133,7 @@ private:
     int width = 0, height = 0, frames = 0;
     double fps = 60.0;
     pid_t child = -1;
+    double stallSeconds = 60.0;  // EncoderStallSeconds() at Open
     int pipeFd = -1;
     bool failed = false;  // a frame could not be recorded: Finish refuses
 };

@@ -236,3 +236,49 @@ TEST(CommandLine, ExplainModel) {
     ExpectError({"--demo", "x", "--explain-model=1"}, "takes no value");
     ExpectError({"--demo", "x", "--export-scene", "f.json", "--explain-model"}, "give one");
 }
+
+TEST(CommandLine, AFlagTheModeWouldIgnoreIsRefused) {
+    // --window runs the book's loop with the demo, --set, --frames, --size, --dt, --no-ui and --quiet; anything
+    // else (a back end, a camera, outputs) would be dropped silently.
+    for (const std::vector<const char*>& extra : {std::vector<const char*>{"--backend", "egl"},
+                                                  {"--backend", "auto"},
+                                                  {"--camera-yaw", "10"},
+                                                  {"--fps", "30"},
+                                                  {"--orbit", "1"},
+                                                  {"--png-level", "1"},
+                                                  {"--serial-encode"},
+                                                  {"--progress", "5"},
+                                                  {"--tolerance", "3"}}) {
+        std::vector<const char*> args = {"--window", "--demo", "ch14"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        ExpectError(args, std::string(extra[0]) + " is for headless runs");
+    }
+    // --export-scene writes the scene of the demo after --set, seen from its camera, and exits.
+    for (const std::vector<const char*>& extra : {std::vector<const char*>{"--out", "o"},
+                                                  {"--frames", "5"},
+                                                  {"--state", "s.csv"},
+                                                  {"--video", "v.mp4"},
+                                                  {"--size", "64x48"},
+                                                  {"--dt", "0.01"},
+                                                  {"--params"},
+                                                  {"--backend", "osmesa"},
+                                                  {"--no-ui"}}) {
+        std::vector<const char*> args = {"--demo", "ch15", "--export-scene", "f.json"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        ExpectError(args, std::string(extra[0]) + " does not apply to it");
+    }
+    // What each mode uses is accepted.
+    Options o;
+    std::string error;
+    EXPECT_EQ(Parse({"--window", "--demo", "ch14", "--frames", "5", "--size", "640x480", "--dt", "0.01", "--set",
+                     "particles=10", "--no-ui", "--quiet"},
+                    &o, &error),
+              ParseStatus::Ok)
+        << error;
+    Options exported;
+    EXPECT_EQ(Parse({"--demo", "ch15", "--set", "iterations=3", "--camera-yaw", "10", "--camera-pitch", "20",
+                     "--camera-zoom", "9", "--camera-target", "0,1,0", "--quiet", "--export-scene", "f.json"},
+                    &exported, &error),
+              ParseStatus::Ok)
+        << error;
+}

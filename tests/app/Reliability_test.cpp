@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "Platform/PngCodec.h"
 #include "tests/app/SandboxRun.h"
@@ -265,5 +267,42 @@ TEST(Reliability, LongestLegalStateNameIsWritten) {
     const SandboxResult r = RunSandboxExe({"--demo", "ch14", "--frames", "2", "--state", path, "--quiet"});
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(ReadText(path).rfind("frame,time,body,kind", 0), 0u);
+    EXPECT_FALSE(HasTemporaries(dir));
+}
+
+TEST(Reliability, AFileNamedAsTheFrameDirectoryIsRefusedBeforeAnyFrame) {
+    // --out creates its directory (and those on the way) before the first frame; a --state or --video of the same
+    // name could only fail after the last one. Refused up front: exit 2, nothing created.
+    const bool ffmpeg = RunShellScript("command -v ffmpeg").exitCode == 0;
+    struct Case {
+        std::string out, flag, file;
+    };
+    const std::string dir = ScratchDir("file_is_frame_dir");
+    std::vector<Case> cases = {{dir + "/X", "--state", dir + "/X"},
+                               {dir + "/d/frames", "--state", dir + "/d"},
+                               {dir + "/X", "--state", dir + "/./X/"}};
+    if (ffmpeg) cases.push_back({dir + "/X.mp4", "--video", dir + "/X.mp4"});
+    for (const Case& c : cases) {
+        const SandboxResult r =
+            RunSandboxExe({"--demo", "ch14", "--frames", "30", "--size", "64x48", "--out", c.out, c.flag, c.file});
+        EXPECT_EQ(r.exitCode, 2) << c.flag << " " << c.file << ": " << r.err;
+        EXPECT_NE(r.err.find("creates it as a directory"), std::string::npos) << r.err;
+        EXPECT_TRUE(fs::is_empty(dir)) << c.flag << " " << c.file << ": something was written";
+    }
+}
+
+TEST(Reliability, ExportSceneOntoALinkADirectoryOrADeviceIsRefusedNotReplaced) {
+    const std::string dir = ScratchDir("export_special");
+    { std::ofstream(dir + "/real.json") << "keep"; }
+    fs::create_symlink(dir + "/real.json", dir + "/link.json");
+    fs::create_directory(dir + "/dir.json");
+    for (const std::string& target : {dir + "/link.json", dir + "/dir.json", std::string("/dev/null")}) {
+        const SandboxResult r = RunSandboxExe({"--demo", "ch15", "--export-scene", target});
+        EXPECT_EQ(r.exitCode, 2) << target << ": " << r.err;
+        EXPECT_NE(r.err.find("not a regular file"), std::string::npos) << r.err;
+    }
+    EXPECT_TRUE(fs::is_symlink(dir + "/link.json"));
+    EXPECT_EQ(ReadText(dir + "/real.json"), "keep");
+    EXPECT_TRUE(fs::is_directory(dir + "/dir.json"));
     EXPECT_FALSE(HasTemporaries(dir));
 }

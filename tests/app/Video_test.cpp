@@ -2,11 +2,14 @@
 // --out and --only-frames; bad names and a missing ffmpeg are refused up front with nothing written.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 #include "tests/app/SandboxRun.h"
 
 namespace {
+
+namespace fs = std::filesystem;
 
 std::string Probe(const std::string& path, const std::string& entries) {
     const SandboxResult r = RunShellScript("ffprobe -v error -select_streams v:0 -count_frames -show_entries " +
@@ -48,6 +51,23 @@ TEST_F(VideoRun, WebmAndGifFollowTheFrameRate) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(Probe(dir + "/run.gif", "stream=nb_read_frames"), "50") << "60 fps becomes 50 (GIF delays: 1/100 s)";
     EXPECT_NEAR(std::stod(Probe(dir + "/run.gif", "format=duration")), 1.0, 0.021);
+}
+
+TEST_F(VideoRun, AVideoMayGoIntoTheDirectoriesOutCreates) {
+    // --out creates its directory and those on the way before the recording starts.
+    const std::string dir = ScratchDir("video-in-out");
+    for (const auto& [out, video] : {std::pair<std::string, std::string>{dir + "/o", dir + "/o/run.mp4"},
+                                     {dir + "/a/frames", dir + "/a/run.gif"}}) {
+        const SandboxResult r =
+            RunSandboxExe({"--demo", "ch14", "--frames", "3", "--size", "64x48", "--out", out, "--video", video});
+        ASSERT_EQ(r.exitCode, 0) << video << ": " << r.err;
+        EXPECT_EQ(Probe(video, "stream=nb_read_frames"), "3");
+        EXPECT_EQ(FilesIn(out).size(), video.find("/o/") != std::string::npos ? 4u : 3u) << "3 frames (+ the video)";
+    }
+    // A directory nobody creates is still refused.
+    const SandboxResult r = RunSandboxExe({"--demo", "ch14", "--out", dir + "/p", "--video", dir + "/q/run.mp4"});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_FALSE(fs::exists(dir + "/p"));
 }
 
 TEST_F(VideoRun, AFailedRunLeavesNoVideo) {

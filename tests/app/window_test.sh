@@ -101,4 +101,11 @@ grep -q '^Model: auto, ' "$dir/app.out" || fail "no auto model summary"
 rc=$?
 [ "$rc" -eq 2 ] || fail "an impossible budget in the window exited $rc, not 2"
 grep -q 'best estimate' "$dir/app.err" || fail "the refusal names no best estimate"
-echo "window: ok (ch14 -> ch15 by the panel button; camera yaw $yaw, zoom $zoom after the drags; model=auto)"
+
+# Standard output on a full device: the demo lines and the summary are lost, so exit 3 with a message, as the
+# headless runs do (docs/app.md, "Exit codes").
+"$exe" --window --demo ch14 --frames 5 >/dev/full 2>"$dir/app.err"
+rc=$?
+[ "$rc" -eq 3 ] || fail "--window with stdout on /dev/full exited $rc, not 3"
+grep -q 'cannot write to standard output' "$dir/app.err" || fail "no message for the lost standard output"
+echo "window: ok (ch14 -> ch15 by the panel button; camera yaw $yaw, zoom $zoom after the drags; model=auto; stdout on /dev/full)"

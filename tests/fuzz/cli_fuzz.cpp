@@ -28,6 +28,13 @@ void CheckAccepted(const Options& o) {
     Require(!o.explainModel || (!o.window && o.exportScene.empty()), "--explain-model is a headless run's");
     Require(!o.window || (o.outDir.empty() && o.compareDir.empty() && o.stateFile.empty() && o.videoFile.empty()),
             "--window takes no headless outputs");
+    Require(!o.window || (o.backend == "auto" && !o.hasYaw && !o.hasPitch && !o.hasZoom && !o.hasTarget &&
+                          o.orbitDegreesPerFrame == 0.0f && o.frameTime.num == 1 && o.frameTime.den == 60),
+            "--window takes no flag it would ignore (a back end, a camera, a frame rate)");
+    Require(o.exportScene.empty() ||
+                (o.outDir.empty() && o.stateFile.empty() && o.videoFile.empty() && o.compareDir.empty() &&
+                 o.onlyFrames.empty() && !o.framesGiven && !o.showParams && o.backend == "auto"),
+            "--export-scene takes no run flag it would ignore (outputs, --frames)");
     Require(o.backend == "auto" || o.backend == "osmesa" || o.backend == "egl", "a known back end");
     Require(o.frames >= 1, "at least one frame");
     Require(o.width >= 16 && o.width <= 8192 && o.height >= 16 && o.height <= 8192, "size within 16..8192");
