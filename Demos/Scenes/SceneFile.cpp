@@ -1,17 +1,14 @@
 #include "Demos/Scenes/SceneFile.h"
 
-#include <sys/stat.h>
-
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
 
 #include "Demos/Scenes/ContactSolverParameters.h"
 #include "Demos/Scenes/DuplicateKeys.h"
+#include "Demos/Scenes/JsonNesting.h"
 
 using Json = nlohmann::json;
 
@@ -514,26 +511,22 @@ void ReadTop(const Json& root, SceneDescription* d, Problems* problems) {
 
 }  // namespace
 
-void LineAndColumn(const std::string& text, std::size_t offset, int* line, int* column) {
-    if (offset > text.size()) offset = text.size();
-    int l = 1, c = 1;
-    for (std::size_t i = 0; i < offset; ++i) {
-        if (text[i] == '\n') {
-            ++l;
-            c = 1;
-        } else {
-            ++c;
-        }
-    }
-    *line = l;
-    *column = c;
-}
-
 bool ParseSceneText(const std::string& text, const std::string& fileName, SceneDescription* out,
                     std::vector<std::string>* errors) {
     Problems problems(fileName, errors);
     if (text.size() > SceneLimits::kMaxFileBytes) {
         problems.Add("", "is larger than the limit of " + std::to_string(SceneLimits::kMaxFileBytes) + " bytes");
+        return false;
+    }
+    // Nesting is measured before parsing: a deep text is refused in one linear pass, before the parser or the
+    // duplicate-key check builds anything per level.
+    const JsonNesting nesting = MeasureNesting(text, SceneLimits::kMaxNesting);
+    if (nesting.over) {
+        int line = 0, column = 0;
+        LineAndColumn(text, nesting.offset, &line, &column);
+        errors->push_back(fileName + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                          ": arrays and objects nest " + std::to_string(nesting.depth) +
+                          " levels deep, over the limit of " + std::to_string(SceneLimits::kMaxNesting));
         return false;
     }
     Json root;
@@ -577,25 +570,4 @@ bool ParseSceneText(const std::string& text, const std::string& fileName, SceneD
     *out = SceneDescription();
     ReadTop(root, out, &problems);
     return problems.Count() == 0;
-}
-
-bool LoadSceneFile(const std::string& fileName, SceneDescription* out, std::vector<std::string>* errors) {
-    struct stat st {};
-    if (stat(fileName.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) {
-        errors->push_back(fileName + ": cannot read: not a regular file");
-        return false;
-    }
-    if (static_cast<std::size_t>(st.st_size) > SceneLimits::kMaxFileBytes) {
-        errors->push_back(fileName + ": is larger than the limit of " + std::to_string(SceneLimits::kMaxFileBytes) +
-                          " bytes (got " + std::to_string(st.st_size) + ")");
-        return false;
-    }
-    std::ifstream in(fileName, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in && !in.eof()) {
-        errors->push_back(fileName + ": cannot read");
-        return false;
-    }
-    return ParseSceneText(text.str(), fileName, out, errors);
 }

@@ -17,6 +17,8 @@
 /// Documented limits of one scene file (docs/scenes.md, "Limits"); larger files or counts are errors.
 struct SceneLimits {
     static constexpr std::size_t kMaxFileBytes = 4u << 20;  ///< bytes
+    /// Levels of arrays and objects inside each other (a scene needs 4: bodies[i].position[k]).
+    static constexpr std::size_t kMaxNesting = 64;
     static constexpr std::size_t kMaxBodies = 10000;
     static constexpr std::size_t kMaxConstraints = 1000;
     static constexpr std::size_t kMaxSprings = 50000;

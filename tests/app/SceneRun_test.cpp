@@ -114,6 +114,47 @@ TEST(SceneRun, BadFileExitsTwoAndWritesNothing) {
     EXPECT_EQ(RunSandboxExe({"--scene", dir + "/missing.json"}).exitCode, 2);
 }
 
+// A file that cannot be opened gives the system's reason, as --compare does: a missing file, a dangling link and a
+// link to itself are each refused with exit 2 and their own reason, not "not a regular file".
+TEST(SceneRun, UnopenableFilesGiveTheSystemsReason) {
+    const std::string dir = ScratchDir("scene_unopenable");
+    ASSERT_EQ(RunShellScript("cd '" + dir + "' && ln -s nothing dangling.json && ln -s loop.json loop.json").exitCode,
+              0);
+    const struct {
+        std::string file, reason;
+    } cases[] = {{dir + "/missing.json", "No such file or directory"},
+                 {dir + "/dangling.json", "No such file or directory"},
+                 {dir + "/loop.json", "Too many levels of symbolic links"},
+                 {dir, "not a regular file"}};
+    for (const auto& c : cases) {
+        const SandboxResult r = RunSandboxExe({"--scene", c.file, "--frames", "1", "--out", dir + "/out"});
+        EXPECT_EQ(r.exitCode, 2) << c.file;
+        EXPECT_NE(r.err.find(c.file + ": cannot read: " + c.reason), std::string::npos) << r.err;
+    }
+    EXPECT_FALSE(std::ifstream(dir + "/out").good());
+}
+
+// Nesting costs what the file's size says: a 40 KB file nested 20,000 deep and a 2 MB one nested 1,000,000 deep
+// (both under the 4 MiB limit) are refused with their depth and the limit, within 400 MB of address space (the executable alone maps about 190 MB) (the
+// depth-20000 file once took 835 MB, a path string per open level in the duplicate-key check).
+TEST(SceneRun, DeepNestingIsRefusedWithItsDepthInLittleMemory) {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit this test sets";
+#endif
+    const std::string dir = ScratchDir("scene_deep");
+    for (const int depth : {20000, 1000000}) {
+        const std::string scene = WriteScene(
+            dir, "deep.json",
+            R"({"format": 1, "name": "d", "extra": )" + std::string(depth, '[') + std::string(depth, ']') + "}");
+        const SandboxResult r = RunSandboxShell("ulimit -v 400000;", {"--scene", scene, "--frames", "1", "--no-ui"});
+        EXPECT_EQ(r.exitCode, 2) << r.err;
+        EXPECT_NE(r.err.find(scene + ":1:"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("nest " + std::to_string(depth + 1) + " levels deep, over the limit of 64"),
+                  std::string::npos)
+            << r.err;
+    }
+}
+
 TEST(SceneRun, ExactlyOneOfDemoAndScene) {
     const SandboxResult both = RunSandboxExe({"--demo", "ch14", "--scene", "x.json"});
     EXPECT_EQ(both.exitCode, 2);

@@ -1,5 +1,6 @@
 // Fuzz target: bytes -> the scene-file loader (Demos/Scenes/SceneFile.h). Checks that a refused input says why
-// and that an accepted one lies within the documented limits (docs/scenes.md, "Limits") with finite numbers and
+// (text nested deeper than the limit: with the limit named, before parsing) and that an accepted one lies within
+// the documented limits (docs/scenes.md, "Limits") with finite numbers and
 // ids that resolve; small accepted scenes are built (FileScene) and stepped twice. docs/testing.md "Fuzzing".
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "Demos/Scenes/FileScene.h"
+#include "Demos/Scenes/JsonNesting.h"
 #include "Demos/Scenes/SceneFile.h"
 
 namespace {
@@ -60,6 +62,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool ok = ParseSceneText(text, "fuzz.json", &d, &errors);
     Require(ok == errors.empty(), "refused exactly when a problem is reported");
     for (const std::string& e : errors) Require(e.rfind("fuzz.json", 0) == 0, "every problem names the file");
+    // Nesting past the limit is refused up front, with the limit named (docs/scenes.md, "Limits").
+    if (MeasureNesting(text, SceneLimits::kMaxNesting).over)
+        Require(errors.size() == 1 && errors[0].find("over the limit of") != std::string::npos, "deep nesting refused");
     if (!ok) return 0;
     CheckAccepted(d);
     std::size_t particles = d.bodies.size();

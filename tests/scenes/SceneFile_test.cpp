@@ -348,6 +348,27 @@ TEST(SceneFile, CountsOverLimits) {
     EXPECT_TRUE(OneProblem(Problems(huge), {"t.json: (top level): is larger than the limit of 4194304 bytes"}));
 }
 
+// Nesting beyond SceneLimits::kMaxNesting is refused before parsing, with the depth, the limit and the place of
+// the first bracket over it; brackets inside strings are not nesting.
+TEST(SceneFile, NestingOverTheLimitIsRefusedWithItsDepth) {
+    const auto nested = [](std::size_t arrays) {
+        return R"({"format": 1, "name": "d", "extra": )" + std::string(arrays, '[') + std::string(arrays, ']') + "}";
+    };
+    const std::string deep = nested(20000);
+    const std::size_t over = deep.find('[') + SceneLimits::kMaxNesting - 1;  // the object is level 1
+    EXPECT_TRUE(OneProblem(Problems(deep), {"t.json:1:" + std::to_string(over + 1) +
+                                            ": arrays and objects nest 20001 levels deep, over the limit of 64"}));
+    // At the limit the file is parsed and checked as usual.
+    EXPECT_TRUE(OneProblem(Problems(nested(SceneLimits::kMaxNesting - 1)), {"t.json: extra: unknown key"}));
+    EXPECT_TRUE(OneProblem(Problems(nested(SceneLimits::kMaxNesting)), {"nest 65 levels deep"}));
+    // Unbalanced text is measured as written.
+    EXPECT_TRUE(OneProblem(Problems(std::string(100, '{')), {"t.json:1:65: arrays and objects nest 100 levels"}));
+    // 70 brackets and braces in a string, with an escaped quote among them: one problem, the camera's unknown key.
+    const std::string brackets = std::string(70, '[') + "\\\"" + std::string(70, '{');
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("camera": {")" + brackets + R"(": 1})")),
+                           {"camera." + brackets.substr(0, 10)}));
+}
+
 TEST(SceneFile, ReportsEveryProblemNotJustTheFirst) {
     const auto e = Problems(File(R"({"id": "a", "type": "box", "position": [0, 1, 0], "mass": -1, "friction": -1},
                                    {"id": "a", "type": "box", "position": [0, 1, 0], "colour": [1, 1, 1]})"));
@@ -361,8 +382,11 @@ TEST(SceneFile, LoadReportsUnreadableAndOversizedFiles) {
     ASSERT_EQ(errors.size(), 1u);
     EXPECT_NE(errors[0].find("/nonexistent/scene.json: cannot read"), std::string::npos);
     errors.clear();
+    EXPECT_NE(errors[0].find("cannot read: No such file or directory"), std::string::npos) << errors[0];
+    errors.clear();
     EXPECT_FALSE(LoadSceneFile("/tmp", &d, &errors));
-    EXPECT_EQ(errors.size(), 1u);
+    ASSERT_EQ(errors.size(), 1u);
+    EXPECT_NE(errors[0].find("/tmp: cannot read: not a regular file"), std::string::npos) << errors[0];
 
     const std::string path = ::testing::TempDir() + "psb_scenefile_test.json";
     {
