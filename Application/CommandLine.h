@@ -56,6 +56,8 @@ struct Options {
     /// Test hook: report frame N as non-finite (exercises the exit-3 path; DemoBase::StateIsFinite is the
     /// real check). -1 = off.
     int debugNonFiniteAt = -1;
+    /// One-line notes for stderr about values the parser adjusted (a --dt rounded to whole microseconds).
+    std::vector<std::string> notes;
 };
 
 enum class ParseStatus { Ok, Error };

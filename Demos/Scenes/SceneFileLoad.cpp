@@ -24,7 +24,8 @@ void LineAndColumn(const std::string& text, std::size_t offset, int* line, int* 
     *column = c;
 }
 
-bool LoadSceneFile(const std::string& fileName, SceneDescription* out, std::vector<std::string>* errors) {
+bool LoadSceneFile(const std::string& fileName, SceneDescription* out, std::vector<std::string>* errors,
+                   std::vector<std::string>* notes) {
     struct stat st {};
     // stat follows links: a dangling link or a loop gives the system's reason, as a missing file does.
     if (stat(fileName.c_str(), &st) != 0) {
@@ -47,5 +48,5 @@ bool LoadSceneFile(const std::string& fileName, SceneDescription* out, std::vect
         errors->push_back(fileName + ": cannot read: " + std::strerror(errno));
         return false;
     }
-    return ParseSceneText(text.str(), fileName, out, errors);
+    return ParseSceneText(text.str(), fileName, out, errors, notes);
 }

@@ -27,18 +27,21 @@ bool Finite(const vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && 
 
 void CheckAccepted(const SceneDescription& d) {
     Require(d.format == kSceneFormatVersion && !d.name.empty(), "format and name");
-    Require(d.duration > 0.0f && d.duration <= SceneLimits::kMaxDuration, "duration in range");
+    Require(d.duration >= SceneLimits::kMinDuration && d.duration <= SceneLimits::kMaxDuration, "duration in range");
     Require(d.bodies.size() <= SceneLimits::kMaxBodies && d.constraints.size() <= SceneLimits::kMaxConstraints &&
                 d.springs.size() <= SceneLimits::kMaxSprings && d.joints.size() <= SceneLimits::kMaxJoints &&
                 d.cloths.size() <= SceneLimits::kMaxCloths,
             "counts within the limits");
-    Require(Finite(d.world.gravity) && d.world.step >= 0.0f && d.world.step <= 1.0f, "world finite");
+    Require(Finite(d.world.gravity), "world finite");
+    Require(d.world.step == 0.0f || (d.world.step >= SceneLimits::kMinStep && d.world.step <= SceneLimits::kMaxStep),
+            "step 0 or in range");
     std::string budgetError;
     Require(!d.autoModel.Auto() || ValidateBudget(d.autoModel.Budget(), &budgetError), "an auto budget is valid");
     Require(d.autoModel.quantity >= 0 && d.autoModel.quantity <= 2, "a known budget quantity");
     for (const SceneBody& b : d.bodies) {
         Require(!b.id.empty() && Finite(b.position) && Finite(b.velocity) && Finite(b.angularVelocity), "body finite");
-        Require(b.mass >= 0.0f && std::isfinite(b.mass), "mass >= 0");
+        Require(b.mass == 0.0f || (b.mass >= SceneLimits::kMinMass && b.mass <= SceneLimits::kMaxMass),
+                "mass 0 or in range");
         Require(b.halfExtents.x > 0.0f && b.halfExtents.y > 0.0f && b.halfExtents.z > 0.0f && b.radius > 0.0f,
                 "sizes > 0");
     }
