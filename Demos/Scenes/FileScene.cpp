@@ -176,5 +176,5 @@ void FileScene::Reset() {
 bool FileScene::Step(float dt) {
     if (!monitor.Stable() || !(dt > 0.0f) || !std::isfinite(dt)) return false;
     system->Update(dt);
-    return monitor.Check(*system);
+    return system->StopReason().empty() && monitor.Check(*system);
 }

@@ -275,3 +275,28 @@ TEST(SceneRun, ExportSaysWhatItCouldNotExpress) {
     ASSERT_EQ(set.exitCode, 0) << set.err;
     EXPECT_NE(ReadText(dir + "/ch15.json").find("\"iterations\": 13"), std::string::npos);
 }
+
+// A world's memory is bounded: 3,000 spheres at one point (4.5 million overlapping pairs, a legal file; 10,000 took
+// 6.6 GB) stop at the first step with exit 3 naming the pair limit (WorldSettings::maxPairs), within 500 MB of
+// address space, and leave no --state file.
+TEST(SceneRun, OverlappingBodiesBeyondThePairLimitExitThreeNamingIt) {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit this test sets";
+#endif
+    const std::string dir = ScratchDir("scene_pile");
+    std::string bodies;
+    for (int i = 0; i < 3000; ++i)
+        bodies += std::string(i ? "," : "") + R"({"id": "s)" + std::to_string(i) +
+                  R"(", "type": "sphere", "position": [0, 0, 0], "radius": 0.5})";
+    const std::string scene =
+        WriteScene(dir, "pile.json", R"({"format": 1, "name": "pile", "bodies": [)" + bodies + "]}");
+    const SandboxResult r = RunSandboxShell(
+        "ulimit -v 500000;",
+        {"--scene", scene, "--frames", "5", "--no-ui", "--size", "64x48", "--state", dir + "/s.csv", "--quiet"});
+    EXPECT_EQ(r.exitCode, 3) << r.err;
+    EXPECT_NE(r.err.find("step 1: more than 250000 pairs of volumes overlap, the limit of one pair search "
+                         "(WorldSettings::maxPairs)"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(FilesIn(dir), std::vector<std::string>{"pile.json"});
+}
