@@ -1,11 +1,13 @@
 #include "Demos/Scenes/SceneFile.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <utility>
 
 #include "Demos/Scenes/ContactSolverParameters.h"
 #include "Demos/Scenes/DuplicateKeys.h"
@@ -306,14 +308,11 @@ void ReadCamera(const Json& j, SceneCamera* c, Problems* problems) {
 }
 
 bool ParseKind(const std::string& text, SceneBodyKind* kind) {
-    if (text == "particle")
-        *kind = SceneBodyKind::Particle;
-    else if (text == "sphere")
-        *kind = SceneBodyKind::Sphere;
-    else if (text == "box")
-        *kind = SceneBodyKind::Box;
-    else
-        return false;
+    const std::pair<const char*, SceneBodyKind> kinds[] = {
+        {"particle", SceneBodyKind::Particle}, {"sphere", SceneBodyKind::Sphere}, {"box", SceneBodyKind::Box}};
+    const auto* it = std::find_if(std::begin(kinds), std::end(kinds), [&](const auto& k) { return text == k.first; });
+    if (it == std::end(kinds)) return false;
+    *kind = it->second;
     return true;
 }
 

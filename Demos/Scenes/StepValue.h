@@ -20,7 +20,7 @@ inline bool ParseFinite(const std::string& text, double* out) {
     char* end = nullptr;
     errno = 0;
     const double v = std::strtod(text.c_str(), &end);
-    if (errno != 0 && v != 0.0) return false;  // overflow (an underflow to 0 parses as 0)
+    if (errno != 0) return false;  // out of a double's range: "1e-400" must not become 0, the host's step
     if (end == text.c_str() || *end != '\0' || !std::isfinite(v)) return false;
     *out = v;
     return true;

@@ -163,6 +163,7 @@ TEST(ParameterSet, StepEntriesTakeFractionsAndNoteRounding) {
     EXPECT_FALSE(set.Set("dt", "1e-9", &error, &note));
     EXPECT_NE(error.find("bad value '1e-9' for 'dt'"), std::string::npos) << error;
     EXPECT_EQ(dt, 0.0f);
+    EXPECT_FALSE(set.Set("dt", "1e-400", &error, &note));  // below a double: not 0, the host's step
     EXPECT_FALSE(set.Set("other", "1/2", &error));
 }
 
