@@ -5,6 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <numeric>
+
+#include "Demos/Scenes/StepValue.h"
 
 namespace {
 
@@ -44,7 +47,7 @@ std::vector<std::string> Split(const std::string& text, char separator) {
 
 // ---- The flag table: every flag once, with its value type, range and help text.
 
-enum class ValueType { None, Int, Float, Rational, Text, Size, FrameList, Vector3, KeyValue };
+enum class ValueType { None, Int, Float, Rational, Step, Text, Size, FrameList, Vector3, KeyValue };
 
 /// A parsed value; the field that matches the flag's ValueType is set.
 struct FlagValue {
@@ -133,8 +136,13 @@ const Flag kFlags[] = {
      [](Options& o, const FlagValue& v) { o.orbitDegreesPerFrame = v.real; }},
     {"--fps", "F", ValueType::Rational, 1, 1000, "output frames per simulated second (default 60; e.g. 62.5)",
      [](Options& o, const FlagValue& v) { o.frameTime = Reciprocal(v.rational); }},
-    {"--dt", "S", ValueType::Rational, 0.0001, 1, "fixed physics step in seconds (default 0.03 as the book; e.g. 1/30)",
-     [](Options& o, const FlagValue& v) { o.step = v.rational; }},
+    {"--dt", "S", ValueType::Step, 0.0001, 1,
+     "fixed physics step in seconds (default 0.03 as the book; e.g. 1/30); other than a fraction n/d with n, d <= "
+     "1000000, rounded to whole microseconds with a note",
+     [](Options& o, const FlagValue& v) {
+         o.step = v.rational;
+         if (!v.text.empty()) o.notes.push_back(v.text);
+     }},
     {"--only-frames", "A,B,...", ValueType::FrameList, 0, kMaxFrames,
      "write (and compare) only these frames; all frames are still simulated",
      [](Options& o, const FlagValue& v) { o.onlyFrames = v.frames; }},
@@ -190,6 +198,9 @@ std::string Expected(const Flag& f) {
             return "expected a number in " + Range(f);
         case ValueType::Rational:
             return "expected a number or fraction (like 1/30) in " + Range(f);
+        case ValueType::Step:
+            return "expected a step in seconds, a number or fraction (like 1/30), in " + Range(f) +
+                   " after rounding to whole microseconds";
         case ValueType::Size:
             return "expected WxH with " + Number(f.min) + " <= W, H <= " + Number(f.max);
         case ValueType::FrameList:
@@ -222,6 +233,22 @@ bool ParseFrameList(const std::string& text, const Flag& f, std::vector<int>* ou
     return true;
 }
 
+/// A step (docs/app.md, "Steps"): exact as a rational when ParseRational takes it, else any decimal or fraction
+/// rounded to whole microseconds, with the note in v->text. In f's range either way.
+bool ParseStep(const Flag& f, const std::string& text, FlagValue* v) {
+    if (!ParseRational(text, &v->rational)) {
+        double seconds = 0.0;
+        bool exact = true;
+        if (!ParseStepSeconds(text, &seconds) || seconds > f.max) return false;
+        const long long micros = StepMicros(seconds, &exact);
+        if (micros <= 0) return false;
+        const long long g = std::gcd(micros, kStepMicrosPerSecond);
+        v->rational = {micros / g, kStepMicrosPerSecond / g};
+        if (!exact) v->text = f.name + std::string(" ") + text + ": " + StepRoundedNote(text, micros);
+    }
+    return v->rational.ToDouble() >= f.min && v->rational.ToDouble() <= f.max;
+}
+
 /// Parses text as a value of flag f, range included.
 bool ParseValue(const Flag& f, const std::string& text, FlagValue* v) {
     switch (f.type) {
@@ -234,6 +261,8 @@ bool ParseValue(const Flag& f, const std::string& text, FlagValue* v) {
         case ValueType::Rational:
             return ParseRational(text, &v->rational) && v->rational.ToDouble() >= f.min &&
                    v->rational.ToDouble() <= f.max;
+        case ValueType::Step:
+            return ParseStep(f, text, v);
         case ValueType::Text:
             v->text = text;
             if (f.choices != nullptr)

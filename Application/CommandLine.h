@@ -61,6 +61,8 @@ struct Options {
     /// Every flag on the command line, by its name in the flag table, in order (repeats included): a flag that
     /// the chosen mode (--window, --export-scene) would ignore is refused.
     std::vector<std::string> flagsGiven;
+    /// One-line notes for stderr about values the parser adjusted (a --dt rounded to whole microseconds).
+    std::vector<std::string> notes;
 };
 
 enum class ParseStatus { Ok, Error };

@@ -174,11 +174,13 @@ int StartSession(const Options& o, const SceneDescription* scene, Session* s, Ru
 int ApplySets(const Options& o, DemoBase& demo) {
     std::string error;
     for (const auto& [key, value] : o.sets) {
-        if (!demo.Parameters().Set(key, value, &error)) {
+        std::string note;
+        if (!demo.Parameters().Set(key, value, &error, &note)) {
             std::fprintf(stderr, "physics-sandbox: --set %s=%s: %s\nparameters of %s:\n%s", key.c_str(), value.c_str(),
                          error.c_str(), o.demo.c_str(), demo.Parameters().Describe().c_str());
             return kExitUsage;
         }
+        if (!note.empty()) std::fprintf(stderr, "physics-sandbox: %s\n", note.c_str());
     }
     return kExitOk;
 }
@@ -452,11 +454,12 @@ void PrintSummary(const Options& o, const RunStats& s, const std::string& frameD
 /// --scene: loads the file into *scene (exit 2 listing every problem, before anything is written), names the run
 /// after it in o->demo and, without --frames, runs the scene's duration.
 int LoadScene(Options* o, SceneDescription* scene) {
-    std::vector<std::string> errors;
-    if (!LoadSceneFile(o->scene, scene, &errors)) {
+    std::vector<std::string> errors, notes;
+    if (!LoadSceneFile(o->scene, scene, &errors, &notes)) {
         for (const std::string& e : errors) std::fprintf(stderr, "physics-sandbox: %s\n", e.c_str());
         return kExitUsage;
     }
+    for (const std::string& note : notes) std::fprintf(stderr, "physics-sandbox: %s\n", note.c_str());
     o->demo = "scene " + o->scene;
     if (!o->framesGiven) {
         const double frames = std::ceil(double(scene->duration) / o->frameTime.ToDouble() - 1e-9);
@@ -610,6 +613,7 @@ int RunCommandLine(int argc, const char* const* argv) {
         std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
         return kExitUsage;
     }
+    for (const std::string& note : options.notes) std::fprintf(stderr, "physics-sandbox: %s\n", note.c_str());
     if (options.mode == Options::Mode::Help) {
         std::fputs(UsageText().c_str(), stdout);
         return FinishStdout();

@@ -75,11 +75,14 @@ bool StartFirstDemo(const WindowedOptions& o, DemoWindow& window) {
     }
     DemoBase& demo = *window.CurrentDemo();
     std::string error;
-    for (const auto& [key, value] : o.sets)
-        if (!demo.Parameters().Set(key, value, &error)) {
+    for (const auto& [key, value] : o.sets) {
+        std::string note;
+        if (!demo.Parameters().Set(key, value, &error, &note)) {
             std::fprintf(stderr, "physics-sandbox: --set %s=%s: %s\n", key.c_str(), value.c_str(), error.c_str());
             return false;
         }
+        if (!note.empty()) std::fprintf(stderr, "physics-sandbox: %s\n", note.c_str());
+    }
     // `model: auto` (docs/model-choice.md): chosen before the first frame, for the --frames the window will show
     // (a window closed by hand: ChoiceSettings' default run length).
     AutoModelHost host;

@@ -40,7 +40,8 @@ CH14Demo::CH14Demo() {
     for (Integrator i : kAllIntegrators) ids.push_back(ToString(i));
     params.AddChoice("integrator", &integratorIndex, ids, "particle integrator (book: euler)",
                      [this] { scene.SetIntegrator(kAllIntegrators[integratorIndex]); });
-    params.AddFloat("dt", &stepDt, 0.0f, kMaxSceneDt, "physics step in s; 0 = the host's fixed step (book: 0.03)");
+    params.AddFloat("dt", &stepDt, 0.0f, kMaxSceneDt, "physics step in s; 0 = the host's fixed step (book: 0.03)")
+        .Step();
     AddParticleContactParameter(&params, &contactIndex,
                                 [this] { scene.SetParticleContact(ParticleContactAt(contactIndex)); });
     params.AddInt("seed", &seed, 0, 2147483647, "MSVC rand() seed of the spawns (book: 1); on reset", resetIfFresh);

@@ -77,6 +77,10 @@ void SceneFileDemo::CollectState(std::vector<BodyState>* out) const {
 }
 
 bool SceneFileDemo::Unstable(std::string* report) const {
+    if (!scene.System().StopReason().empty()) {
+        *report = scene.System().StopReason();
+        return true;
+    }
     if (scene.Monitor().Stable()) return false;
     *report = scene.Monitor().Report().message;
     return true;

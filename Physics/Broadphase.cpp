@@ -71,8 +71,8 @@ bool Overlap(const B& a, const B& b) {
 
 }  // namespace
 
-void Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::vector<std::pair<int, int>>* pairs,
-                           const unsigned char* active, float margin, float sweepTime) {
+bool Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::vector<std::pair<int, int>>* pairs,
+                           const unsigned char* active, float margin, float sweepTime, std::size_t maxPairs) {
     pairs->clear();
     raw.clear();
     const int n = static_cast<int>(volumes.size());
@@ -83,7 +83,7 @@ void Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::ve
     };
     bool anyMoving = false;
     for (int i = 0; i < n && !anyMoving; ++i) anyMoving = moves(i);
-    if (!anyMoving) return;
+    if (!anyMoving) return true;
     bodies.resize(static_cast<std::size_t>(n));
     cellRanges.resize(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
@@ -98,8 +98,10 @@ void Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::ve
         body.moving = moves(i);
     }
     BuildGrid(n);
-    PairsInCells(&raw);
-    PairsWithWideBodies(n, &raw);
+    if (!PairsInCells(&raw, maxPairs) || !PairsWithWideBodies(n, &raw, maxPairs)) {
+        raw.clear();
+        return false;
+    }
 
     // Increasing (i, j) order: a counting sort on i, then each i's few partners sorted by j.
     firstCount.assign(static_cast<std::size_t>(n) + 1, 0);
@@ -115,6 +117,7 @@ void Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::ve
         if (runEnd - runBegin > 1) std::sort(pairs->begin() + runBegin, pairs->begin() + runEnd);
         runBegin = runEnd;
     }
+    return true;
 }
 
 void Broadphase::BuildGrid(int n) {
@@ -201,7 +204,7 @@ void Broadphase::BuildGrid(int n) {
     // bucketStart[b] is now the first entry of bucket b, bucketStart[bucketCount] the entry count.
 }
 
-void Broadphase::PairsInCells(std::vector<std::pair<int, int>>* out) const {
+bool Broadphase::PairsInCells(std::vector<std::pair<int, int>>* out, std::size_t maxPairs) const {
     // Two bodies sharing several cells are reported once, from the low corner of their common range: the cell
     // where, on every axis, one of the two ranges starts. With the moving bit, the two entries' flags together
     // must have all four bits set.
@@ -214,19 +217,25 @@ void Broadphase::PairsInCells(std::vector<std::pair<int, int>>* out) const {
             for (int q = p + 1; q < end; ++q) {
                 const CellEntry& eb = cellEntries[static_cast<std::size_t>(q)];
                 if ((ea.flags | eb.flags) != 15u || ea.key != eb.key) continue;
-                if (Overlap(a, bodies[static_cast<std::size_t>(eb.body)])) out->emplace_back(ea.body, eb.body);
+                if (!Overlap(a, bodies[static_cast<std::size_t>(eb.body)])) continue;
+                out->emplace_back(ea.body, eb.body);
+                if (out->size() > maxPairs) return false;
             }
         }
     }
+    return true;
 }
 
-void Broadphase::PairsWithWideBodies(int n, std::vector<std::pair<int, int>>* out) const {
+bool Broadphase::PairsWithWideBodies(int n, std::vector<std::pair<int, int>>* out, std::size_t maxPairs) const {
     for (const int w : wide) {
         const Body& a = bodies[static_cast<std::size_t>(w)];
         for (int j = 0; j < n; ++j) {
             const Body& b = bodies[static_cast<std::size_t>(j)];
             if (j == w || (b.wide && j < w) || (!a.moving && !b.moving)) continue;  // a wide pair once, from its first
-            if (Overlap(a, b)) out->emplace_back(std::min(w, j), std::max(w, j));
+            if (!Overlap(a, b)) continue;
+            out->emplace_back(std::min(w, j), std::max(w, j));
+            if (out->size() > maxPairs) return false;
         }
     }
+    return true;
 }

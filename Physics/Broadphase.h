@@ -5,6 +5,7 @@
 // too many cells (a ground plate, a non-finite AABB) is kept out of the grid and compared with every body.
 // Small scenes never use it: PhysicsSystem tests all pairs below WorldSettings::broadphaseMinVolumes.
 
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -24,9 +25,11 @@ public:
     /// Indices are into `volumes`. Every AABB is first grown on each side by `margin` (m) plus the body's speed
     /// times `sweepTime` (s): the soft solver's speculative margin and the step's travel (both 0 test the bodies'
     /// own AABBs). The result depends only on the arguments (no state carries over between calls). Allocation-free
-    /// once the capacities have grown.
-    void FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::vector<std::pair<int, int>>* pairs,
-                   const unsigned char* active = nullptr, float margin = 0.0f, float sweepTime = 0.0f);
+    /// once the capacities have grown. Returns false, with *pairs empty, once more than maxPairs pairs are found
+    /// (the search stops there, so memory stays within the limit).
+    bool FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::vector<std::pair<int, int>>* pairs,
+                   const unsigned char* active = nullptr, float margin = 0.0f, float sweepTime = 0.0f,
+                   std::size_t maxPairs = static_cast<std::size_t>(-1));
 
 private:
     struct Body {
@@ -44,8 +47,9 @@ private:
         unsigned flags = 0;  // bit k (0-2): the body's range starts at this cell on axis k; bit 3: the body moves
     };
     void BuildGrid(int n);
-    void PairsInCells(std::vector<std::pair<int, int>>* pairs) const;
-    void PairsWithWideBodies(int n, std::vector<std::pair<int, int>>* pairs) const;
+    /// Both append to *pairs and stop once it holds more than maxPairs (false then).
+    bool PairsInCells(std::vector<std::pair<int, int>>* pairs, std::size_t maxPairs) const;
+    bool PairsWithWideBodies(int n, std::vector<std::pair<int, int>>* pairs, std::size_t maxPairs) const;
 
     std::vector<Body> bodies;              // by volume index
     std::vector<CellRange> cellRanges;     // by volume index (grid bodies only)

@@ -13,7 +13,7 @@ PhysicsSystem::PhysicsSystem() = default;
 PhysicsSystem::~PhysicsSystem() = default;
 
 void PhysicsSystem::Update(float deltaTime) {
-    if (!(deltaTime > 0.0f) || !std::isfinite(deltaTime)) return;
+    if (!(deltaTime > 0.0f) || !std::isfinite(deltaTime) || !stopReason.empty()) return;
     StepContext ctx{settings};
     ctx.dt = deltaTime;
     ctx.invDt = 1.0f / deltaTime;
@@ -26,6 +26,7 @@ void PhysicsSystem::Update(float deltaTime) {
     // n = 1 is the book's single step, with dt passed through unchanged.
     if (!volumes.empty() && settings.contactSolver == ContactSolver::Soft) {
         StepSoftVolumes(ctx);
+        if (!stopReason.empty()) return;
     } else if (!volumes.empty()) {
         const int n = VolumeSubsteps(deltaTime);
         ctx.substepCount = n;
@@ -38,6 +39,7 @@ void PhysicsSystem::Update(float deltaTime) {
             ctx.substep = s;
             ctx.substepSerial = volumeSubstepSerial;
             FindCollisions(ctx, sleep);
+            if (!stopReason.empty()) return;  // over settings.maxPairs: the world stays as it is
             ApplyVolumeForces(ctx, sleep);
             if (resultCount > 0) ApplyImpulses(ctx);
             IntegrateVolumes(ctx, sleep);
@@ -153,6 +155,7 @@ void PhysicsSystem::ClearRigidbodys() {
     others.clear();
     resultCount = 0;
     softSolver.Clear();
+    stopReason.clear();  // a new world may run again
     RebuildParticleList();
 }
 void PhysicsSystem::ClearConstraints() { constraints.clear(); }

@@ -97,6 +97,9 @@ public:
     /// naming the bad value; empty if none since construction or ClearError().
     const std::string& LastError() const { return lastError; }
     void ClearError() { lastError.clear(); }
+    /// Why the world stopped, naming the limit: a pair search found more than settings.maxPairs candidate volume
+    /// pairs (WorldSettings.h). Empty while it runs; once set, Update does nothing (the world stays as it was).
+    const std::string& StopReason() const { return stopReason; }
 
 private:
     // ---- ch14: PhysicsSystemParticles.cpp
@@ -114,8 +117,11 @@ private:
     /// sleeping body wakes the sleeping island and the search runs again.
     void FindCollisions(const StepContext& ctx, Islands* sleep);
     /// One pair search: every pair that can interact and, when `active` is given (one byte per volume), has an active
-    /// body; fills results[0..resultCount) in increasing (indexA, indexB) order.
+    /// body; fills results[0..resultCount) in increasing (indexA, indexB) order. Over settings.maxPairs: no
+    /// results, and stopReason set.
     void FindPairs(const StepContext& ctx, const unsigned char* active);
+    /// Sets stopReason for a search that passed settings.maxPairs.
+    void StopAtPairLimit();
     /// Gravity on every volume, turned into this substep's velocity change before the impulses (ch15 note N1).
     void ApplyVolumeForces(const StepContext& ctx, const Islands* sleep);
     void ApplyImpulses(const StepContext& ctx);
@@ -163,4 +169,5 @@ private:
     long long volumeSubstepSerial = 0;           // volume substeps so far (one per Update without volumes): StepContext
     int lastVolumeSubsteps = 1;
     std::string lastError;
+    std::string stopReason;
 };

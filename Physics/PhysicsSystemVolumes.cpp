@@ -61,11 +61,23 @@ void PhysicsSystem::FindPairs(const StepContext& ctx, const unsigned char* activ
                 if (wanted(i, j)) test(i, j);
         return;
     }
-    broadphase.FindPairs(volumes, &candidatePairs, active);
+    if (!broadphase.FindPairs(volumes, &candidatePairs, active, 0.0f, 0.0f, ctx.settings.maxPairs)) {
+        StopAtPairLimit();
+        return;
+    }
     for (const std::pair<int, int>& p : candidatePairs) {
         const std::size_t i = static_cast<std::size_t>(p.first), j = static_cast<std::size_t>(p.second);
         if (wanted(i, j)) test(i, j);
     }
+}
+
+void PhysicsSystem::StopAtPairLimit() {
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "step %lld: more than %zu pairs of volumes overlap, the limit of one pair search "
+                  "(WorldSettings::maxPairs); stopped before allocating them (%zu volumes)",
+                  stepCount + 1, settings.maxPairs, volumes.size());
+    stopReason = text;
 }
 
 void PhysicsSystem::StepSoftVolumes(StepContext& ctx) {
@@ -115,13 +127,14 @@ void PhysicsSystem::StepSoftVolumes(StepContext& ctx) {
                     if (CanInteract(*volumes[i], *volumes[j]) && (active == nullptr || active[i] || active[j]) &&
                         near(i, j))
                         candidatePairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
-        } else {
-            broadphase.FindPairs(volumes, &candidatePairs, active, margin, ctx.dt);
+        } else if (!broadphase.FindPairs(volumes, &candidatePairs, active, margin, ctx.dt, settings.maxPairs)) {
+            StopAtPairLimit();
         }
     };
     search();
     if (sleep != nullptr)
-        while (sleep->WakeTouched(candidatePairs.data(), candidatePairs.size()) > 0) search();
+        while (stopReason.empty() && sleep->WakeTouched(candidatePairs.data(), candidatePairs.size()) > 0) search();
+    if (!stopReason.empty()) return;
     softSolver.Step(volumes, candidatePairs, ctx, active);
     if (sleep != nullptr) {
         // Islands are linked over the same candidate pairs that wake them (grown boxes that meet), not only over

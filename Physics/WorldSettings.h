@@ -79,6 +79,11 @@ struct WorldSettings {
     float substepTravelFraction = 0.75f;
     /// Volume count from which pairs are found by the grid broadphase (Broadphase.h); all pairs below. Not in the book.
     std::size_t broadphaseMinVolumes = 32;
+    /// Most candidate volume pairs one pair search may find, count (about 150 bytes each with their manifolds).
+    /// Beyond it the world stops (PhysicsSystem::StopReason names the limit) before anything per pair is
+    /// allocated: 10,000 spheres at one point would need 50 million pairs and gigabytes. A pile of 10,000 boxes
+    /// (the scene-file limit) has about 13 per body. Not in the book.
+    std::size_t maxPairs = 250000;
     /// ContactSolver::Soft solves its pairs in batches of four by constraint-graph colour (pairs of one colour share
     /// no moving body; docs/ch15.md, "Graph colouring"); false solves them one by one in pair order. The same
     /// equations either way, in another order. Not in the book.

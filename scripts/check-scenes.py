@@ -4,7 +4,7 @@
 Implements the subset of JSON Schema the schema uses (type, const, enum, required, properties,
 additionalProperties: false, items, minItems/maxItems, minimum/maximum/exclusiveMinimum, minLength, oneOf, $ref
 into $defs) with the standard library only. Also checks what a schema cannot: no key given twice in one object,
-ids unique, springs and joints naming bodies. Exit 0 when every scene passes, 1 listing each problem as FILE: PATH: message."""
+ids unique, springs and joints naming bodies, nesting within the loader's limit. Exit 0 when every scene passes, 1 listing each problem as FILE: PATH: message."""
 import json
 import os
 import sys
@@ -84,6 +84,31 @@ def unique_keys(pairs):
     return seen
 
 
+MAX_NESTING = 64  # SceneLimits::kMaxNesting (docs/scenes.md, "Limits")
+
+
+def nesting(text):
+    """Deepest level of [ and { outside strings, as the loader measures it before parsing (JsonNesting.h)."""
+    depth = deepest = 0
+    in_string = escaped = False
+    for c in text:
+        if in_string:
+            if escaped:
+                escaped = False
+            elif c == "\\":
+                escaped = True
+            elif c == '"':
+                in_string = False
+        elif c == '"':
+            in_string = True
+        elif c in "[{":
+            depth += 1
+            deepest = max(deepest, depth)
+        elif c in "]}" and depth > 0:
+            depth -= 1
+    return deepest
+
+
 def check_ids(scene, problems):
     ids = set()
     for i, body in enumerate(scene.get("bodies", [])):
@@ -110,10 +135,15 @@ def main():
     for name in names:
         problems = []
         with open(os.path.join(scenes, name), encoding="utf-8") as f:
+            text = f.read()
+        scene = None
+        depth = nesting(text)
+        if depth > MAX_NESTING:
+            problems.append(f"arrays and objects nest {depth} levels deep, over the limit of {MAX_NESTING}")
+        else:
             try:
-                scene = json.load(f, object_pairs_hook=unique_keys)
+                scene = json.loads(text, object_pairs_hook=unique_keys)
             except DuplicateKey as e:
-                scene = None
                 problems.append(str(e))
         if scene is not None:
             validate(scene, schema, schema, "", problems)

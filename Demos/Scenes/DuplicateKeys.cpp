@@ -52,7 +52,7 @@ public:
     bool key(std::string& name) {
         Container& object = open.back();
         if (!object.keys.insert(name).second) {
-            found.objectPath = object.path;
+            found.objectPath = PathOfInnermost();
             found.key = name;
             found.offset = OpeningQuote();
             duplicate = true;
@@ -67,36 +67,44 @@ public:
     const DuplicateKey& Result() const { return found; }
 
 private:
+    /// One open array or object. No path is kept: the innermost object's path is built from the open containers
+    /// only when a duplicate is reported, so memory stays linear in the text (a path per level would be quadratic
+    /// in the depth).
     struct Container {
         bool array = false;
-        std::string path;
-        std::size_t next = 0;  // array: index of the next element
-        std::string key;       // object: the key of the value being read
+        std::size_t next = 0;     // array: index of the next element
+        std::size_t current = 0;  // array: index of the element being read
+        std::string key;          // object: the key of the value being read
         std::set<std::string> keys;
     };
 
-    /// Path of the value that starts now, in the scene-file style (Join and Index in SceneFile.cpp).
-    std::string ValuePath() {
-        if (open.empty()) return "";
-        Container& c = open.back();
-        if (c.array) return c.path + "[" + std::to_string(c.next++) + "]";
-        return c.path.empty() ? c.key : c.path + "." + c.key;
-    }
     /// A scalar value: only an array's element count moves.
     bool Value() {
         if (!open.empty() && open.back().array) ++open.back().next;
         return true;
     }
     bool Open(bool array) {
+        if (!open.empty() && open.back().array) open.back().current = open.back().next++;
         Container c;
         c.array = array;
-        c.path = ValuePath();
         open.push_back(std::move(c));
         return true;
     }
     bool Close() {
         open.pop_back();
         return true;
+    }
+    /// Path of the innermost open container, in the scene-file style (Join and Index in SceneFile.cpp).
+    std::string PathOfInnermost() const {
+        std::string path;
+        for (std::size_t level = 0; level + 1 < open.size(); ++level) {
+            const Container& c = open[level];
+            if (c.array)
+                path += "[" + std::to_string(c.current) + "]";
+            else
+                path += (path.empty() ? "" : ".") + c.key;
+        }
+        return path;
     }
     /// The parser has just read the key's closing quote: back from it to the unescaped opening quote.
     std::size_t OpeningQuote() const {

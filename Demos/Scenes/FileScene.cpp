@@ -63,7 +63,7 @@ void FileScene::AddParameters(ParameterSet* set) {
     set->AddBool("linear-projection", &w.linearProjection, "positional correction after integration", apply);
     set->AddFloat("projection-fraction", &w.projectionFraction, 0.0f, 1.0f,
                   "fraction of the penetration beyond the slop removed per step", apply);
-    set->AddFloat("dt", &w.step, 0.0f, 1.0f, "physics step (s); 0 = the host's (--dt)");
+    set->AddFloat("dt", &w.step, 0.0f, 1.0f, "physics step (s); 0 = the host's (--dt)").Step();
     set->AddPanelText([this] { return ModelSummary(); });
     set->AddAction(
            "reset", [this] { Reset(); }, "rebuild the scene from the file")
@@ -183,5 +183,5 @@ void FileScene::Reset() {
 bool FileScene::Step(float dt) {
     if (!monitor.Stable() || !(dt > 0.0f) || !std::isfinite(dt)) return false;
     system->Update(dt);
-    return monitor.Check(*system);
+    return system->StopReason().empty() && monitor.Check(*system);
 }

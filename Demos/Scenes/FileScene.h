@@ -27,8 +27,9 @@ public:
     explicit FileScene(const SceneDescription& description);
     /// Rebuilds the world from the description.
     void Reset();
-    /// One physics step of dt seconds; false (and the world frozen) once the stability monitor reports a blow-up
-    /// or for dt <= 0 or non-finite.
+    /// One physics step of dt seconds; false (and the world frozen) once the stability monitor reports a blow-up,
+    /// once the world has stopped (PhysicsSystem::StopReason: too many overlapping pairs), or for dt <= 0 or
+    /// non-finite.
     bool Step(float dt);
     /// Registers the model settings (integrator, solver and the soft solver's keys, iterations, slop, projection,
     /// dt) and reset on *set;

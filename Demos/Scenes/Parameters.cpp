@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "Demos/Scenes/StepValue.h"
+
 namespace {
 
 bool ParseInt(const std::string& text, long* out) {
@@ -46,7 +48,7 @@ std::string RangeText(const ParameterSet::Entry& e) {
             s << "integer " << static_cast<long>(e.min) << ".." << static_cast<long>(e.max);
             break;
         case ParameterSet::Kind::Float:
-            s << "number " << e.min << ".." << e.max;
+            s << (e.step ? "step in s (decimal or n/d, whole microseconds) " : "number ") << e.min << ".." << e.max;
             break;
         case ParameterSet::Kind::Bool:
             s << "0|1";
@@ -135,6 +137,10 @@ ParameterSet::Entry& ParameterSet::Entry::OnPanel(const Widget& w) {
     widget = w;
     return *this;
 }
+ParameterSet::Entry& ParameterSet::Entry::Step() {
+    step = true;
+    return *this;
+}
 
 ParameterSet::Entry& ParameterSet::Add(Entry e) {
     entries.push_back(std::move(e));
@@ -203,7 +209,7 @@ std::string ParameterSet::Keys() const {
     return keys;
 }
 
-bool ParameterSet::Set(const std::string& key, const std::string& value, std::string* error) {
+bool ParameterSet::Set(const std::string& key, const std::string& value, std::string* error, std::string* note) {
     const Entry* e = Find(key);
     if (e == nullptr) {
         if (error) *error = "unknown parameter '" + key + "'; valid keys: " + (Keys().empty() ? "(none)" : Keys());
@@ -224,9 +230,17 @@ bool ParameterSet::Set(const std::string& key, const std::string& value, std::st
             // Compared as the float that is stored: "0.1" must meet the bound 0.1f, which as a double is
             // 0.10000000149 (an inclusive range written in decimal).
             double parsed = 0;
-            if (!ParseFloat(value, &parsed)) return bad();
+            if (!(e->step ? ParseStepSeconds(value, &parsed) : ParseFloat(value, &parsed))) return bad();
             const float v = static_cast<float>(parsed);
             if (!std::isfinite(v) || v < static_cast<float>(e->min) || v > static_cast<float>(e->max)) return bad();
+            if (e->step) {
+                // Stored as given: the host runs whole microseconds of it (docs/app.md, "Steps"), and says so.
+                bool exact = true;
+                const long long micros = StepMicros(parsed, &exact);
+                if (parsed > 0.0 && micros == 0) return bad();
+                if (!exact && note != nullptr)
+                    *note = "--set " + key + "=" + value + ": " + StepRoundedNote(value, micros);
+            }
             *e->floatValue = v;
             break;
         }

@@ -52,11 +52,17 @@ public:
         std::function<void()> onChange;     // runs after a successful Set (e.g. reset the scene); Action: the action
         std::function<std::string()> text;  // Text: the row, evaluated each frame; "" draws no row
         Widget widget;
+        /// Float only: a physics step in s (StepValue.h, docs/app.md "Steps"): a decimal or a fraction n/d; one
+        /// that is not a whole number of microseconds gets a note (the host runs it rounded), and a positive one
+        /// that rounds to 0 is refused.
+        bool step = false;
 
         /// Adds a key `--set` also accepts; `--params` lists it after the help.
         Entry& Alias(const std::string& key);
         /// Puts the entry on the panel as `w`.
         Entry& OnPanel(const Widget& w);
+        /// Marks a Float entry as a physics step (`step` above).
+        Entry& Step();
     };
 
     // Each Add returns the new entry, valid until the next Add (for chaining Alias and OnPanel).
@@ -77,7 +83,9 @@ public:
     /// Parses and applies one value. The range is inclusive and checked in the entry's own type, so the
     /// documented bounds (`0.1`, `0.0005`) are accepted. On failure returns false and sets *error to a message
     /// that names the key and value and lists the valid keys (unknown key) or the valid range/choices (bad value).
-    bool Set(const std::string& key, const std::string& value, std::string* error);
+    /// For a step entry whose value is not a whole number of microseconds, *note (if given) is set to a one-line
+    /// note for stderr; otherwise it is left as it is.
+    bool Set(const std::string& key, const std::string& value, std::string* error, std::string* note = nullptr);
     /// The current value as text ("" for actions and unknown keys).
     std::string Get(const std::string& key) const;
     /// The entry with this key or alias; nullptr if none (always for "").

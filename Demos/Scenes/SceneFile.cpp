@@ -1,17 +1,18 @@
 #include "Demos/Scenes/SceneFile.h"
 
-#include <sys/stat.h>
-
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <sstream>
+#include <utility>
 
 #include "Demos/Scenes/ContactSolverParameters.h"
 #include "Demos/Scenes/DuplicateKeys.h"
+#include "Demos/Scenes/JsonNesting.h"
+#include "Demos/Scenes/StepValue.h"
 
 using Json = nlohmann::json;
 
@@ -23,7 +24,12 @@ enum class Range { Any, NonNegative, Positive, Fraction };
 /// Collects "FILE: PATH: message (value)" lines.
 class Problems {
 public:
-    Problems(std::string fileName, std::vector<std::string>* out) : file(std::move(fileName)), lines(out) {}
+    Problems(std::string fileName, std::vector<std::string>* out, std::vector<std::string>* notesOut = nullptr)
+        : file(std::move(fileName)), lines(out), notes(notesOut) {}
+    /// A "FILE: PATH: message" note about a value that was adjusted, not refused (a step rounded to microseconds).
+    void Note(const std::string& path, const std::string& message) {
+        if (notes != nullptr) notes->push_back(file + ": " + path + ": " + message);
+    }
     void Add(const std::string& path, const std::string& message, const Json* value = nullptr) {
         std::string line = file + ": " + (path.empty() ? std::string("(top level)") : path) + ": " + message;
         if (value != nullptr) {
@@ -39,6 +45,7 @@ public:
 private:
     std::string file;
     std::vector<std::string>* lines;
+    std::vector<std::string>* notes;
     int count = 0;
 };
 
@@ -48,6 +55,12 @@ std::string Decimal(float v) {
     std::snprintf(text, sizeof text, "%g", static_cast<double>(v));
     return text;
 }
+
+/// The engine stores every number as a float: one beyond its range, or non-zero but below its smallest normal
+/// magnitude (5e-324 or 1e-45 would become 0 or a denormal whose inverse is infinite), is refused with the range.
+const char* const kFiniteMessage = "must be finite (a float: magnitude at most 3.40282e+38)";
+const char* const kUnderflowMessage = "is too small for a float: must be 0 or of magnitude at least 1.17549e-38";
+bool BelowFloat(double d) { return d != 0.0 && std::fabs(d) < static_cast<double>(FLT_MIN); }
 
 std::string Join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
 std::string Index(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
@@ -70,19 +83,27 @@ public:
         if (!v->is_number()) return Bad(key, "must be a number", v);
         const double d = v->get<double>();
         const float f = static_cast<float>(d);
-        if (!std::isfinite(d) || !std::isfinite(f)) return Bad(key, "must be finite", v);
+        if (!std::isfinite(d) || !std::isfinite(f)) return Bad(key, kFiniteMessage, v);
+        if (BelowFloat(d)) return Bad(key, kUnderflowMessage, v);
         if (range == Range::NonNegative && f < 0.0f) return Bad(key, "must be >= 0", v);
         if (range == Range::Positive && !(f > 0.0f)) return Bad(key, "must be > 0", v);
         if (range == Range::Fraction && !(f >= 0.0f && f <= 1.0f)) return Bad(key, "must be in [0, 1]", v);
         *value = f;
     }
-    /// A number into *value, in [lo, hi] (inclusive, compared as the float that is stored).
-    void FloatIn(const char* key, float* value, float lo, float hi) {
-        float f = 0.0f;
-        Float(key, &f, Range::Any);  // reports a non-number or a non-finite one; only a stored number goes on
-        if (!Has(key) || !obj.at(key).is_number() || static_cast<float>(obj.at(key).get<double>()) != f) return;
-        if (!(f >= lo && f <= hi))
-            return Bad(key, "must be in [" + Decimal(lo) + ", " + Decimal(hi) + "]", &obj.at(key));
+    /// A number into *value, in [lo, hi] (inclusive, compared as the float that is stored); with zeroToo, 0 is
+    /// also accepted ("must be 0 or in [lo, hi]"). A number too small for a float is out of the range.
+    void FloatIn(const char* key, float* value, float lo, float hi, bool zeroToo = false) {
+        const Json* v = Find(key, false);
+        if (v == nullptr) return;
+        if (!v->is_number()) return Bad(key, "must be a number", v);
+        const double d = v->get<double>();
+        const float f = static_cast<float>(d);
+        if (!std::isfinite(d) || !std::isfinite(f)) return Bad(key, kFiniteMessage, v);
+        const bool zero = d == 0.0;
+        if ((zero && !zeroToo && !(lo <= 0.0f)) || (!zero && (BelowFloat(d) || !(f >= lo && f <= hi)))) {
+            const std::string range = "[" + Decimal(lo) + ", " + Decimal(hi) + "]";
+            return Bad(key, zeroToo ? "must be 0 or in " + range : "must be in " + range, v);
+        }
         *value = f;
     }
     void Int(const char* key, int* value, int lo, int hi, bool required = false) {
@@ -127,7 +148,10 @@ public:
             }
             const float f = static_cast<float>(e.get<double>());
             if (!std::isfinite(e.get<double>()) || !std::isfinite(f)) {
-                out->Add(at, "must be finite", &e);
+                out->Add(at, kFiniteMessage, &e);
+                good = false;
+            } else if (BelowFloat(e.get<double>())) {
+                out->Add(at, kUnderflowMessage, &e);
                 good = false;
             } else if (range == Range::Positive && !(f > 0.0f)) {
                 out->Add(at, "must be > 0", &e);
@@ -233,11 +257,22 @@ void ReadSleep(const Json& j, SleepSettings* sleep, Problems* problems) {
     r.Finish();
 }
 
+/// world.step (docs/app.md, "Steps"): 0 for the host's step, or within --dt's range; a value that is not a whole
+/// number of microseconds is rounded to the nearest one, with a note.
+void ReadStep(const Json& j, ObjectReader* r, float* step, Problems* problems) {
+    float given = 0.0f;
+    r->FloatIn("step", &given, SceneLimits::kMinStep, SceneLimits::kMaxStep, true);
+    if (!r->Has("step") || !j.at("step").is_number() || static_cast<float>(j.at("step").get<double>()) != given) return;
+    bool exact = true;
+    const long long micros = StepMicros(j.at("step").get<double>(), &exact);
+    *step = static_cast<float>(static_cast<double>(micros) / static_cast<double>(kStepMicrosPerSecond));
+    if (!exact) problems->Note("world.step", StepRoundedNote(j.at("step").dump(), micros));
+}
+
 void ReadWorld(const Json& j, SceneWorld* w, Problems* problems) {
     ObjectReader r(j, "world", problems);
     r.Vec3("gravity", &w->gravity);
-    r.Float("step", &w->step, Range::NonNegative);
-    if (w->step > 1.0f) problems->Add("world.step", "must be at most 1 s", &j.at("step"));
+    ReadStep(j, &r, &w->step, problems);
     std::string name;
     r.String("integrator", &name);
     if (!name.empty() && !ParseIntegrator(name, &w->integrator)) {
@@ -277,14 +312,11 @@ void ReadCamera(const Json& j, SceneCamera* c, Problems* problems) {
 }
 
 bool ParseKind(const std::string& text, SceneBodyKind* kind) {
-    if (text == "particle")
-        *kind = SceneBodyKind::Particle;
-    else if (text == "sphere")
-        *kind = SceneBodyKind::Sphere;
-    else if (text == "box")
-        *kind = SceneBodyKind::Box;
-    else
-        return false;
+    const std::pair<const char*, SceneBodyKind> kinds[] = {
+        {"particle", SceneBodyKind::Particle}, {"sphere", SceneBodyKind::Sphere}, {"box", SceneBodyKind::Box}};
+    const auto* it = std::find_if(std::begin(kinds), std::end(kinds), [&](const auto& k) { return text == k.first; });
+    if (it == std::end(kinds)) return false;
+    *kind = it->second;
     return true;
 }
 
@@ -304,7 +336,7 @@ void ReadBody(const Json& j, const std::string& path, SceneBody* b, Problems* pr
     }
     r.Vec3("position", &b->position, Range::Any, true);
     r.Vec3("velocity", &b->velocity);
-    r.Float("mass", &b->mass, Range::NonNegative);
+    r.FloatIn("mass", &b->mass, SceneLimits::kMinMass, SceneLimits::kMaxMass, true);
     r.Float("restitution", &b->restitution, Range::Fraction);
     r.Float("velocityRetention", &b->velocityRetention, Range::Fraction);
     float rgb[3];
@@ -381,7 +413,7 @@ void ReadCloth(const Json& j, const std::string& path, SceneCloth* c, Problems* 
     r.Int("gridSize", &c->gridSize, 3, SceneLimits::kMaxClothGrid, true);
     r.Float("spacing", &c->spacing, Range::Positive, true);
     r.Vec3("position", &c->position, Range::Any, true);
-    r.Float("particleMass", &c->particleMass, Range::Positive);
+    r.FloatIn("particleMass", &c->particleMass, SceneLimits::kMinMass, SceneLimits::kMaxMass);
     r.Float("velocityRetention", &c->velocityRetention, Range::Fraction);
     struct Kind {
         const char* key;
@@ -425,20 +457,13 @@ void ReadAutoModel(const Json& root, ObjectReader* r, AutoModelRequest* request,
         problems->Add("budget.quantity", "must be position, energy or constraint", &budget->at("quantity"));
     }
     request->quantity = static_cast<int>(quantity);
-    b.Float("bound", &request->tolerance, Range::Positive, true);
-    if (b.Has("bound") && budget->at("bound").is_number()) {  // a bad number was reported and not stored
-        ParameterSet keys;
-        AutoModelRequest scratch;
-        AddAutoModelParameters(&keys, &scratch);
-        const ParameterSet::Entry* key = keys.Find("tolerance");
-        const float bound = request->tolerance;
-        if (key != nullptr && bound > 0.0f && std::isfinite(bound) && (bound < key->min || bound > key->max)) {
-            problems->Add("budget.bound",
-                          "must be in [" + Decimal(static_cast<float>(key->min)) + ", " +
-                              Decimal(static_cast<float>(key->max)) + "]",
-                          &budget->at("bound"));
-        }
-    }
+    // The range is `--set tolerance=`'s, read from its table entry (AddAutoModelParameters).
+    ParameterSet keys;
+    AutoModelRequest scratch;
+    AddAutoModelParameters(&keys, &scratch);
+    const ParameterSet::Entry* key = keys.Find("tolerance");
+    if (!b.Has("bound")) problems->Add("budget.bound", "is required");
+    b.FloatIn("bound", &request->tolerance, static_cast<float>(key->min), static_cast<float>(key->max));
     b.Finish();
 }
 
@@ -451,9 +476,7 @@ void ReadTop(const Json& root, SceneDescription* d, Problems* problems) {
                       &root.at("format"));
     }
     r.String("name", &d->name, true);
-    r.Float("duration", &d->duration, Range::Positive);
-    if (d->duration > SceneLimits::kMaxDuration)
-        problems->Add("duration", "must be at most 3600 s", &root.at("duration"));
+    r.FloatIn("duration", &d->duration, SceneLimits::kMinDuration, SceneLimits::kMaxDuration);
     ReadAutoModel(root, &r, &d->autoModel, problems);
     if (const Json* w = r.Object("world")) ReadWorld(*w, &d->world, problems);
     if (const Json* c = r.Object("camera")) ReadCamera(*c, &d->camera, problems);
@@ -518,26 +541,22 @@ void ReadTop(const Json& root, SceneDescription* d, Problems* problems) {
 
 }  // namespace
 
-void LineAndColumn(const std::string& text, std::size_t offset, int* line, int* column) {
-    if (offset > text.size()) offset = text.size();
-    int l = 1, c = 1;
-    for (std::size_t i = 0; i < offset; ++i) {
-        if (text[i] == '\n') {
-            ++l;
-            c = 1;
-        } else {
-            ++c;
-        }
-    }
-    *line = l;
-    *column = c;
-}
-
 bool ParseSceneText(const std::string& text, const std::string& fileName, SceneDescription* out,
-                    std::vector<std::string>* errors) {
-    Problems problems(fileName, errors);
+                    std::vector<std::string>* errors, std::vector<std::string>* notes) {
+    Problems problems(fileName, errors, notes);
     if (text.size() > SceneLimits::kMaxFileBytes) {
         problems.Add("", "is larger than the limit of " + std::to_string(SceneLimits::kMaxFileBytes) + " bytes");
+        return false;
+    }
+    // Nesting is measured before parsing: a deep text is refused in one linear pass, before the parser or the
+    // duplicate-key check builds anything per level.
+    const JsonNesting nesting = MeasureNesting(text, SceneLimits::kMaxNesting);
+    if (nesting.over) {
+        int line = 0, column = 0;
+        LineAndColumn(text, nesting.offset, &line, &column);
+        errors->push_back(fileName + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                          ": arrays and objects nest " + std::to_string(nesting.depth) +
+                          " levels deep, over the limit of " + std::to_string(SceneLimits::kMaxNesting));
         return false;
     }
     Json root;
@@ -581,25 +600,4 @@ bool ParseSceneText(const std::string& text, const std::string& fileName, SceneD
     *out = SceneDescription();
     ReadTop(root, out, &problems);
     return problems.Count() == 0;
-}
-
-bool LoadSceneFile(const std::string& fileName, SceneDescription* out, std::vector<std::string>* errors) {
-    struct stat st {};
-    if (stat(fileName.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) {
-        errors->push_back(fileName + ": cannot read: not a regular file");
-        return false;
-    }
-    if (static_cast<std::size_t>(st.st_size) > SceneLimits::kMaxFileBytes) {
-        errors->push_back(fileName + ": is larger than the limit of " + std::to_string(SceneLimits::kMaxFileBytes) +
-                          " bytes (got " + std::to_string(st.st_size) + ")");
-        return false;
-    }
-    std::ifstream in(fileName, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in && !in.eof()) {
-        errors->push_back(fileName + ": cannot read");
-        return false;
-    }
-    return ParseSceneText(text.str(), fileName, out, errors);
 }

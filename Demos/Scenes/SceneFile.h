@@ -18,6 +18,8 @@
 /// Documented limits of one scene file (docs/scenes.md, "Limits"); larger files or counts are errors.
 struct SceneLimits {
     static constexpr std::size_t kMaxFileBytes = 4u << 20;  ///< bytes
+    /// Levels of arrays and objects inside each other (a scene needs 4: bodies[i].position[k]).
+    static constexpr std::size_t kMaxNesting = 64;
     static constexpr std::size_t kMaxBodies = 10000;
     static constexpr std::size_t kMaxConstraints = 1000;
     static constexpr std::size_t kMaxSprings = 50000;
@@ -26,7 +28,14 @@ struct SceneLimits {
     static constexpr int kMaxClothGrid = 100;       ///< particles per side
     static constexpr int kMaxIterations = 1000;     ///< solver passes
     static constexpr int kMaxSubsteps = 1024;       ///< volume substeps
+    static constexpr float kMinDuration = 0.001f;   ///< s
     static constexpr float kMaxDuration = 3600.0f;  ///< s
+    /// kg, a body's mass other than 0 (static) and a cloth particle's: 1/m and m g stay finite floats.
+    static constexpr float kMinMass = 1e-6f;
+    static constexpr float kMaxMass = 1e9f;
+    /// s, world.step other than 0 (the host's): --dt's range (docs/app.md, "Steps").
+    static constexpr float kMinStep = 0.0001f;
+    static constexpr float kMaxStep = 1.0f;
 };
 
 /// The format version this build reads.
@@ -135,10 +144,12 @@ struct SceneDescription {
 };
 
 /// Parses `text` (the contents of `fileName`, used in messages only) into *out. Returns false and appends one
-/// "FILE: PATH: message" line per problem to *errors (then *out is unspecified).
+/// "FILE: PATH: message" line per problem to *errors (then *out is unspecified). A value adjusted rather than
+/// refused (world.step rounded to whole microseconds) appends a "FILE: PATH: note" line to *notes, if given.
 bool ParseSceneText(const std::string& text, const std::string& fileName, SceneDescription* out,
-                    std::vector<std::string>* errors);
+                    std::vector<std::string>* errors, std::vector<std::string>* notes = nullptr);
 /// Reads `fileName` (a regular file of at most SceneLimits::kMaxFileBytes) and parses it as ParseSceneText.
-bool LoadSceneFile(const std::string& fileName, SceneDescription* out, std::vector<std::string>* errors);
+bool LoadSceneFile(const std::string& fileName, SceneDescription* out, std::vector<std::string>* errors,
+                   std::vector<std::string>* notes = nullptr);
 /// 1-based line and column of the byte at 0-based `offset` in `text` (clamped to its end).
 void LineAndColumn(const std::string& text, std::size_t offset, int* line, int* column);

@@ -33,8 +33,8 @@ void AddStepParameters(ParameterSet* set, int* integratorIndex, float* dt, const
                    "particle integrator for springs, cloth and joints (book: euler)", onChange);
     // No rebuild: the scene holds nothing that depends on its step, and a rebuild would draw new spawns from a
     // generator the book never reseeds (joints).
-    set->AddFloat("dt", dt, kMinSceneDt, kMaxSceneDt,
-                  "physics step in s (book: 0.03); the host runs whole steps of it");
+    set->AddFloat("dt", dt, kMinSceneDt, kMaxSceneDt, "physics step in s (book: 0.03); the host runs whole steps of it")
+        .Step();
 }
 
 void AddParticleContactParameter(ParameterSet* set, int* index, const std::function<void()>& apply) {

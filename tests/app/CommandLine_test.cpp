@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace {
@@ -281,4 +282,39 @@ TEST(CommandLine, AFlagTheModeWouldIgnoreIsRefused) {
                     &exported, &error),
               ParseStatus::Ok)
         << error;
+}
+
+// One rule for a step (docs/app.md, "Steps"): an exact fraction n/d (n, d <= 10^6) or a whole number of
+// microseconds is taken as it is; any other decimal or fraction is rounded to the nearest microsecond with a note;
+// one that rounds below the range is refused. "--dt 0.0166666667" was refused as not a number.
+TEST(CommandLine, DtIsExactOrRoundedToMicrosecondsWithANote) {
+    struct Case {
+        const char* text;
+        std::int64_t num, den;
+        bool note;
+    } cases[] = {{"0.03", 3, 100, false},
+                 {"1/30", 1, 30, false},
+                 {"1/60", 1, 60, false},
+                 {"0.0001", 1, 10000, false},
+                 {"0.0166666667", 16667, 1000000, true},
+                 {"1e-3", 1, 1000, false},
+                 {"1/3000", 1, 3000, false},
+                 {"1000/7000001", 143, 1000000, true}};
+    for (const Case& c : cases) {
+        Options o;
+        std::string error;
+        ASSERT_EQ(Parse({"--demo", "x", "--dt", c.text}, &o, &error), ParseStatus::Ok) << c.text << ": " << error;
+        EXPECT_EQ(o.step.num, c.num) << c.text;
+        EXPECT_EQ(o.step.den, c.den) << c.text;
+        EXPECT_EQ(o.notes.size(), c.note ? 1u : 0u) << c.text;
+    }
+    Options o;
+    std::string error;
+    ASSERT_EQ(Parse({"--demo", "x", "--dt", "0.0166666667"}, &o, &error), ParseStatus::Ok) << error;
+    ASSERT_EQ(o.notes.size(), 1u);
+    EXPECT_EQ(o.notes[0],
+              "--dt 0.0166666667: 0.0166666667 s rounded to 0.016667 s (a step is a whole number of "
+              "microseconds; docs/app.md, \"Steps\")");
+    for (const char* bad : {"0.00000001", "1/3000000", "0.00009", "1.0000001", "abc", "1/0", "nan"})
+        ExpectError({"--demo", "x", "--dt", bad}, std::string("--dt ") + bad + ": expected a step in seconds");
 }

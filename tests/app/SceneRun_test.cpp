@@ -103,7 +103,8 @@ TEST(SceneRun, BadFileExitsTwoAndWritesNothing) {
     const SandboxResult r =
         RunSandboxExe({"--scene", scene, "--frames", "5", "--out", dir + "/out", "--state", dir + "/s.csv"});
     EXPECT_EQ(r.exitCode, 2);
-    EXPECT_NE(r.err.find(scene + ": bodies[0].mass: must be >= 0 (got -2)"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(scene + ": bodies[0].mass: must be 0 or in [1e-06, 1e+09] (got -2)"), std::string::npos)
+        << r.err;
     EXPECT_EQ(FilesIn(dir), std::vector<std::string>{"bad.json"});
 
     const std::string broken = WriteScene(dir, "broken.json", "{\n  \"format\": 1,\n  \"name\": }\n");
@@ -112,6 +113,48 @@ TEST(SceneRun, BadFileExitsTwoAndWritesNothing) {
     EXPECT_NE(s.err.find(broken + ":3:11: syntax error"), std::string::npos) << s.err;
 
     EXPECT_EQ(RunSandboxExe({"--scene", dir + "/missing.json"}).exitCode, 2);
+}
+
+// A file that cannot be opened gives the system's reason, as --compare does: a missing file, a dangling link and a
+// link to itself are each refused with exit 2 and their own reason, not "not a regular file".
+TEST(SceneRun, UnopenableFilesGiveTheSystemsReason) {
+    const std::string dir = ScratchDir("scene_unopenable");
+    ASSERT_EQ(RunShellScript("cd '" + dir + "' && ln -s nothing dangling.json && ln -s loop.json loop.json").exitCode,
+              0);
+    const struct {
+        std::string file, reason;
+    } cases[] = {{dir + "/missing.json", "No such file or directory"},
+                 {dir + "/dangling.json", "No such file or directory"},
+                 {dir + "/loop.json", "Too many levels of symbolic links"},
+                 {dir, "not a regular file"}};
+    for (const auto& c : cases) {
+        const SandboxResult r = RunSandboxExe({"--scene", c.file, "--frames", "1", "--out", dir + "/out"});
+        EXPECT_EQ(r.exitCode, 2) << c.file;
+        EXPECT_NE(r.err.find(c.file + ": cannot read: " + c.reason), std::string::npos) << r.err;
+    }
+    EXPECT_FALSE(std::ifstream(dir + "/out").good());
+}
+
+// Nesting costs what the file's size says: a 40 KB file nested 20,000 deep and a 2 MB one nested 1,000,000 deep
+// (both under the 4 MiB limit) are refused with their depth and the limit, within 400 MB of address space (the
+// executable alone maps about 190 MB) (the depth-20000 file once took 835 MB, a path string per open level in the
+// duplicate-key check).
+TEST(SceneRun, DeepNestingIsRefusedWithItsDepthInLittleMemory) {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit this test sets";
+#endif
+    const std::string dir = ScratchDir("scene_deep");
+    for (const int depth : {20000, 1000000}) {
+        const std::string scene = WriteScene(
+            dir, "deep.json",
+            R"({"format": 1, "name": "d", "extra": )" + std::string(depth, '[') + std::string(depth, ']') + "}");
+        const SandboxResult r = RunSandboxShell("ulimit -v 400000;", {"--scene", scene, "--frames", "1", "--no-ui"});
+        EXPECT_EQ(r.exitCode, 2) << r.err;
+        EXPECT_NE(r.err.find(scene + ":1:"), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find("nest " + std::to_string(depth + 1) + " levels deep, over the limit of 64"),
+                  std::string::npos)
+            << r.err;
+    }
 }
 
 TEST(SceneRun, ExactlyOneOfDemoAndScene) {
@@ -231,4 +274,29 @@ TEST(SceneRun, ExportSaysWhatItCouldNotExpress) {
         RunSandboxExe({"--demo", "ch15", "--set", "iterations=13", "--export-scene", dir + "/ch15.json"});
     ASSERT_EQ(set.exitCode, 0) << set.err;
     EXPECT_NE(ReadText(dir + "/ch15.json").find("\"iterations\": 13"), std::string::npos);
+}
+
+// A world's memory is bounded: 3,000 spheres at one point (4.5 million overlapping pairs, a legal file; 10,000 took
+// 6.6 GB) stop at the first step with exit 3 naming the pair limit (WorldSettings::maxPairs), within 500 MB of
+// address space, and leave no --state file.
+TEST(SceneRun, OverlappingBodiesBeyondThePairLimitExitThreeNamingIt) {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "AddressSanitizer reserves more address space than the limit this test sets";
+#endif
+    const std::string dir = ScratchDir("scene_pile");
+    std::string bodies;
+    for (int i = 0; i < 3000; ++i)
+        bodies += std::string(i ? "," : "") + R"({"id": "s)" + std::to_string(i) +
+                  R"(", "type": "sphere", "position": [0, 0, 0], "radius": 0.5})";
+    const std::string scene =
+        WriteScene(dir, "pile.json", R"({"format": 1, "name": "pile", "bodies": [)" + bodies + "]}");
+    const SandboxResult r = RunSandboxShell(
+        "ulimit -v 500000;",
+        {"--scene", scene, "--frames", "5", "--no-ui", "--size", "64x48", "--state", dir + "/s.csv", "--quiet"});
+    EXPECT_EQ(r.exitCode, 3) << r.err;
+    EXPECT_NE(r.err.find("step 1: more than 250000 pairs of volumes overlap, the limit of one pair search "
+                         "(WorldSettings::maxPairs)"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(FilesIn(dir), std::vector<std::string>{"pile.json"});
 }

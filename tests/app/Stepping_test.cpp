@@ -184,3 +184,39 @@ TEST(Stepping, TheLastRowHoldsThePhysicsAtTheRunsTime) {
     // Every earlier row is where its own time says too (exact integrator: any lag would show as an offset).
     for (const Row& row : rows) EXPECT_NEAR(row.x, 12.6 * row.time, 1e-4) << "frame " << row.frame;
 }
+
+// One rule for a step given as --dt, --set dt= or a scene's world.step (docs/app.md, "Steps"): a step that is not a
+// whole number of microseconds runs rounded to the nearest one, with a one-line note; one that rounds below the
+// range is refused with exit 2 and the range, never run silently at the host's 0.03 s.
+TEST(Stepping, OneRuleForDtSetDtAndWorldStep) {
+    const std::string note = " s rounded to 0.016667 s (a step is a whole number of microseconds";
+    const SandboxResult dt = RunSandboxExe({"--demo", "ch14", "--dt", "0.0166666667", "--frames", "2", "--quiet"});
+    EXPECT_EQ(dt.exitCode, 0) << dt.err;
+    EXPECT_NE(dt.err.find("--dt 0.0166666667: 0.0166666667" + note), std::string::npos) << dt.err;
+    const SandboxResult set =
+        RunSandboxExe({"--demo", "springs", "--set", "dt=0.0166666667", "--frames", "2", "--quiet"});
+    EXPECT_EQ(set.exitCode, 0) << set.err;
+    EXPECT_NE(set.err.find("--set dt=0.0166666667: 0.0166666667" + note), std::string::npos) << set.err;
+    const SandboxResult exact = RunSandboxExe({"--demo", "ch14", "--dt", "1/60", "--frames", "2", "--quiet"});
+    EXPECT_EQ(exact.exitCode, 0) << exact.err;
+    EXPECT_EQ(exact.err, "");
+
+    const std::string dir = ScratchDir("step_rule");
+    const auto scene = [&](const std::string& step) {
+        const std::string path = dir + "/s.json";
+        std::ofstream(path) << R"({"format": 1, "name": "s", "duration": 0.1, "world": {"step": )" << step
+                            << R"(}, "bodies": [{"id": "p", "type": "particle", "position": [0, 1, 0]}]})";
+        return RunSandboxExe({"--scene", path, "--state", dir + "/s.csv", "--no-ui", "--quiet"});
+    };
+    for (const char* tiny : {"1e-9", "5e-7"}) {
+        const SandboxResult r = scene(tiny);
+        EXPECT_EQ(r.exitCode, 2) << tiny;
+        const std::string shown = tiny == std::string("1e-9") ? "1e-09" : "5e-07";  // as nlohmann-json prints it
+        EXPECT_NE(r.err.find("s.json: world.step: must be 0 or in [0.0001, 1] (got " + shown + ")"), std::string::npos)
+            << r.err;
+        EXPECT_FALSE(std::ifstream(dir + "/s.csv").good());
+    }
+    const SandboxResult rounded = scene("0.0166666667");
+    EXPECT_EQ(rounded.exitCode, 0) << rounded.err;
+    EXPECT_NE(rounded.err.find("s.json: world.step: 0.0166666667" + note), std::string::npos) << rounded.err;
+}

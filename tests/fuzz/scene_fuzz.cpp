@@ -1,5 +1,6 @@
 // Fuzz target: bytes -> the scene-file loader (Demos/Scenes/SceneFile.h). Checks that a refused input says why
-// and that an accepted one lies within the documented limits (docs/scenes.md, "Limits") with finite numbers and
+// (text nested deeper than the limit: with the limit named, before parsing) and that an accepted one lies within
+// the documented limits (docs/scenes.md, "Limits") with finite numbers and
 // ids that resolve; small accepted scenes are built (FileScene) and stepped twice. docs/testing.md "Fuzzing".
 
 #include <cmath>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "Demos/Scenes/FileScene.h"
+#include "Demos/Scenes/JsonNesting.h"
 #include "Demos/Scenes/SceneFile.h"
 
 namespace {
@@ -25,18 +27,21 @@ bool Finite(const vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && 
 
 void CheckAccepted(const SceneDescription& d) {
     Require(d.format == kSceneFormatVersion && !d.name.empty(), "format and name");
-    Require(d.duration > 0.0f && d.duration <= SceneLimits::kMaxDuration, "duration in range");
+    Require(d.duration >= SceneLimits::kMinDuration && d.duration <= SceneLimits::kMaxDuration, "duration in range");
     Require(d.bodies.size() <= SceneLimits::kMaxBodies && d.constraints.size() <= SceneLimits::kMaxConstraints &&
                 d.springs.size() <= SceneLimits::kMaxSprings && d.joints.size() <= SceneLimits::kMaxJoints &&
                 d.cloths.size() <= SceneLimits::kMaxCloths,
             "counts within the limits");
-    Require(Finite(d.world.gravity) && d.world.step >= 0.0f && d.world.step <= 1.0f, "world finite");
+    Require(Finite(d.world.gravity), "world finite");
+    Require(d.world.step == 0.0f || (d.world.step >= SceneLimits::kMinStep && d.world.step <= SceneLimits::kMaxStep),
+            "step 0 or in range");
     std::string budgetError;
     Require(!d.autoModel.Auto() || ValidateBudget(d.autoModel.Budget(), &budgetError), "an auto budget is valid");
     Require(d.autoModel.quantity >= 0 && d.autoModel.quantity <= 2, "a known budget quantity");
     for (const SceneBody& b : d.bodies) {
         Require(!b.id.empty() && Finite(b.position) && Finite(b.velocity) && Finite(b.angularVelocity), "body finite");
-        Require(b.mass >= 0.0f && std::isfinite(b.mass), "mass >= 0");
+        Require(b.mass == 0.0f || (b.mass >= SceneLimits::kMinMass && b.mass <= SceneLimits::kMaxMass),
+                "mass 0 or in range");
         Require(b.halfExtents.x > 0.0f && b.halfExtents.y > 0.0f && b.halfExtents.z > 0.0f && b.radius > 0.0f,
                 "sizes > 0");
     }
@@ -60,6 +65,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const bool ok = ParseSceneText(text, "fuzz.json", &d, &errors);
     Require(ok == errors.empty(), "refused exactly when a problem is reported");
     for (const std::string& e : errors) Require(e.rfind("fuzz.json", 0) == 0, "every problem names the file");
+    // Nesting past the limit is refused up front, with the limit named (docs/scenes.md, "Limits").
+    if (MeasureNesting(text, SceneLimits::kMaxNesting).over)
+        Require(errors.size() == 1 && errors[0].find("over the limit of") != std::string::npos, "deep nesting refused");
     if (!ok) return 0;
     CheckAccepted(d);
     std::size_t particles = d.bodies.size();

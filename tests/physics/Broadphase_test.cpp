@@ -261,3 +261,25 @@ TEST(Broadphase, WideAndUnboundedBodiesPairWithEverything) {
         pairs.begin(), pairs.end(), [](const std::pair<int, int>& p) { return p.first == 5 || p.second == 5; });
     EXPECT_EQ(withUnbounded, bodies.size() - 1);  // body 5 moves, so every other body pairs with it
 }
+
+// A search that would find more than maxPairs pairs stops at the limit and reports it, with no pairs (100 spheres
+// at one point overlap in 4950 pairs); at the limit exactly, every pair is found.
+TEST(Broadphase, StopsAtMaxPairs) {
+    std::vector<RigidbodyVolume> bodies;
+    for (int i = 0; i < 100; ++i) bodies.push_back(MakeSphere(vec3(0, 0, 0), 0.5f));
+    std::vector<RigidbodyVolume*> ptrs;
+    for (RigidbodyVolume& b : bodies) ptrs.push_back(&b);
+    Broadphase bp;
+    std::vector<std::pair<int, int>> pairs;
+    EXPECT_TRUE(bp.FindPairs(ptrs, &pairs, nullptr, 0.0f, 0.0f, 4950));
+    EXPECT_EQ(pairs.size(), 4950u);
+    EXPECT_FALSE(bp.FindPairs(ptrs, &pairs, nullptr, 0.0f, 0.0f, 4949));
+    EXPECT_TRUE(pairs.empty());
+    // A wide body (a slab over many cells) is paired outside the grid, under the same limit.
+    bodies.push_back(MakeGround(vec3(500, 1, 500)));
+    ptrs.clear();
+    for (RigidbodyVolume& b : bodies) ptrs.push_back(&b);
+    EXPECT_TRUE(bp.FindPairs(ptrs, &pairs, nullptr, 0.0f, 0.0f, 5050));
+    EXPECT_EQ(pairs.size(), 5050u);
+    EXPECT_FALSE(bp.FindPairs(ptrs, &pairs, nullptr, 0.0f, 0.0f, 5049));
+}

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "Physics/PhysicsSystem.h"
@@ -263,4 +264,36 @@ TEST(PhysicsSystemVolumes, ReferenceStepIsUnchangedByTheExtremeStepGuards) {
     const std::vector<unsigned char> b = RunStack(300, false, kBookStep);
     ASSERT_EQ(a.size(), b.size());
     EXPECT_EQ(std::memcmp(a.data(), b.data(), a.size()), 0);
+}
+
+// A world whose overlapping volumes need more than settings.maxPairs pairs stops at the first search, with a
+// reason naming the limit, before any manifold is allocated, and stays as it was; under the limit the same world
+// steps. Every contact solver searches under the limit.
+TEST(PhysicsSystemVolumes, OverMaxPairsTheWorldStopsNamingTheLimit) {
+    for (ContactSolver solver : {ContactSolver::Book, ContactSolver::Accumulated, ContactSolver::Soft}) {
+        std::vector<RigidbodyVolume> bodies;
+        for (int i = 0; i < 200; ++i) bodies.push_back(MakeSphere(vec3(0, 1, 0), 0.5f));  // 19900 pairs
+        PhysicsSystem world;
+        world.settings.contactSolver = solver;
+        world.settings.maxPairs = 1000;
+        for (RigidbodyVolume& b : bodies) world.AddRigidbody(&b);
+        const std::vector<unsigned char> before = Snapshot(bodies);
+        world.Update(kDt);
+        EXPECT_NE(world.StopReason().find("step 1: more than 1000 pairs of volumes overlap"), std::string::npos)
+            << world.StopReason();
+        EXPECT_NE(world.StopReason().find("WorldSettings::maxPairs"), std::string::npos);
+        EXPECT_EQ(world.CollisionCount(), 0u);
+        EXPECT_EQ(world.StepCount(), 0);
+        world.Update(kDt);
+        EXPECT_EQ(Snapshot(bodies), before);
+
+        PhysicsSystem roomy;
+        roomy.settings.contactSolver = solver;
+        roomy.settings.maxPairs = 19900;
+        for (RigidbodyVolume& b : bodies) roomy.AddRigidbody(&b);
+        roomy.Update(kDt);
+        EXPECT_TRUE(roomy.StopReason().empty()) << roomy.StopReason();
+        EXPECT_EQ(roomy.StepCount(), 1);
+        EXPECT_NE(Snapshot(bodies), before);
+    }
 }

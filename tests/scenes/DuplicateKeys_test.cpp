@@ -51,3 +51,20 @@ TEST(DuplicateKeys, EscapedKeysAreComparedAsWrittenAndLocatedAtTheirOpeningQuote
     EXPECT_EQ(d.key, "q\"");
     EXPECT_EQ(d.offset, quoted.rfind("\"q\\\"\""));
 }
+
+// The path is built only when a duplicate is reported, from every open level: deep inside arrays and objects it is
+// the same path the scene-file messages use.
+TEST(DuplicateKeys, DeepPathsAreBuiltFromEveryOpenLevel) {
+    std::string text, path;
+    for (int level = 0; level < 30; ++level) {
+        text += R"({"x": 1, "a": [0, )";
+        path += std::string(level ? "." : "") + "a[1]";
+    }
+    text += R"({"k": 1, "k": 2})";
+    for (int level = 0; level < 30; ++level) text += "]}";
+    DuplicateKey d;
+    ASSERT_TRUE(FindDuplicateKey(text, &d));
+    EXPECT_EQ(d.objectPath, path);
+    EXPECT_EQ(d.key, "k");
+    EXPECT_EQ(d.offset, text.rfind("\"k\""));
+}

@@ -136,6 +136,37 @@ TEST(ParameterSet, FloatRangeIsInclusiveAtTheDocumentedBounds) {
     EXPECT_EQ(dt, 0.1f);  // a refused value changes nothing
 }
 
+// A step entry (docs/app.md, "Steps") takes a decimal or a fraction; one that is not a whole number of microseconds
+// is kept with a note (the host runs it rounded), and a positive one that rounds to 0 is refused, not made the
+// host's step (0). Other float entries take no fraction.
+TEST(ParameterSet, StepEntriesTakeFractionsAndNoteRounding) {
+    float dt = 0.03f, other = 0.5f;
+    ParameterSet set;
+    set.AddFloat("dt", &dt, 0.0f, 0.1f, "").Step();
+    set.AddFloat("other", &other, 0.0f, 1.0f, "");
+    std::string error, note;
+    EXPECT_TRUE(set.Set("dt", "0.01", &error, &note)) << error;
+    EXPECT_EQ(dt, 0.01f);
+    EXPECT_TRUE(note.empty()) << note;
+    EXPECT_TRUE(set.Set("dt", "1/50", &error, &note)) << error;
+    EXPECT_EQ(dt, 0.02f);
+    EXPECT_TRUE(note.empty()) << note;
+    EXPECT_TRUE(set.Set("dt", "0.0166666667", &error, &note)) << error;
+    EXPECT_EQ(note,
+              "--set dt=0.0166666667: 0.0166666667 s rounded to 0.016667 s (a step is a whole number of "
+              "microseconds; docs/app.md, \"Steps\")");
+    note.clear();
+    EXPECT_TRUE(set.Set("dt", "1/60", &error, &note)) << error;
+    EXPECT_NE(note.find("1/60 s rounded to 0.016667 s"), std::string::npos) << note;
+    EXPECT_TRUE(set.Set("dt", "0", &error, &note)) << error;
+    EXPECT_EQ(dt, 0.0f);
+    EXPECT_FALSE(set.Set("dt", "1e-9", &error, &note));
+    EXPECT_NE(error.find("bad value '1e-9' for 'dt'"), std::string::npos) << error;
+    EXPECT_EQ(dt, 0.0f);
+    EXPECT_FALSE(set.Set("dt", "1e-400", &error, &note));  // below a double: not 0, the host's step
+    EXPECT_FALSE(set.Set("other", "1/2", &error));
+}
+
 TEST(ParameterSet, IntRangeIsInclusive) {
     int count = 10;
     ParameterSet set;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -158,7 +159,7 @@ TEST(SceneFile, NonFiniteNumbers) {
 
 TEST(SceneFile, ZeroOrNegativeSizesAndMasses) {
     EXPECT_TRUE(OneProblem(Problems(File(R"({"id": "a", "type": "box", "position": [0, 1, 0], "mass": -1})")),
-                           {"bodies[0].mass: must be >= 0", "-1"}));
+                           {"bodies[0].mass: must be 0 or in [1e-06, 1e+09]", "-1"}));
     EXPECT_TRUE(
         OneProblem(Problems(File(R"({"id": "a", "type": "box", "position": [0, 1, 0], "halfExtents": [1, 0, 1]})")),
                    {"bodies[0].halfExtents[1]: must be > 0"}));
@@ -167,7 +168,7 @@ TEST(SceneFile, ZeroOrNegativeSizesAndMasses) {
     EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("cloths": [{"gridSize": 5, "spacing": 0, "position": [0, 0, 0]}])")),
                            {"cloths[0].spacing: must be > 0"}));
     EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("camera": {"zoom": 0})")), {"camera.zoom: must be > 0"}));
-    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("duration": -1)")), {"duration: must be > 0"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("duration": -1)")), {"duration: must be in [0.001, 3600]"}));
 }
 
 TEST(SceneFile, OutOfRangeValuesAndNames) {
@@ -348,6 +349,93 @@ TEST(SceneFile, CountsOverLimits) {
     EXPECT_TRUE(OneProblem(Problems(huge), {"t.json: (top level): is larger than the limit of 4194304 bytes"}));
 }
 
+// Nesting beyond SceneLimits::kMaxNesting is refused before parsing, with the depth, the limit and the place of
+// the first bracket over it; brackets inside strings are not nesting.
+TEST(SceneFile, NestingOverTheLimitIsRefusedWithItsDepth) {
+    const auto nested = [](std::size_t arrays) {
+        return R"({"format": 1, "name": "d", "extra": )" + std::string(arrays, '[') + std::string(arrays, ']') + "}";
+    };
+    const std::string deep = nested(20000);
+    const std::size_t over = deep.find('[') + SceneLimits::kMaxNesting - 1;  // the object is level 1
+    EXPECT_TRUE(OneProblem(Problems(deep), {"t.json:1:" + std::to_string(over + 1) +
+                                            ": arrays and objects nest 20001 levels deep, over the limit of 64"}));
+    // At the limit the file is parsed and checked as usual.
+    EXPECT_TRUE(OneProblem(Problems(nested(SceneLimits::kMaxNesting - 1)), {"t.json: extra: unknown key"}));
+    EXPECT_TRUE(OneProblem(Problems(nested(SceneLimits::kMaxNesting)), {"nest 65 levels deep"}));
+    // Unbalanced text is measured as written.
+    EXPECT_TRUE(OneProblem(Problems(std::string(100, '{')), {"t.json:1:65: arrays and objects nest 100 levels"}));
+    // 70 brackets and braces in a string, with an escaped quote among them: one problem, the camera's unknown key.
+    const std::string brackets = std::string(70, '[') + "\\\"" + std::string(70, '{');
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("camera": {")" + brackets + R"(": 1})")),
+                           {"camera." + brackets.substr(0, 10)}));
+}
+
+// Every number is stored as a float: one that would round to 0 or to a denormal is refused with the range, as is
+// one beyond the float range. Masses, the duration and the step have ranges of their own, named in the message.
+TEST(SceneFile, ValuesThatRoundToZeroOrOverflowAFloatAreRefusedWithTheRange) {
+    const auto body = [](const std::string& field) {
+        return File(R"({"id": "a", "type": "box", "position": [0, 1, 0], )" + field + "}");
+    };
+    for (const char* mass : {"5e-324", "1e-45", "1e-7", "1e38", "2e9"})
+        EXPECT_TRUE(OneProblem(Problems(body(std::string(R"("mass": )") + mass)),
+                               {"bodies[0].mass: must be 0 or in [1e-06, 1e+09]"}))
+            << mass;
+    SceneDescription d;
+    ASSERT_TRUE(Problems(body(R"("mass": 1e-6)"), &d).empty());
+    EXPECT_EQ(d.bodies[0].mass, 1e-6f);
+    ASSERT_TRUE(Problems(body(R"("mass": 1e9)"), &d).empty());
+    EXPECT_EQ(d.bodies[0].mass, 1e9f);
+    ASSERT_TRUE(Problems(body(R"("mass": 0)"), &d).empty());
+    EXPECT_EQ(d.bodies[0].mass, 0.0f);
+    EXPECT_TRUE(OneProblem(
+        Problems(
+            File(kBox, R"("cloths": [{"gridSize": 5, "spacing": 1, "position": [0, 0, 0], "particleMass": 1e-45}])")),
+        {"cloths[0].particleMass: must be in [1e-06, 1e+09]"}));
+    for (const char* duration : {"1e-300", "0", "0.0009", "3601"})
+        EXPECT_TRUE(OneProblem(Problems(File(kBox, std::string(R"("duration": )") + duration)),
+                               {"duration: must be in [0.001, 3600]"}))
+            << duration;
+    // Any other field: below the smallest normal float, or beyond the largest.
+    EXPECT_TRUE(OneProblem(Problems(body(R"("restitution": 1e-40)")),
+                           {"bodies[0].restitution: is too small for a float: must be 0 or of magnitude at least"}));
+    EXPECT_TRUE(OneProblem(Problems(body(R"("velocity": [0, 5e-324, 0])")),
+                           {"bodies[0].velocity[1]: is too small for a float"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("camera": {"zoom": 1e-39})")), {"camera.zoom: is too small"}));
+    EXPECT_TRUE(
+        OneProblem(Problems(body(R"("friction": 1e39)")), {"bodies[0].friction: must be finite (a float: magnitude"}));
+    ASSERT_TRUE(Problems(body(R"("velocity": [0, 1.2e-38, 0], "restitution": 0)"), &d).empty());
+    EXPECT_EQ(d.bodies[0].velocity.y, 1.2e-38f);
+}
+
+// world.step follows --dt's rule (docs/app.md, "Steps"): 0 is the host's step, else in --dt's range; a step that is
+// not a whole number of microseconds is rounded to the nearest one with a note, and one that rounds below the range
+// (1e-9, 5e-7) is refused instead of becoming the host's.
+TEST(SceneFile, WorldStepIsRoundedToMicrosecondsWithANoteOrRefused) {
+    const auto parse = [](const std::string& step, SceneDescription* d, std::vector<std::string>* notes) {
+        std::vector<std::string> errors;
+        ParseSceneText(File(kBox, R"("world": {"step": )" + step + "}"), "t.json", d, &errors, notes);
+        return errors;
+    };
+    SceneDescription d;
+    std::vector<std::string> notes;
+    EXPECT_TRUE(parse("0.0166666667", &d, &notes).empty());
+    EXPECT_EQ(d.world.step, 0.016667f);
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0],
+              "t.json: world.step: 0.0166666667 s rounded to 0.016667 s (a step is a whole number of "
+              "microseconds; docs/app.md, \"Steps\")");
+    notes.clear();
+    for (const char* exact : {"0.01", "0.03", "0.0001", "1", "0"}) {
+        EXPECT_TRUE(parse(exact, &d, &notes).empty()) << exact;
+        EXPECT_EQ(d.world.step, static_cast<float>(std::atof(exact))) << exact;
+    }
+    EXPECT_TRUE(notes.empty());
+    for (const char* bad : {"1e-9", "5e-7", "0.00009", "1.5", "-0.01"}) {
+        const std::vector<std::string> errors = parse(bad, &d, &notes);
+        EXPECT_TRUE(OneProblem(errors, {"t.json: world.step: must be 0 or in [0.0001, 1]"})) << bad;
+    }
+}
+
 TEST(SceneFile, ReportsEveryProblemNotJustTheFirst) {
     const auto e = Problems(File(R"({"id": "a", "type": "box", "position": [0, 1, 0], "mass": -1, "friction": -1},
                                    {"id": "a", "type": "box", "position": [0, 1, 0], "colour": [1, 1, 1]})"));
@@ -361,8 +449,11 @@ TEST(SceneFile, LoadReportsUnreadableAndOversizedFiles) {
     ASSERT_EQ(errors.size(), 1u);
     EXPECT_NE(errors[0].find("/nonexistent/scene.json: cannot read"), std::string::npos);
     errors.clear();
+    EXPECT_NE(errors[0].find("cannot read: No such file or directory"), std::string::npos) << errors[0];
+    errors.clear();
     EXPECT_FALSE(LoadSceneFile("/tmp", &d, &errors));
-    EXPECT_EQ(errors.size(), 1u);
+    ASSERT_EQ(errors.size(), 1u);
+    EXPECT_NE(errors[0].find("/tmp: cannot read: not a regular file"), std::string::npos) << errors[0];
 
     const std::string path = ::testing::TempDir() + "psb_scenefile_test.json";
     {
@@ -596,9 +687,9 @@ TEST(SceneFile, RefusesABadErrorBudgetWithThePathAndValue) {
     EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("model": "best", "budget": {"bound": 1})")),
                            {"t.json: model: must be \"fixed\" or \"auto\"", "(got \"best\")"}));
     EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("model": "auto", "budget": {"bound": 0})")),
-                           {"t.json: budget.bound: must be > 0", "(got 0)"}));
+                           {"t.json: budget.bound: must be in [1e-09, 1e+06]", "(got 0)"}));
     EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("model": "auto", "budget": {"bound": -0.01})")),
-                           {"budget.bound: must be > 0", "(got -0.01)"}));
+                           {"budget.bound: must be in [1e-09, 1e+06]", "(got -0.01)"}));
     EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("model": "auto", "budget": {"bound": 1e39})")),
                            {"budget.bound: must be finite", "(got 1e+39)"}));
     EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("model": "auto", "budget": {"bound": "tight"})")),

@@ -44,7 +44,10 @@ expect FAIL '{"iterations": 5, "iterations": 9}' "duplicate key 'iterations'"
 expect_top OK '"model": "auto", "budget": {"quantity": "energy", "bound": 0.01}'
 expect_top OK '"model": "fixed", "budget": {"bound": 1}'
 expect_top FAIL '"model": "best"' 'model: must be one of'
-expect_top FAIL '"model": "auto", "budget": {"bound": 0}' 'budget.bound: must be > 0'
+expect_top FAIL '"model": "auto", "budget": {"bound": 0}' 'budget.bound: must be >= 1e-09'
 expect_top FAIL '"model": "auto", "budget": {"quantity": "position"}' 'budget.bound: is required'
+# Nesting past the loader's 64 levels (the object itself is one): refused before parsing, as the loader does.
+expect_top FAIL '"extra": [[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]' 'nest 65 levels deep, over the limit of 64'
+expect_top FAIL '"name2": "[[[[", "extra": [[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]' 'nest 65 levels deep'
 expect_top FAIL '"model": "auto", "budget": {"quantity": "speed", "bound": 1}' 'budget.quantity: must be one of'
 echo "scenes.schema-check: ok"
