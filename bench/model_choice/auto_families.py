@@ -130,7 +130,8 @@ def elliptic_k(m):
 
 
 def jacobi_sn(u, m):
-    """sn(u | m), 0 <= m < 1, by the AGM (Abramowitz and Stegun 16.4)."""
+    """sn(u | m), 0 <= m < 1: the arithmetic-geometric mean of 1 and sqrt(1 - m), then back down by
+    phi_{n-1} = (phi_n + asin(c_n / a_n sin phi_n)) / 2 from phi_N = 2^N a_N u; sn = sin(phi_0)."""
     if m < 1e-300:
         return math.sin(u)
     a, b, cs = [1.0], math.sqrt(1.0 - m), [math.sqrt(m)]
@@ -196,12 +197,8 @@ def draw_spring(rng):
     p0 = tuple(f32(length0 * x) for x in direction)
     length0 = math.sqrt(sum(x * x for x in p0))  # what the engine reads
     axis = tuple(x / length0 for x in p0)
-    if not hanging:
-        axis_g = 0.0
-    else:
-        axis_g = G
     duration = f32(min(rng.uniform(1, 10), 8 * 2 * math.pi * math.sqrt(m / k) + 1))
-    system = chain_matrix([m], [k], [b], [rest], axis_g)  # along the axis, "down" = away from the anchor
+    system = chain_matrix([m], [k], [b], [rest], g)  # along the axis: depth = distance from the anchor
     s = scene("spring", duration, [particle((0, 0, 0), mass=0), particle(p0, mass=m)], gravity=-g,
               springs=[{"a": "b0", "b": "b1", "stiffness": k, "damping": b, "restLength": rest}])
 

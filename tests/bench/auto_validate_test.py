@@ -81,7 +81,7 @@ def check_exact_answers():
 # A very fine fixed model per family (the slice: instance 0 of each family at the bench's seed, and bounce-001), with
 # the error allowed. Particles run RK4 at 1 ms: finer, float rounding of the positions adds up (the projectile ends
 # 1.3 mm off at 0.1 ms over 15,833 steps). The host's last row may hold the physics of up to two steps before its
-# time (issue 28: the state lags its time), so the error is the smallest over the step times in [time - 2 h, time].
+# time (the current host's state lags its time), so the error is the smallest over the step times in [time - 2 h, time].
 FINE = {
     False: ({"integrator": "rk4", "step": 1e-3}, 2e-4),
     True: ({"contactSolver": "book", "iterations": 20, "step": 1e-4}, 1e-3),
