@@ -117,8 +117,8 @@ def read_csv(path):
 def check_bench(binary, scratch):
     out = os.path.join(scratch, "bench")
     common = ["--binary", binary, "--per-family", "1", "--work-dir", os.path.join(out, "work")]
-    # projectile-000 at its own budget, and spring-000 at a budget of 1e-9 m, which nothing meets: refused.
-    args = common + ["--families", "projectile", "--csv", os.path.join(out, "a.csv"), "--grid-csv",
+    # projectile-000 at 0.1 m (its grid then stops early), and spring-000 at 1e-9 m, which nothing meets: refused.
+    args = common + ["--families", "projectile", "--budget", "0.1", "--csv", os.path.join(out, "a.csv"), "--grid-csv",
                      os.path.join(out, "a-grid.csv"), "--md", os.path.join(out, "a.md")]
     os.makedirs(out)
     check(av.main(args) == 0, "the bench on projectile-000 did not exit 0")
