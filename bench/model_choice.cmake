@@ -18,3 +18,14 @@ if(PSB_BUILD_TESTS)
                                            ${CMAKE_CURRENT_BINARY_DIR}/model-choice-quick)
   set_tests_properties(model_choice.quick PROPERTIES LABELS bench TIMEOUT 300)
 endif()
+
+# The generator of problems nobody tuned (auto_validate.py, docs/model-choice-validation.md "Problems nobody tuned")
+# drives the release program; its CTest checks the machinery on a small seeded slice (exact answers against
+# independent integrations and fine fixed runs, the CSV's columns, a refusal's grid), never auto's figures.
+if(PSB_BUILD_TESTS AND TARGET physics-sandbox)
+  find_package(Python3 COMPONENTS Interpreter REQUIRED)
+  add_test(NAME model_choice.auto_validate
+           COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/tests/bench/auto_validate_test.py
+                   $<TARGET_FILE:physics-sandbox> ${CMAKE_CURRENT_BINARY_DIR}/auto-validate-quick)
+  set_tests_properties(model_choice.auto_validate PROPERTIES LABELS bench TIMEOUT 300)
+endif()
