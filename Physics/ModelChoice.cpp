@@ -3,6 +3,8 @@
 #include <time.h>
 
 #include <algorithm>
+#include <cfloat>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -247,6 +249,65 @@ struct QuantityProbe {
     }
 };
 
+/// The choice's CPU limit and its progress lines (ChoiceSettings::cpuLimit, runShare, progress). Windows report
+/// what they cost when they end (Add, from the clock reads they make anyway); inside a window the clock is read only
+/// once enough predicted work has passed since the last read (about a millisecond), so a microsecond problem reads
+/// no clock more than before.
+class ChoiceClock {
+public:
+    explicit ChoiceClock(const ChoiceSettings& s) : settings(s), lastLine(Wall()) {}
+    /// The candidate about to be estimated: its own run's predicted work (the limit grows to a share of its run)
+    /// and what a progress line says.
+    void Candidate(double runWork, std::string what) {
+        candidateRunWork = runWork;
+        doing = std::move(what);
+    }
+    /// A finished piece of the choice (a window, the pilot): its CPU and predicted work.
+    void Add(double cpuSeconds, double workUnits) {
+        spent += cpuSeconds;
+        work += workUnits;
+        Report(0.0);
+    }
+    /// Inside a piece that started at thread CPU `pieceStart` and has done `pieceWork` so far: true once the limit
+    /// is spent (the piece then stops).
+    bool Poll(double pieceStart, double pieceWork) {
+        if (pieceWork < polledWork + kPollWork) return false;
+        polledWork = pieceWork;
+        const double now = ThreadCpuSeconds() - pieceStart;
+        Report(now);
+        return spent + now >= Limit(now, pieceWork);
+    }
+    /// Between pieces.
+    bool Over() const { return spent >= Limit(0.0, 0.0); }
+    /// s of CPU: the limit with what has been measured so far (work's CPU rate times the candidate's run).
+    double Limit(double extraCpu, double extraWork) const {
+        const double rate = work + extraWork > 0.0 ? (spent + extraCpu) / (work + extraWork) : 0.0;
+        return std::max(settings.cpuLimit, settings.runShare * rate * candidateRunWork);
+    }
+    double Spent() const { return spent; }
+    void StartPiece() { polledWork = 0.0; }
+
+private:
+    static constexpr double kPollWork = 4e4;  // PredictedWork units, about a millisecond of CPU
+    static double Wall() {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    }
+    void Report(double extraCpu) {
+        if (!settings.progress) return;
+        const double now = Wall();
+        if (now < lastLine + settings.progressEvery) return;
+        lastLine = now;
+        char text[320];
+        std::snprintf(text, sizeof text, "choosing a model: %.2f s CPU of a %.2f s limit; estimating %s",
+                      spent + extraCpu, Limit(extraCpu, 0.0), doing.c_str());
+        settings.progress(text);
+    }
+    const ChoiceSettings& settings;
+    double spent = 0.0, work = 0.0, polledWork = 0.0, candidateRunWork = 0.0;
+    double lastLine = 0.0;
+    std::string doing;
+};
+
 /// One window: the candidate and (unless the quantity is observed directly) its refinement run from the same
 /// state for `window` seconds, sampled at up to 256 whole-step times (an oscillation must not hide between
 /// samples). `warmSteps` steps of the candidate first run unmeasured, and the difference at their end is taken off
@@ -274,30 +335,67 @@ struct WindowResult {
     double pairObserved = -1.0;    // a whole run raised by its third probe: what the pair alone observed, else < 0
     double missedAt = -1.0;        // s into the measured part where it already missed `missBound`, else < 0
     double share = 1.0;            // the part of the window that ran (1 unless it stopped early)
+    // The convergence check over a whole run: the pair's difference (the largest, or at the end for energy), the
+    // finer pair's on the same terms, and the rounding level below which neither says anything.
+    double pair = -1.0, finer = -1.0, noise = 0.0;
+    bool stopped = false;  // cut short by the choice's CPU limit
 };
+
+/// The level at which a difference is rounding (float states): relative for energy, scaled by the largest
+/// coordinate (at least 1 m) for positions and joints.
+double ConvergenceNoise(BudgetQuantity quantity, const std::vector<double>& positions) {
+    double scale = 1.0;
+    if (quantity != BudgetQuantity::Energy) {
+        for (double x : positions) scale = std::max(scale, std::fabs(x));
+    }
+    return 32.0 * FLT_EPSILON * scale;
+}
 
 /// A window with `missBound` > 0 stops at the first sample whose difference, with the Richardson factor, already
 /// exceeds it: the window's contribution can only be larger (its growth is at least 0), so the candidate misses,
 /// and what is left of the window would only say by how much. Its result is then that lower bound (`missedAt`).
+struct WindowOptions {
+    int warmSteps = 0;
+    double fixedGrowth = -1.0;  // >= 0: the growth exponent used instead of the window's own
+    bool wholeRun = false;      // the window is the whole run (a third probe runs, energy is taken at the end)
+    double missBound = -1.0;
+    ChoiceClock* clock = nullptr;  // the choice's CPU limit (nullptr: none, as for the watch's checks)
+    bool third = false;            // a third probe, at the refinement's refinement, also on a window
+    bool byStep = false;           // refine by halving the step even where Refine doubles soft substeps
+};
+
+/// The refinement a window uses: Refine, or half the step (`byStep`: the convergence check along the step).
+ModelCandidate RefineFor(const ModelCandidate& c, const CandidateSpace& space, bool byStep) {
+    if (!byStep) return Refine(c, space);
+    ModelCandidate r = c;
+    r.step = c.step * 0.5;
+    return r;
+}
+
 WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
-                       const ErrorBudget& budget, double window, int warmSteps, double fixedGrowth = -1.0,
-                       bool wholeRun = false, double missBound = -1.0) {
+                       const ErrorBudget& budget, double window, const WindowOptions& o) {
+    const int warmSteps = o.warmSteps;
+    const double fixedGrowth = o.fixedGrowth, missBound = o.missBound;
+    const bool wholeRun = o.wholeRun;
+    ChoiceClock* clock = o.clock;
     WindowResult r;
     const double start = ThreadCpuSeconds();
+    if (clock) clock->StartPiece();
     std::unique_ptr<ModelProbe> coarse = factory();
     coarse->Apply(candidate);
     std::unique_ptr<ModelProbe> fine, finest;
     const bool observed = budget.quantity == BudgetQuantity::Constraint;
-    const ModelCandidate refined = Refine(candidate, space);
+    const ModelCandidate refined = RefineFor(candidate, space, o.byStep);
+    const ModelCandidate refinedTwice = RefineFor(refined, space, o.byStep);
     if (!observed) {
         fine = factory();
         fine->Apply(refined);
     }
-    const bool third = wholeRun && !observed;
+    const bool third = (wholeRun || o.third) && !observed;
     const bool atEnd = wholeRun && budget.quantity == BudgetQuantity::Energy;
     if (third) {
         finest = factory();
-        finest->Apply(Refine(refined, space));
+        finest->Apply(refinedTwice);
     }
     QuantityProbe q{budget.quantity, 1.0, {}, {}, false, {}, 0.0};
     if (budget.quantity == BudgetQuantity::Energy) {
@@ -327,6 +425,9 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
         if (ok) q.Rebase(*coarse, fine.get());
     }
     long long reached = warm;  // steps of the candidate run, the warm-up included
+    const double own = PredictedWork(candidate, space);
+    const double perSecond =
+        own + (observed ? 0.0 : PredictedWork(refined, space)) + (third ? PredictedWork(refinedTwice, space) : 0.0);
     const double factor = observed ? 1.0 : RichardsonFactor(OrderOf(candidate, space));
     for (int s = 1; ok && s <= samples; ++s) {
         reached = warm + (measured * s) / samples;
@@ -346,21 +447,24 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
             r.missedAt = candidate.step * static_cast<double>(reached - warm);
             break;
         }
+        if (clock && s < samples && clock->Poll(start, candidate.step * static_cast<double>(reached) * perSecond)) {
+            r.stopped = true;
+            break;
+        }
     }
     r.probeCpuSeconds = ThreadCpuSeconds() - start;
     r.simulated = candidate.step * static_cast<double>(reached);
     r.share = static_cast<double>(reached) / static_cast<double>(warm + measured);
-    const double own = PredictedWork(candidate, space);
-    const double perSecond = own + (observed ? 0.0 : PredictedWork(refined, space)) +
-                             (third ? PredictedWork(Refine(refined, space), space) : 0.0);
     r.work = r.simulated * perSecond;
     // The candidate's part of the window's CPU, by predicted work: the thread's CPU clock is a system call (about
     // 0.25 us), and reading it around every sample's advance was half a microsecond problem's calibration (the
     // projectile's: 69 us with it, 36 us without).
     r.cpuSeconds = r.probeCpuSeconds * own / perSecond;
+    if (clock) clock->Add(r.probeCpuSeconds, r.work);
+    r.noise = ConvergenceNoise(budget.quantity, q.b);
     if (!ok) return r;
     const double length = candidate.step * static_cast<double>(measured);
-    if (r.missedAt >= 0.0) {
+    if (r.missedAt >= 0.0 || r.stopped) {
         // A lower bound: the difference so far, nothing extrapolated.
         r.observed = full;
         r.length = length;
@@ -386,6 +490,8 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
         }
         const double predicted = std::pow(2.0, OrderOf(candidate, space)) * finer;
         const double pair = atEnd ? last : full;
+        r.pair = pair;
+        r.finer = finer;
         r.observed = pair;
         // Energy: the larger. Position: the finer pair only when it differs more (the error is not shrinking).
         if ((atEnd && predicted > pair) || (!atEnd && finer > full)) {
@@ -430,7 +536,8 @@ struct PlannedWindow {
 /// and what gravity or a smooth spring hardly does); the run is cut into intervals of half a window, and an interval
 /// ten times more irregular than any the start window covers gets a window from the snapshot of the interval before.
 std::vector<PlannedWindow> PlanWindows(const ProbeFactory& factory, const CandidateSpace& space,
-                                       const ChoiceSettings& settings, double window, ModelChoiceResult* result) {
+                                       const ChoiceSettings& settings, double window, ModelChoiceResult* result,
+                                       ChoiceClock* clock) {
     using Kind = PlannedWindow::Kind;
     const double T = settings.runSeconds;
     std::vector<PlannedWindow> plan{{Kind::Start, factory, 0.0, T, 0}};
@@ -438,6 +545,8 @@ std::vector<PlannedWindow> PlanWindows(const ProbeFactory& factory, const Candid
     const int intervals = static_cast<int>(std::ceil(T / interval - 1e-9));
     if (settings.eventWindows <= 0 || space.hasVolumes || intervals < 4) return plan;
     const double start = ThreadCpuSeconds();
+    clock->StartPiece();
+    clock->Candidate(0.0, "the pilot run of the scene's own model");
     std::unique_ptr<ModelProbe> pilot = factory();
     pilot->Apply(space.base);
     const double h = space.base.step;
@@ -451,6 +560,8 @@ std::vector<PlannedWindow> PlanWindows(const ProbeFactory& factory, const Candid
     while ((n + 1) * h <= pilotEnd * (1.0 + 1e-12)) {
         if (!pilot->AdvanceTo((n + 1) * h)) break;  // the scene's own model blew up: plan from what came before
         ++n;
+        // Past the choice's CPU limit: plan from what came before (the choice then stops; ChooseModel).
+        if (clock->Poll(start, PredictedWork(space.base, space) * static_cast<double>(n) * h)) break;
         const double t = n * h;
         x0.swap(x1);
         x1.swap(x2);
@@ -494,6 +605,7 @@ std::vector<PlannedWindow> PlanWindows(const ProbeFactory& factory, const Candid
     result->pilotCpuSeconds = ThreadCpuSeconds() - start;
     result->calibrationWork += PredictedWork(space.base, space) * static_cast<double>(n) * h;
     result->calibrationCpuSeconds += result->pilotCpuSeconds;
+    clock->Add(result->pilotCpuSeconds, PredictedWork(space.base, space) * static_cast<double>(n) * h);
     return plan;
 }
 
@@ -505,11 +617,32 @@ double Contribution(const PlannedWindow& p, const WindowResult& w, const ErrorBu
     return w.factor * w.observed * std::pow(std::max(p.span / w.length, 1.0), w.growth);
 }
 
+/// The convergence check (ChoiceSettings::orderBand): a candidate's error must shrink with its step at the order
+/// p its estimate assumes, so its difference from its refinement (`pair`) must be about 2^p times its refinement's
+/// from its own (`finer`), at least 2^(p - band). A finer pair within rounding (`noise`) has converged and passes. A
+/// candidate that fails is marked unreliable with the figures in its note, and is never chosen: its estimate
+/// assumed an order its error does not have.
+void CheckOrder(double pair, double finer, double noise, const CandidateSpace& space, const ChoiceSettings& settings,
+                const char* over, CandidateEstimate* e) {
+    e->pairDifference = pair;
+    e->finerDifference = finer;
+    const int p = OrderOf(e->model, space);
+    const double least = std::pow(2.0, p - settings.orderBand);
+    if (std::isfinite(pair) && std::isfinite(finer) && (finer <= noise || pair >= least * finer)) return;
+    e->unreliable = true;
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "unreliable: its error does not shrink at order %d (%s: it differs from its refinement by %.3g, "
+                  "the refinement from its own by %.3g: ratio %.3g, order %d needs at least %.3g)",
+                  p, over, pair, finer, finer > 0.0 ? pair / finer : kInf, p, least);
+    e->note = text;
+}
+
 /// A candidate's estimate: the sum of its windows' contributions (constraint error: the largest). Stops as soon as
 /// it misses `bound` (the rest can only add), marking the estimate partial (a lower bound).
 void Evaluate(const std::vector<PlannedWindow>& plan, double window, const CandidateSpace& space,
               const ErrorBudget& budget, const ChoiceSettings& settings, double bound, CandidateEstimate* e,
-              double* cpuSeconds, double* work) {
+              double* cpuSeconds, double* work, ChoiceClock* clock) {
     e->estimate = 0.0;
     e->share = 0.0;
     e->segments.clear();
@@ -529,19 +662,32 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
                            (refined ? PredictedWork(fine, space) + PredictedWork(Refine(fine, space), space) : 0.0)) <=
                       settings.wholeRunWork;
     double raisedFrom = -1.0;  // the pair's own estimate, when the third probe raised it
+    WindowResult first;        // the start window (the whole run's convergence figures)
     const std::vector<PlannedWindow> whole{plan[0]};
     const std::vector<PlannedWindow>& windows = e->wholeRun ? whole : plan;
     const double length = e->wholeRun ? settings.runSeconds : window;
     for (std::size_t k = 0; k < windows.size(); ++k) {
         // A window stops as soon as its own difference misses (RunWindow); a whole run does not, as its estimate
         // is what a finer rung of its family is floored by (RaiseToFamilyFloor), and a lower bound is not.
-        const WindowResult w = RunWindow(windows[k].factory, e->model, space, budget, length, windows[k].warmSteps,
-                                         -1.0, e->wholeRun, e->wholeRun || !settings.stopWindowsAtMiss ? -1.0 : bound);
+        WindowOptions o;
+        o.warmSteps = windows[k].warmSteps;
+        o.wholeRun = e->wholeRun;
+        o.missBound = e->wholeRun || !settings.stopWindowsAtMiss ? -1.0 : bound;
+        o.clock = clock;
+        const WindowResult w = RunWindow(windows[k].factory, e->model, space, budget, length, o);
         *cpuSeconds += w.probeCpuSeconds;
         *work += w.work;
         e->share += w.share / static_cast<double>(windows.size());
         cpu += w.cpuSeconds;
         simulated += w.simulated;
+        if (k == 0) first = w;
+        if (w.stopped) {
+            e->partial = true;
+            e->stoppedAtLimit = true;
+            e->estimate += w.factor * w.observed;
+            e->note = "stopped at the choice's CPU limit";
+            break;
+        }
         if (!w.stable || !std::isfinite(w.observed)) {
             e->stable = w.stable;
             e->estimate = kInf;
@@ -567,7 +713,9 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
             break;
         }
     }
-    if (e->wholeRun && e->stable && std::isfinite(e->estimate) && raisedFrom < 0.0) {
+    if (e->stoppedAtLimit) {
+        // the note says so
+    } else if (e->wholeRun && e->stable && std::isfinite(e->estimate) && raisedFrom < 0.0) {
         e->note = "measured over the whole run";
     } else if (e->wholeRun && e->stable && std::isfinite(e->estimate)) {
         char text[128];
@@ -575,7 +723,64 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
                       "measured over the whole run; raised from %.3g by the finer pair (a quarter step)", raisedFrom);
         e->note = text;
     }
+    if (e->wholeRun && e->stable && !e->partial && std::isfinite(e->estimate) && first.pair >= 0.0) {
+        const bool alongSubsteps = Refine(e->model, space).step == e->model.step;
+        CheckOrder(first.pair, first.finer, first.noise, space, settings,
+                   alongSubsteps ? "over the whole run, doubling its substeps" : "over the whole run", e);
+    }
     e->cpuPerSimSecond = simulated > 0.0 ? cpu / simulated : 0.0;
+}
+
+/// The convergence checks of a candidate that meets the budget (CheckOrder). Estimated on windows: its start window
+/// again with the refinement's refinement beside the pair (seven of its windows; event windows are not repeated).
+/// Measured over the whole run, the pair was checked there (Evaluate). Where the refinement is not half the step (the
+/// soft solver on a world of volumes doubles its substeps), the error must also shrink with the step itself: the
+/// candidate, half its step and a quarter, same substeps, over the same span. A check cut short by the choice's CPU
+/// limit leaves the candidate unchecked, so it is not chosen.
+void VerifyOrder(const PlannedWindow& start, double window, const CandidateSpace& space, const ErrorBudget& budget,
+                 const ChoiceSettings& settings, CandidateEstimate* e, double* cpuSeconds, double* work,
+                 ChoiceClock* clock) {
+    if (budget.quantity == BudgetQuantity::Constraint) return;
+    const bool alongSubsteps = Refine(e->model, space).step == e->model.step;
+    for (int pass = 0; pass < 2 && !e->unreliable; ++pass) {
+        const bool byStep = pass == 1;
+        if ((pass == 0 && e->wholeRun) || (byStep && !alongSubsteps)) continue;
+        WindowOptions o;
+        o.warmSteps = start.warmSteps;
+        o.wholeRun = e->wholeRun;
+        o.third = true;
+        o.clock = clock;
+        o.byStep = byStep;
+        const WindowResult w =
+            RunWindow(start.factory, e->model, space, budget, e->wholeRun ? settings.runSeconds : window, o);
+        *cpuSeconds += w.probeCpuSeconds;
+        *work += w.work;
+        if (w.stopped) {
+            e->partial = true;
+            e->stoppedAtLimit = true;
+            e->note = "its convergence check stopped at the choice's CPU limit";
+            return;
+        }
+        const bool ok = w.stable && std::isfinite(w.observed) && w.pair >= 0.0;
+        const char* over =
+            byStep ? (e->wholeRun ? "over the whole run, halving its step" : "over the start window, halving its step")
+                   : (alongSubsteps ? "over the start window, doubling its substeps" : "over the start window");
+        const double before = e->estimate;
+        CheckOrder(ok ? w.pair : kInf, ok ? w.finer : kInf, w.noise, space, settings, over, e);
+        // Along the step, the pair's difference is the step's part of the error, which doubling the substeps did
+        // not see: the estimate is at least that part with its Richardson factor (over a window, extrapolated as
+        // the start window was).
+        const double stepPart = e->wholeRun
+                                    ? w.factor * w.pair
+                                    : w.factor * w.pair * std::pow(std::max(start.span / window, 1.0), e->growth);
+        if (byStep && !e->unreliable && stepPart > before) {
+            char text[200];
+            std::snprintf(text, sizeof text, "raised from %.3g: half its step differs by %.3g (%s)", before, w.pair,
+                          e->wholeRun ? "over the whole run" : "over the start window");
+            e->estimate = stepPart;
+            e->note = text;
+        }
+    }
 }
 
 /// A window estimate can miss what a whole run sees (a period error that grows past the window, an impact a
@@ -618,6 +823,17 @@ void RaiseToFamilyFloor(const std::vector<CandidateEstimate>& candidates, const 
     e->note = text;
 }
 
+/// The candidate a refusal names: the smallest complete and reliable estimate; one that is a lower bound (a window
+/// stopped at a miss or at the CPU limit) or unreliable only while there is none.
+void KeepBest(ModelChoiceResult* result, int index) {
+    const CandidateEstimate& e = result->candidates[static_cast<std::size_t>(index)];
+    if (!e.stable || !std::isfinite(e.estimate)) return;
+    auto rank = [](const CandidateEstimate& c) { return c.partial || c.unreliable ? 1 : 0; };
+    const CandidateEstimate* b =
+        result->best >= 0 ? &result->candidates[static_cast<std::size_t>(result->best)] : nullptr;
+    if (!b || rank(e) < rank(*b) || (rank(e) == rank(*b) && e.estimate < b->estimate)) result->best = index;
+}
+
 }  // namespace
 
 ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace& space, const ErrorBudget& budget,
@@ -641,11 +857,17 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
     const double window = WindowFor(settings);
     result.windowSeconds = window;
     const double bound = budget.bound / settings.safety;
-    const std::vector<PlannedWindow> plan = PlanWindows(factory, space, settings, window, &result);
+    ChoiceClock clock(settings);
+    const std::vector<PlannedWindow> plan = PlanWindows(factory, space, settings, window, &result, &clock);
     for (std::size_t k = 0; k < order.size(); ++k) {
         CandidateEstimate& e = result.candidates[order[k]];
         if (result.chosen >= 0) {
             e.note = "not run: costs more than the chosen model";
+            continue;
+        }
+        if (result.stoppedAtLimit || clock.Over()) {
+            result.stoppedAtLimit = true;
+            e.note = "not run: the choice's CPU limit was reached";
             continue;
         }
         // Skip what an evaluated candidate of the same family already rules out: one that is no finer in step
@@ -699,22 +921,25 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
         }
         ++result.evaluatedCount;
         e.evaluated = true;
+        clock.Candidate(e.predictedWork * settings.runSeconds, e.model.Describe(space.hasParticles, space.hasVolumes));
         Evaluate(plan, window, space, budget, settings, bound, &e, &result.calibrationCpuSeconds,
-                 &result.calibrationWork);
+                 &result.calibrationWork, &clock);
         result.evaluatedShare += e.share;
         RaiseToFamilyFloor(result.candidates, order, k, space, &e);
-        e.meets = e.stable && !e.partial && e.estimate <= bound;
-        if (e.meets) result.chosen = static_cast<int>(order[k]);
-        if (e.stable && std::isfinite(e.estimate)) {
-            const CandidateEstimate* b = result.best >= 0 ? &result.candidates[result.best] : nullptr;
-            // The smallest complete estimate; a partial one (a lower bound) only while there is none.
-            if (!b || (b->partial && (!e.partial || e.estimate < b->estimate)) ||
-                (!b->partial && !e.partial && e.estimate < b->estimate)) {
-                result.best = static_cast<int>(order[k]);
-            }
+        if (e.stable && !e.partial && !e.unreliable && e.estimate <= bound) {
+            const double before = result.calibrationWork;
+            VerifyOrder(plan[0], window, space, budget, settings, &e, &result.calibrationCpuSeconds,
+                        &result.calibrationWork, &clock);
+            result.checkWork += result.calibrationWork - before;
         }
+        result.unreliableCount += e.unreliable ? 1 : 0;
+        result.stoppedAtLimit = result.stoppedAtLimit || e.stoppedAtLimit;
+        e.meets = e.stable && !e.partial && !e.unreliable && e.estimate <= bound;
+        if (e.meets) result.chosen = static_cast<int>(order[k]);
+        KeepBest(&result, static_cast<int>(order[k]));
     }
     result.feasible = result.chosen >= 0;
+    result.cpuLimit = clock.Limit(0.0, 0.0);
     return result;
 }
 
@@ -809,8 +1034,10 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
     if (!(window > 0.0)) return false;
     // Probes from a live world with volumes lack its contact history (no warm start): they settle first, unmeasured.
     const int warm = space.hasVolumes ? std::max(3, static_cast<int>(window / 3.0 / current.step)) : 0;
-    const WindowResult w = RunWindow(from, current, space, budget, window, warm,
-                                     budget.quantity == BudgetQuantity::Position ? -1.0 : growth);
+    WindowOptions o;
+    o.warmSteps = warm;
+    o.fixedGrowth = budget.quantity == BudgetQuantity::Position ? -1.0 : growth;
+    const WindowResult w = RunWindow(from, current, space, budget, window, o);
     cpuSeconds += w.probeCpuSeconds;
     work += w.work;
     ++checks;

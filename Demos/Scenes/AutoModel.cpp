@@ -191,6 +191,55 @@ bool ApplyModel(ParameterSet* params, const ModelCandidate& model, std::string* 
     return true;
 }
 
+/// Why no model was chosen: what the safety factor asks of an estimate, the best reliable estimate reached, the
+/// candidates found unreliable, and whether the CPU limit or the evaluation limit stopped the search.
+std::string RefusalText(const ModelChoiceResult& choice, const CandidateSpace& space, const ErrorBudget& budget,
+                        const ChoiceSettings& settings) {
+    const char* unit = BudgetUnit(budget.quantity);
+    char text[1024];
+    std::snprintf(text, sizeof text,
+                  "no model meets the %s error budget %g %s: it needs an estimate within %.3g %s (the budget over the "
+                  "safety factor %g)",
+                  ToString(budget.quantity), budget.bound, unit, budget.bound / settings.safety, unit, settings.safety);
+    std::string out = text;
+    auto add = [&out, &text](int n) {
+        if (n > 0) out.append(text, static_cast<std::size_t>(std::min<int>(n, sizeof text - 1)));
+    };
+    const CandidateEstimate* best = choice.best >= 0 ? &choice.candidates[choice.best] : nullptr;
+    if (best && !best->partial && !best->unreliable) {
+        add(std::snprintf(text, sizeof text, "; the best reached %.3g %s (%s)", best->estimate, unit,
+                          best->model.Describe(space.hasParticles, space.hasVolumes).c_str()));
+    } else if (best && !best->partial) {
+        add(std::snprintf(text, sizeof text, "; no estimate can be trusted (the smallest, %.3g %s from %s, is not)",
+                          best->estimate, unit, best->model.Describe(space.hasParticles, space.hasVolumes).c_str()));
+    } else if (best) {
+        add(std::snprintf(text, sizeof text, "; the best reached is at least %.3g %s (%s, %s)", best->estimate, unit,
+                          best->model.Describe(space.hasParticles, space.hasVolumes).c_str(), best->note.c_str()));
+    } else {
+        add(std::snprintf(text, sizeof text, "; every candidate estimated was unstable"));
+    }
+    if (choice.unreliableCount > 0) {
+        add(std::snprintf(text, sizeof text,
+                          "; %d candidates were unreliable: their error did not shrink with the step at the order "
+                          "their estimate assumes",
+                          choice.unreliableCount));
+    }
+    if (choice.stoppedAtLimit) {
+        add(std::snprintf(text, sizeof text,
+                          "; choosing stopped at its CPU limit of %.3g s (%.3g s spent), so finer candidates were not "
+                          "tried",
+                          choice.cpuLimit, choice.calibrationCpuSeconds));
+    } else if (choice.evaluatedShare >= settings.maxEvaluations) {
+        add(std::snprintf(text, sizeof text,
+                          "; the evaluation limit of %d candidates' windows was reached, so finer candidates were not "
+                          "tried",
+                          settings.maxEvaluations));
+    }
+    add(std::snprintf(text, sizeof text, " (%d candidates estimated; --explain-model lists them)",
+                      choice.evaluatedCount));
+    return out;
+}
+
 }  // namespace
 
 bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double step, double runSeconds,
@@ -204,29 +253,7 @@ bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double 
     settings.runSeconds = runSeconds;
     choice = ChooseModel(FactoryOf(world), space, budget, settings);
     if (!choice.feasible) {
-        char text[512];
-        if (choice.best >= 0) {
-            const CandidateEstimate& b = choice.candidates[choice.best];
-            std::snprintf(text, sizeof text,
-                          "no model meets the %s error budget %g %s (with safety factor %g): the best estimate "
-                          "the sandbox could reach is %.3g %s (%s; %d candidates estimated; --explain-model lists "
-                          "them)",
-                          ToString(budget.quantity), budget.bound, BudgetUnit(budget.quantity), settings.safety,
-                          b.estimate, BudgetUnit(budget.quantity),
-                          b.model.Describe(space.hasParticles, space.hasVolumes).c_str(), choice.evaluatedCount);
-            if (choice.evaluatedShare >= settings.maxEvaluations) {
-                std::snprintf(text + std::strlen(text), sizeof text - std::strlen(text),
-                              "; the evaluation limit of %d candidates' windows was reached, so finer candidates "
-                              "were not tried",
-                              settings.maxEvaluations);
-            }
-        } else {
-            std::snprintf(text, sizeof text,
-                          "no model meets the %s error budget %g %s: every candidate estimated was unstable (%d "
-                          "candidates estimated)",
-                          ToString(budget.quantity), budget.bound, BudgetUnit(budget.quantity), choice.evaluatedCount);
-        }
-        *error = text;
+        *error = RefusalText(choice, space, budget, settings);
         return false;
     }
     const CandidateEstimate& chosen = choice.candidates[choice.chosen];
@@ -291,7 +318,15 @@ std::string AutoModel::Explain() const {
             std::snprintf(cpu, sizeof cpu, "%.3g", c.cpuPerSimSecond);
         }
         std::string note = c.note;
-        if (c.evaluated && c.meets) note = "meets the budget";
+        if (c.evaluated && c.meets) {
+            note = "meets the budget";
+            if (c.finerDifference >= 0.0) {
+                char ratio[160];
+                std::snprintf(ratio, sizeof ratio, "; shrinks with its step (%.3g, then %.3g at half the step)",
+                              c.pairDifference, c.finerDifference);
+                note += ratio;
+            }
+        }
         if (c.evaluated && !c.meets && c.stable && note.empty()) note = "misses the budget";
         std::snprintf(line, sizeof line, "  %-6s %-44s %-12s %-12.4g %-12s %s\n",
                       static_cast<int>(i) == choice.chosen ? "*" : "",

@@ -100,5 +100,5 @@ grep -q '^Model: auto, ' "$dir/app.out" || fail "no auto model summary"
 "$exe" --window --demo springs --set model=auto --set tolerance=1e-9 --frames 30 >"$dir/app.out" 2>"$dir/app.err"
 rc=$?
 [ "$rc" -eq 2 ] || fail "an impossible budget in the window exited $rc, not 2"
-grep -q 'best estimate' "$dir/app.err" || fail "the refusal names no best estimate"
+grep -q 'the budget over the safety factor' "$dir/app.err" || fail "the refusal says not what the safety factor asks"
 echo "window: ok (ch14 -> ch15 by the panel button; camera yaw $yaw, zoom $zoom after the drags; model=auto)"

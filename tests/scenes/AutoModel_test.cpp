@@ -191,6 +191,8 @@ namespace {
 // fall), then hits the ground: the watch must see the impact when it happens and say so, refining the model or,
 // when the impact's error alone already exceeds the budget, reporting the miss. A second sphere rests far away: a
 // world of one volume is measured over the whole run, which sees the impact at calibration (and refuses this budget).
+// At 1 cm every candidate the start window meets is unreliable (the soft solver's resting contact does not converge
+// with its substeps: 32 substeps at 5 ms, a ratio of 1.3) and the budget is refused; 2 cm is met.
 TEST(AutoModel, WatchSeesContactBegin) {
     SceneDescription d;
     d.bodies.push_back(Ground());
@@ -216,12 +218,12 @@ TEST(AutoModel, WatchSeesContactBegin) {
         scene.AddParameters(&params);
         AutoModel autoModel;
         std::string error;
-        ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, 334 * kHostStep, Budget(1e-2), &error))
-            << error;
+        ASSERT_TRUE(autoModel.Choose(&params, scene.System(), kHostStep, 334 * kHostStep, Budget(2e-2), &error))
+            << error << autoModel.Explain();
         chosen = autoModel.Current();
         EXPECT_TRUE(autoModel.Choice().eventTimes.empty()) << "no pilot for a world with volumes";
     }
-    const AutoRun run = RunAuto(d, Budget(1e-2), 334, [](const FileScene&, double) {});
+    const AutoRun run = RunAuto(d, Budget(2e-2), 334, [](const FileScene&, double) {});
     ASSERT_TRUE(run.chosen) << run.error;
     ASSERT_FALSE(run.log.empty());
     double when = 0.0;
@@ -231,7 +233,7 @@ TEST(AutoModel, WatchSeesContactBegin) {
     const bool switched = run.log[0].find("switching from") != std::string::npos;
     const bool lost = run.log[0].find("already made") != std::string::npos;
     EXPECT_TRUE(switched || lost) << run.log[0];
-    EXPECT_GT(run.estimate, 1e-2) << "the running estimate shows the impact's error";
+    EXPECT_GT(run.estimate, 2e-2) << "the running estimate shows the impact's error";
     EXPECT_EQ(run.model.solver, chosen.solver);  // a switch refines; it never changes the solver
 }
 
@@ -370,8 +372,9 @@ TEST(AutoModel, AWindowEstimateIsNotTrustedBelowItsFamilysWholeRun) {
 // the validation's budget for a period error of 0.1 (1.73 m, docs/model-choice-validation.md): every integrator's
 // period error saturates near 0.25 at steps of 0.02 s and more (the sweep: semi-implicit Euler 0.244 at 0.1 s, 0.253
 // at 0.05 s), so the candidate at 0.1 s and its refinement agree while both are far off. Without the third probe
-// semi-implicit Euler at 0.1 s was chosen (estimated 0.78 m) and ended 2.4 times over the period budget. The
-// candidate's note (--explain-model) says the finer pair raised it.
+// semi-implicit Euler at 0.1 s was chosen (estimated 0.78 m) and ended 2.4 times over the period budget. The finer
+// pair differs more than the pair, so the error does not shrink at the candidate's order: it is unreliable, never
+// chosen, and its note (--explain-model) says so with the two differences.
 TEST(AutoModel, AWholeRunDifferenceIsCheckedByAFinerPair) {
     const Chosen run = ReferenceChoice("pendulum-large", 1.732);
     ASSERT_TRUE(run.chosen) << run.error;
@@ -380,7 +383,9 @@ TEST(AutoModel, AWholeRunDifferenceIsCheckedByAFinerPair) {
         if (!e.evaluated || e.model.step < 0.1 - 1e-12) continue;
         EXPECT_TRUE(e.wholeRun) << e.model.Describe(true, false);
         EXPECT_GT(e.estimate, 1.732 / 2.0) << e.model.Describe(true, false) << " misses the budget";
-        EXPECT_NE(e.note.find("by the finer pair"), std::string::npos) << "--explain-model says why: " << e.note;
+        EXPECT_FALSE(e.meets) << e.model.Describe(true, false);
+        EXPECT_TRUE(e.unreliable) << e.model.Describe(true, false);
+        EXPECT_NE(e.note.find("does not shrink"), std::string::npos) << "--explain-model says why: " << e.note;
     }
 }
 
@@ -538,7 +543,8 @@ TEST(AutoModel, AWindowStopsAtItsFirstMiss) {
         EXPECT_NE(c.note.find("into window"), std::string::npos) << c.note;
     }
     EXPECT_GT(stopped, 0);
-    EXPECT_LT(a.calibrationWork, 0.5 * b.calibrationWork);
+    // The estimates' work; the convergence checks of the candidates that met the budget are the same in both.
+    EXPECT_LT(a.calibrationWork - a.checkWork, 0.5 * (b.calibrationWork - b.checkWork));
 }
 
 // The evaluation limit counts a candidate stopped early for the part of its windows that ran: the tower of ten at
@@ -560,7 +566,11 @@ TEST(AutoModel, RefusesABudgetNoCandidateMeets) {
     std::string error;
     EXPECT_FALSE(autoModel.Choose(&params, scene.System(), kHostStep, 1.0, Budget(1e-9), &error));
     EXPECT_NE(error.find("1e-09 m"), std::string::npos) << error;
-    EXPECT_NE(error.find("best estimate"), std::string::npos) << error;
+    EXPECT_NE(error.find("needs an estimate within 5e-10 m (the budget over the safety factor 2)"), std::string::npos)
+        << error;
+    EXPECT_TRUE(error.find("; the best reached ") != std::string::npos ||
+                error.find("can be trusted") != std::string::npos)
+        << error;
     EXPECT_FALSE(autoModel.Active());
     EXPECT_EQ(params.Get("solver") + params.Get("iterations") + params.Get("dt"), before) << "nothing applied";
 }
