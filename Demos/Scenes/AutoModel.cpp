@@ -215,6 +215,8 @@ std::string RefusalText(const ModelChoiceResult& choice, const CandidateSpace& s
     } else if (best) {
         add(std::snprintf(text, sizeof text, "; the best reached is at least %.3g %s (%s, %s)", best->estimate, unit,
                           best->model.Describe(space.hasParticles, space.hasVolumes).c_str(), best->note.c_str()));
+    } else if (choice.evaluatedCount == 0) {
+        add(std::snprintf(text, sizeof text, "; no candidate was estimated"));
     } else {
         add(std::snprintf(text, sizeof text, "; every candidate estimated was unstable"));
     }
