@@ -82,7 +82,12 @@ constexpr double kStepLadder[] = {0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 0.
 constexpr int kIterationLadder[] = {1, 2, 5, 10, 20, 50};
 constexpr int kSubstepLadder[] = {1, 2, 4, 8, 16, 32};
 
-bool InRange(const ParameterSet::Entry& e, double v) { return v >= e.min && v <= e.max; }
+/// Within the key's range, up to the float rounding of its bounds (a range of 0.0005..0.1 s holds the ladder's
+/// 0.0005, which its float bound, 0.000500000024, would leave out).
+bool InRange(const ParameterSet::Entry& e, double v) {
+    const double slack = 1e-6 * std::fabs(v);
+    return v >= e.min - slack && v <= e.max + slack;
+}
 
 std::string Number(double v) {
     char text[32];
@@ -225,6 +230,15 @@ std::string RefusalText(const ModelChoiceResult& choice, const CandidateSpace& s
                           "; %d candidates were unreliable: their error did not shrink with the step at the order "
                           "their estimate assumes",
                           choice.unreliableCount));
+    }
+    // What the host allows: a budget can be out of its reach rather than the scene's.
+    if (space.steps.size() <= 1) {
+        add(std::snprintf(text, sizeof text, "; this host's step is fixed at %g s", space.base.step));
+    } else {
+        const double finest = *std::min_element(space.steps.begin(), space.steps.end());
+        bool tried = false;
+        for (const CandidateEstimate& e : choice.candidates) tried = tried || (e.evaluated && e.model.step <= finest);
+        if (tried) add(std::snprintf(text, sizeof text, "; the finest step this host allows, %g s, was tried", finest));
     }
     if (choice.stoppedAtLimit) {
         add(std::snprintf(text, sizeof text,
