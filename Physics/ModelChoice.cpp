@@ -1065,7 +1065,13 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
     }
     // The model was chosen with the safety factor's margin; it is changed only when the estimate says the budget
     // itself will be missed (a margin, so a model chosen near the edge does not flip on window-to-window noise).
-    if (running <= budget.bound) return false;
+    if (running <= budget.bound) {
+        missed = false;
+        return false;
+    }
+    // Unless the model is refined below, the run misses its budget as things stand (Missed).
+    if (!missed) missedAt = time;
+    missed = true;
     // What earlier windows measured (or earlier models left) is made. While it is under three times the budget,
     // refining still keeps the end near it; beyond, no finer model can: say so once and stop refining (it would
     // only cost).
@@ -1142,6 +1148,7 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
                   next.Describe(space.hasParticles, space.hasVolumes).c_str());
     *log = text;
     current = next;
+    missed = false;
     ++switches;
     scale *= ratio;
     carried += lastEstimate * (time - modelStart) / T;

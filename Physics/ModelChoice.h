@@ -245,6 +245,12 @@ public:
     double CurrentWork() const { return PredictedWork(current, space); }
     /// Model changes so far.
     int Switches() const { return switches; }
+    /// True when the latest check found the running estimate over the budget and did not refine the model (no
+    /// finer setting, the error already made, or a finer model would take off little): as things stand the run
+    /// misses its budget. MissedAt is the time (s) of the first such check in a row; the estimate is
+    /// RunningEstimate(). A later check under the budget, or a refinement, clears it.
+    bool Missed() const { return missed; }
+    double MissedAt() const { return missedAt; }
 
 private:
     CandidateSpace space;
@@ -269,6 +275,8 @@ private:
     int switches = 0;
     bool lostReported = false;  // the error already made exceeds the budget (said once)
     bool keptReported = false;  // a check kept the model, as a finer one would change little (said once)
+    bool missed = false;        // Missed
+    double missedAt = 0.0;      // s
     // Events: the host's last three frames' positions and the last acceleration, the irregularity the calibration
     // window saw, the pending event, and the two newest snapshots.
     std::vector<double> x0, x1, x2, acceleration;

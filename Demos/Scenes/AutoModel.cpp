@@ -300,6 +300,13 @@ const ModelCandidate& AutoModel::Current() const {
 
 double AutoModel::RunningEstimate() const { return watch ? watch->RunningEstimate() : 0.0; }
 
+bool AutoModel::MissedBudget(double* estimate, double* time) const {
+    if (!active || !watch || !watch->Missed()) return false;
+    *estimate = watch->RunningEstimate();
+    *time = watch->MissedAt();
+    return true;
+}
+
 double AutoModel::OverheadCpuSeconds() const {
     return choice.calibrationCpuSeconds + (watch ? watch->CpuSeconds() : 0.0);
 }

@@ -47,6 +47,8 @@ struct AutoRun {
     ModelCandidate model;
     double estimate = 0.0;
     double seconds = 0.0;  // simulated
+    bool missed = false;   // AutoModel::MissedBudget at the end
+    double missedEstimate = 0.0, missedTime = 0.0;
 };
 
 /// Runs `d` for `frames` host frames as the app does: Choose after the parameters, the host's accumulator running
@@ -79,6 +81,7 @@ AutoRun RunAuto(const SceneDescription& d, const AutoModelRequest& request, int 
     run.model = autoModel.Current();
     run.estimate = autoModel.RunningEstimate();
     run.seconds = physics;
+    run.missed = autoModel.MissedBudget(&run.missedEstimate, &run.missedTime);
     check(scene, physics);
     return run;
 }
@@ -518,6 +521,18 @@ TEST(AutoModel, TheWatchKeepsAModelAFinerOneWouldChangeLittle) {
     EXPECT_LE(switches, 2);
     EXPECT_GE(run.model.step, 0.02);
     EXPECT_LT(drift, 0.1);
+    // The model kept with its estimate over the budget: the watch says the run misses it (AutoModel::MissedBudget,
+    // for the host's exit code), with the estimate and the time of the check that kept it.
+    EXPECT_GT(run.estimate, 0.1);
+    ASSERT_TRUE(run.missed);
+    EXPECT_EQ(run.missedEstimate, run.estimate);
+    EXPECT_GT(run.missedTime, 0.0);
+    EXPECT_LT(run.missedTime, run.seconds);
+    char kept_at[32];
+    std::snprintf(kept_at, sizeof kept_at, "t = %.2f s:", run.missedTime);
+    bool logged = false;
+    for (const std::string& line : run.log) logged = logged || line.rfind(kept_at, 0) == 0;
+    EXPECT_TRUE(logged) << "a log line at the time of the miss, " << kept_at;
 }
 
 // The evaluation limit bounds the calibration of a budget nothing meets, not one a fine candidate meets: the
