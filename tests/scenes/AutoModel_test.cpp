@@ -796,7 +796,7 @@ TEST(AutoModel, ACandidateWhoseErrorDoesNotShrinkIsNotChosen) {
     for (const CandidateEstimate& e : result.candidates) {
         if (e.model.solver == ContactSolver::Soft && e.model.softSubsteps == 16 && e.model.step == 0.05) {
             EXPECT_TRUE(e.evaluated);
-            EXPECT_FALSE(e.meets) << "the issue's choice: " << e.note;
+            EXPECT_FALSE(e.meets) << "the choice before the convergence check: " << e.note;
             EXPECT_GT(e.estimate, 1e-2 / 2.0) << e.note;
         }
         if (!e.unreliable) continue;
