@@ -454,7 +454,8 @@ int main(int argc, char** argv) {
             return Usage("unknown argument '" + a + "'");
         }
         if (a != "--scenes" && a != "--results" && a != "--out" && a != "--csv") command += " " + a;
-        if (a == "--problem" || a == "--budgets" || a == "--safety") command += " " + std::string(argv[i]);
+        if (a == "--problem" || a == "--budgets" || a == "--safety" || a == "--cpu-limit")
+            command += " " + std::string(argv[i]);
     }
     std::vector<const ReferenceProblem*> problems;
     for (const ReferenceProblem& p : ReferenceProblems())
