@@ -17,8 +17,17 @@ int ChooseAutoModel(DemoBase& demo, const AutoModelHost& host, bool* explained) 
     }
     AutoModel& model = demo.AutoModelOf();
     std::string error;
+    // Never silent for more than a second while choosing (docs/model-choice.md, "The cost of choosing").
+    ChoiceSettings tuning;
+    const std::string name = host.name;
+    if (!host.quiet) {
+        tuning.progress = [name](const std::string& line) {
+            std::fprintf(stderr, "physics-sandbox: %s: model auto: %s\n", name.c_str(), line.c_str());
+            std::fflush(stderr);
+        };
+    }
     const bool chosen =
-        model.Choose(&demo.Parameters(), *demo.World(), host.hostStep, host.runSeconds, *request, &error);
+        model.Choose(&demo.Parameters(), *demo.World(), host.hostStep, host.runSeconds, *request, &error, tuning);
     // The table also when the budget is refused: it shows how close each candidate came.
     if (host.explain && !model.Choice().candidates.empty()) std::fputs(model.Explain().c_str(), stdout);
     if (!chosen) {

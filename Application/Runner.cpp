@@ -358,11 +358,12 @@ void LandOnRunTime(RunLoop& r) {
     if (owed > 0.0) r.window.OnFixedUpdate(float(owed));
 }
 
-// An auto model whose running estimate is over its budget: the frame where it went over and stayed (exit 4 at the
-// end unless a later model brings it back).
+// An auto model whose live watch found its estimate over the budget and kept the model (AutoModel::MissedBudget):
+// the frame from which it stayed so (exit 4 at the end unless a later check brings it back).
 void TrackBudget(RunLoop& r, int frame) {
     if (r.autoModel == nullptr) return;
-    if (r.autoModel->RunningEstimate() <= r.autoModel->Request().tolerance)
+    double estimate = 0.0, time = 0.0;
+    if (!r.autoModel->MissedBudget(&estimate, &time))
         r.missedAt = -1;
     else if (r.missedAt < 0)
         r.missedAt = frame;

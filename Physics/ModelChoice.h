@@ -146,6 +146,21 @@ struct ChoiceSettings {
     /// simulated time (0 = a sixth of the run).
     double checkWindowFraction = 0.3;
     double checkEvery = 0.0;
+    /// The convergence check: a candidate's difference from its refinement over the refinement's from its own
+    /// refinement must be at least 2^(p - orderBand), p the order the candidate is estimated at (the error shrinks
+    /// about as that order says). A candidate below is unreliable and never chosen. Differences both within
+    /// rounding (ConvergenceNoise) are not compared.
+    double orderBand = 0.5;
+    /// s of CPU the choice may spend (calibration, convergence checks and a refusal): where `runShare` times the
+    /// predicted CPU of the candidate being estimated is more, that instead (a choice costs at most half the run it
+    /// chooses). Past it the choice stops, and refuses unless a candidate already met the budget. Tests set a tiny
+    /// limit and a zero share to test the stop without depending on timing.
+    double cpuLimit = 1.0;
+    double runShare = 0.5;
+    /// Called with a line of progress (what is being estimated, the CPU spent against the limit) at most once per
+    /// `progressEvery` s of wall time while the choice runs; the first after that long. Empty: no progress.
+    std::function<void(const std::string&)> progress;
+    double progressEvery = 1.0;
 };
 
 /// One candidate as the estimator saw it.
@@ -157,10 +172,16 @@ struct CandidateEstimate {
     double growth = 0.0;           ///< the error's fitted growth exponent in time
     bool evaluated = false;        ///< false: skipped (its predicted cost was above the chosen one's)
     bool stable = true;
-    bool meets = false;            ///< safety * estimate <= bound
-    bool partial = false;          ///< the estimate stopped at a window where it already missed (a lower bound)
-    bool wholeRun = false;         ///< estimated over the whole run (ChoiceSettings::wholeRunWork), not windows
-    double share = 0.0;            ///< the part of its windows that ran (below 1 when one stopped at a miss)
+    bool meets = false;     ///< safety * estimate <= bound
+    bool partial = false;   ///< the estimate stopped at a window where it already missed (a lower bound)
+    bool wholeRun = false;  ///< estimated over the whole run (ChoiceSettings::wholeRunWork), not windows
+    double share = 0.0;     ///< the part of its windows that ran (below 1 when one stopped at a miss)
+    /// The convergence check (ChoiceSettings::orderBand): the candidate's largest difference from its refinement
+    /// and the refinement's from its own (over the whole run, or over the start window), when it was run (< 0: not).
+    double pairDifference = -1.0;
+    double finerDifference = -1.0;
+    bool unreliable = false;       ///< its error did not shrink at its order: never chosen
+    bool stoppedAtLimit = false;   ///< its estimate was cut short by the choice's CPU limit
     std::vector<double> segments;  ///< each window's share of the estimate (start window first)
     std::string note;              ///< why skipped, or why the estimate is not trusted
 };
@@ -179,6 +200,11 @@ struct ModelChoiceResult {
     int evaluatedCount = 0;          ///< candidates estimated
     double evaluatedShare = 0.0;     ///< their windows that ran, in candidates (ChoiceSettings::maxEvaluations)
     double windowSeconds = 0.0;      ///< s of simulated time per calibration run
+    /// The choice stopped at its CPU limit (ChoiceSettings::cpuLimit), which was `cpuLimit` s when it stopped.
+    bool stoppedAtLimit = false;
+    double cpuLimit = 0.0;
+    int unreliableCount = 0;  ///< candidates whose error did not shrink at their order
+    double checkWork = 0.0;   ///< the part of calibrationWork spent on convergence checks (VerifyOrder)
 };
 
 /// Estimates every candidate on probes from `factory` (cheapest first, skipping those predicted to cost more
@@ -219,6 +245,12 @@ public:
     double CurrentWork() const { return PredictedWork(current, space); }
     /// Model changes so far.
     int Switches() const { return switches; }
+    /// True when the latest check found the running estimate over the budget and did not refine the model (no
+    /// finer setting, the error already made, or a finer model would take off little): as things stand the run
+    /// misses its budget. MissedAt is the time (s) of the first such check in a row; the estimate is
+    /// RunningEstimate(). A later check under the budget, or a refinement, clears it.
+    bool Missed() const { return missed; }
+    double MissedAt() const { return missedAt; }
 
 private:
     CandidateSpace space;
@@ -243,6 +275,8 @@ private:
     int switches = 0;
     bool lostReported = false;  // the error already made exceeds the budget (said once)
     bool keptReported = false;  // a check kept the model, as a finer one would change little (said once)
+    bool missed = false;        // Missed
+    double missedAt = 0.0;      // s
     // Events: the host's last three frames' positions and the last acceleration, the irregularity the calibration
     // window saw, the pending event, and the two newest snapshots.
     std::vector<double> x0, x1, x2, acceleration;

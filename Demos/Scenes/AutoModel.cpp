@@ -82,7 +82,12 @@ constexpr double kStepLadder[] = {0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 0.
 constexpr int kIterationLadder[] = {1, 2, 5, 10, 20, 50};
 constexpr int kSubstepLadder[] = {1, 2, 4, 8, 16, 32};
 
-bool InRange(const ParameterSet::Entry& e, double v) { return v >= e.min && v <= e.max; }
+/// Within the key's range, up to the float rounding of its bounds (a range of 0.0005..0.1 s holds the ladder's
+/// 0.0005, which its float bound, 0.000500000024, would leave out).
+bool InRange(const ParameterSet::Entry& e, double v) {
+    const double slack = 1e-6 * std::fabs(v);
+    return v >= e.min - slack && v <= e.max + slack;
+}
 
 std::string Number(double v) {
     char text[32];
@@ -191,6 +196,66 @@ bool ApplyModel(ParameterSet* params, const ModelCandidate& model, std::string* 
     return true;
 }
 
+/// Why no model was chosen: what the safety factor asks of an estimate, the best reliable estimate reached, the
+/// candidates found unreliable, and whether the CPU limit or the evaluation limit stopped the search.
+std::string RefusalText(const ModelChoiceResult& choice, const CandidateSpace& space, const ErrorBudget& budget,
+                        const ChoiceSettings& settings) {
+    const char* unit = BudgetUnit(budget.quantity);
+    char text[1024];
+    std::snprintf(text, sizeof text,
+                  "no model meets the %s error budget %g %s: it needs an estimate within %.3g %s (the budget over the "
+                  "safety factor %g)",
+                  ToString(budget.quantity), budget.bound, unit, budget.bound / settings.safety, unit, settings.safety);
+    std::string out = text;
+    auto add = [&out, &text](int n) {
+        if (n > 0) out.append(text, static_cast<std::size_t>(std::min<int>(n, sizeof text - 1)));
+    };
+    const CandidateEstimate* best = choice.best >= 0 ? &choice.candidates[choice.best] : nullptr;
+    if (best && !best->partial && !best->unreliable) {
+        add(std::snprintf(text, sizeof text, "; the best reached %.3g %s (%s)", best->estimate, unit,
+                          best->model.Describe(space.hasParticles, space.hasVolumes).c_str()));
+    } else if (best && !best->partial) {
+        add(std::snprintf(text, sizeof text, "; no estimate can be trusted (the smallest, %.3g %s from %s, is not)",
+                          best->estimate, unit, best->model.Describe(space.hasParticles, space.hasVolumes).c_str()));
+    } else if (best) {
+        add(std::snprintf(text, sizeof text, "; the best reached is at least %.3g %s (%s, %s)", best->estimate, unit,
+                          best->model.Describe(space.hasParticles, space.hasVolumes).c_str(), best->note.c_str()));
+    } else if (choice.evaluatedCount == 0) {
+        add(std::snprintf(text, sizeof text, "; no candidate was estimated"));
+    } else {
+        add(std::snprintf(text, sizeof text, "; every candidate estimated was unstable"));
+    }
+    if (choice.unreliableCount > 0) {
+        add(std::snprintf(text, sizeof text,
+                          "; %d candidates were unreliable: their error did not shrink with the step at the order "
+                          "their estimate assumes",
+                          choice.unreliableCount));
+    }
+    // What the host allows: a budget can be out of its reach rather than the scene's.
+    if (space.steps.size() <= 1) {
+        add(std::snprintf(text, sizeof text, "; this host's step is fixed at %g s", space.base.step));
+    } else {
+        const double finest = *std::min_element(space.steps.begin(), space.steps.end());
+        bool tried = false;
+        for (const CandidateEstimate& e : choice.candidates) tried = tried || (e.evaluated && e.model.step <= finest);
+        if (tried) add(std::snprintf(text, sizeof text, "; the finest step this host allows, %g s, was tried", finest));
+    }
+    if (choice.stoppedAtLimit) {
+        add(std::snprintf(text, sizeof text,
+                          "; choosing stopped at its CPU limit of %.3g s (%.3g s spent), so finer candidates were not "
+                          "tried",
+                          choice.cpuLimit, choice.calibrationCpuSeconds));
+    } else if (choice.evaluatedShare >= settings.maxEvaluations) {
+        add(std::snprintf(text, sizeof text,
+                          "; the evaluation limit of %d candidates' windows was reached, so finer candidates were not "
+                          "tried",
+                          settings.maxEvaluations));
+    }
+    add(std::snprintf(text, sizeof text, " (%d candidates estimated; --explain-model lists them)",
+                      choice.evaluatedCount));
+    return out;
+}
+
 }  // namespace
 
 bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double step, double runSeconds,
@@ -210,29 +275,7 @@ bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double 
     settings.runSeconds = runSeconds;
     choice = ChooseModel(FactoryOf(world), space, budget, settings);
     if (!choice.feasible) {
-        char text[512];
-        if (choice.best >= 0) {
-            const CandidateEstimate& b = choice.candidates[choice.best];
-            std::snprintf(text, sizeof text,
-                          "no model meets the %s error budget %g %s (with safety factor %g): the best estimate "
-                          "the sandbox could reach is %.3g %s (%s; %d candidates estimated; --explain-model lists "
-                          "them)",
-                          ToString(budget.quantity), budget.bound, BudgetUnit(budget.quantity), settings.safety,
-                          b.estimate, BudgetUnit(budget.quantity),
-                          b.model.Describe(space.hasParticles, space.hasVolumes).c_str(), choice.evaluatedCount);
-            if (choice.evaluatedShare >= settings.maxEvaluations) {
-                std::snprintf(text + std::strlen(text), sizeof text - std::strlen(text),
-                              "; the evaluation limit of %d candidates' windows was reached, so finer candidates "
-                              "were not tried",
-                              settings.maxEvaluations);
-            }
-        } else {
-            std::snprintf(text, sizeof text,
-                          "no model meets the %s error budget %g %s: every candidate estimated was unstable (%d "
-                          "candidates estimated)",
-                          ToString(budget.quantity), budget.bound, BudgetUnit(budget.quantity), choice.evaluatedCount);
-        }
-        *error = text;
+        *error = RefusalText(choice, space, budget, settings);
         return false;
     }
     const CandidateEstimate& chosen = choice.candidates[choice.chosen];
@@ -262,6 +305,13 @@ const ModelCandidate& AutoModel::Current() const {
 }
 
 double AutoModel::RunningEstimate() const { return watch ? watch->RunningEstimate() : 0.0; }
+
+bool AutoModel::MissedBudget(double* estimate, double* time) const {
+    if (!active || !watch || !watch->Missed()) return false;
+    *estimate = watch->RunningEstimate();
+    *time = watch->MissedAt();
+    return true;
+}
 
 double AutoModel::OverheadCpuSeconds() const {
     return choice.calibrationCpuSeconds + (watch ? watch->CpuSeconds() : 0.0);
@@ -297,7 +347,15 @@ std::string AutoModel::Explain() const {
             std::snprintf(cpu, sizeof cpu, "%.3g", c.cpuPerSimSecond);
         }
         std::string note = c.note;
-        if (c.evaluated && c.meets) note = "meets the budget";
+        if (c.evaluated && c.meets) {
+            note = "meets the budget";
+            if (c.finerDifference >= 0.0) {
+                char ratio[160];
+                std::snprintf(ratio, sizeof ratio, "; shrinks with its step (%.3g, then %.3g at half the step)",
+                              c.pairDifference, c.finerDifference);
+                note += ratio;
+            }
+        }
         if (c.evaluated && !c.meets && c.stable && note.empty()) note = "misses the budget";
         std::snprintf(line, sizeof line, "  %-6s %-44s %-12s %-12.4g %-12s %s\n",
                       static_cast<int>(i) == choice.chosen ? "*" : "",

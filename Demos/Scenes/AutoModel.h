@@ -53,6 +53,11 @@ public:
     const ModelCandidate& Current() const;
     /// The running estimate at the end of the run (budget unit); the calibration's until the first check.
     double RunningEstimate() const;
+    /// For the host's exit code ("ran, but missed its budget"): true when the live watch found the running estimate
+    /// over the budget and could not refine the model (ModelWatch::Missed); *estimate is the running estimate (budget
+    /// unit) and *time the simulated time (s) of the check that found it. False without auto, after a choice
+    /// measured over the whole run (nothing is watched), or when the latest check was within the budget.
+    bool MissedBudget(double* estimate, double* time) const;
     /// s of CPU spent calibrating and watching (the overhead of auto).
     double OverheadCpuSeconds() const;
     /// Every candidate with its estimated error and cost, the chosen one marked (for --explain-model).

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -46,7 +47,9 @@ constexpr const char* kUsage =
     "  --results FILE  the full sweep (default: the source tree's docs/sweep/results.csv)\n"
     "  --explain       print auto's candidates (AutoModel::Explain) and its log for every case on stderr\n"
     "  --safety S      auto's safety factor (default 2: a candidate meets a budget when S x estimate <= budget),\n"
-    "                  to measure what another factor buys in accuracy and costs\n";
+    "                  to measure what another factor buys in accuracy and costs\n"
+    "  --cpu-limit S   the CPU seconds auto's choice may spend (default 1, as in the app; 0: no limit, so the\n"
+    "                  choice does not depend on timing, as in the CTest)\n";
 
 std::string Num(double v, int digits = 3) {
     if (std::isinf(v)) return "inf";
@@ -431,6 +434,14 @@ int main(int argc, char** argv) {
             const std::vector<double> v = ParseList(value());
             if (v.size() != 1 || v[0] < 1.0) return Usage("--safety: one finite number of at least 1");
             tuning.safety = v[0];
+        } else if (a == "--cpu-limit") {
+            const std::string text = value();
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != '\0' || !(v >= 0.0) || !std::isfinite(v)) {
+                return Usage("--cpu-limit: one finite number of at least 0 (got '" + text + "')");
+            }
+            tuning.cpuLimit = v > 0.0 ? v : std::numeric_limits<double>::infinity();
         } else if (a == "--out") {
             out = value();
         } else if (a == "--csv") {
@@ -443,7 +454,8 @@ int main(int argc, char** argv) {
             return Usage("unknown argument '" + a + "'");
         }
         if (a != "--scenes" && a != "--results" && a != "--out" && a != "--csv") command += " " + a;
-        if (a == "--problem" || a == "--budgets" || a == "--safety") command += " " + std::string(argv[i]);
+        if (a == "--problem" || a == "--budgets" || a == "--safety" || a == "--cpu-limit")
+            command += " " + std::string(argv[i]);
     }
     std::vector<const ReferenceProblem*> problems;
     for (const ReferenceProblem& p : ReferenceProblems())

@@ -193,13 +193,13 @@ TEST(AutoModelCli, AnImpossibleBudgetIsRefusedUpFront) {
                                            "--frames", "30", "--out", dir + "/frames", "--state", dir + "/s.csv"});
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_NE(r.err.find("1e-09"), std::string::npos) << "the message names the budget: " << r.err;
-    EXPECT_NE(r.err.find("best estimate"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("the budget over the safety factor"), std::string::npos) << r.err;
     EXPECT_TRUE(FilesIn(dir).empty());
     // --explain-model refuses it the same way.
     const SandboxResult explained = RunSandboxExe(
         {"--demo", "springs", "--set", "model=auto", "--set", "tolerance=1e-9", "--frames", "30", "--explain-model"});
     EXPECT_EQ(explained.exitCode, 2) << explained.err;
-    EXPECT_NE(explained.err.find("best estimate"), std::string::npos) << explained.err;
+    EXPECT_NE(explained.err.find("the budget over the safety factor"), std::string::npos) << explained.err;
 }
 
 TEST(AutoModelCli, ExplainModelNeedsAnAutoModelAndRunsNothing) {

@@ -100,7 +100,7 @@ grep -q '^Model: auto, ' "$dir/app.out" || fail "no auto model summary"
 "$exe" --window --demo springs --set model=auto --set tolerance=1e-9 --frames 30 >"$dir/app.out" 2>"$dir/app.err"
 rc=$?
 [ "$rc" -eq 2 ] || fail "an impossible budget in the window exited $rc, not 2"
-grep -q 'best estimate' "$dir/app.err" || fail "the refusal names no best estimate"
+grep -q 'the budget over the safety factor' "$dir/app.err" || fail "the refusal says not what the safety factor asks"
 
 # Standard output on a full device: the demo lines and the summary are lost, so exit 3 with a message, as the
 # headless runs do (docs/app.md, "Exit codes").

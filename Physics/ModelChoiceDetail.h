@@ -1,0 +1,133 @@
+#pragma once
+// The estimator's internals shared by Physics/ModelChoice.cpp (the choice), Physics/ModelWatch.cpp (the live watch)
+// and Physics/ModelWindow.cpp (one window of probes): docs/model-choice.md. Not for use outside those files.
+
+#include <time.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "Physics/ModelChoice.h"
+
+namespace model_choice {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// s of CPU of the calling thread.
+double ThreadCpuSeconds();
+/// Formal order of accuracy of a candidate on a space: contact (volumes or particles bouncing off constraints) is
+/// non-smooth, so first order; otherwise the integrator's.
+int OrderOf(const ModelCandidate& c, const CandidateSpace& space);
+/// Richardson factor: with the refinement's error 2^-p of the candidate's, the candidate's error is the
+/// difference times 1 / (1 - 2^-p).
+double RichardsonFactor(int order);
+/// Contact passes of a candidate: soft substeps or solver iterations.
+int Passes(const ModelCandidate& c);
+/// Candidates of the same family (integrator and solver) that differ only in step and passes.
+bool SameFamily(const ModelCandidate& a, const ModelCandidate& b);
+/// s: the calibration window of a run.
+double WindowFor(const ChoiceSettings& s);
+/// The level at which a difference is rounding (float states): relative for energy, scaled by the largest
+/// coordinate (at least 1 m) for positions and joints.
+double ConvergenceNoise(BudgetQuantity quantity, const std::vector<double>& positions);
+
+/// The choice's CPU limit and its progress lines (ChoiceSettings::cpuLimit, runShare, progress). Windows report
+/// what they cost when they end (Add, from the clock reads they make anyway); inside a window the clock is read only
+/// once enough predicted work has passed since the last read (about a millisecond), so a microsecond problem reads
+/// no clock more than before.
+class ChoiceClock {
+public:
+    explicit ChoiceClock(const ChoiceSettings& s) : settings(s), lastLine(Wall()) {}
+    /// The candidate about to be estimated: its own run's predicted work (the limit grows to a share of its run)
+    /// and what a progress line says.
+    void Candidate(double runWork, std::string what) {
+        candidateRunWork = runWork;
+        doing = std::move(what);
+    }
+    /// A finished piece of the choice (a window, the pilot): its CPU and predicted work.
+    void Add(double cpuSeconds, double workUnits) {
+        spent += cpuSeconds;
+        work += workUnits;
+        Report(0.0);
+    }
+    /// Inside a piece that started at thread CPU `pieceStart` and has done `pieceWork` so far: true once the limit
+    /// is spent (the piece then stops).
+    bool Poll(double pieceStart, double pieceWork) {
+        if (pieceWork < polledWork + kPollWork) return false;
+        polledWork = pieceWork;
+        const double now = ThreadCpuSeconds() - pieceStart;
+        Report(now);
+        return spent + now >= Limit(now, pieceWork);
+    }
+    /// Between pieces.
+    bool Over() const { return spent >= Limit(0.0, 0.0); }
+    /// s of CPU: the limit with what has been measured so far (work's CPU rate times the candidate's run).
+    double Limit(double extraCpu, double extraWork) const {
+        const double rate = work + extraWork > 0.0 ? (spent + extraCpu) / (work + extraWork) : 0.0;
+        return std::max(settings.cpuLimit, settings.runShare * rate * candidateRunWork);
+    }
+    double Spent() const { return spent; }
+    void StartPiece() { polledWork = 0.0; }
+
+private:
+    static constexpr double kPollWork = 4e4;  // PredictedWork units, about a millisecond of CPU
+    static double Wall() {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    }
+    void Report(double extraCpu) {
+        if (!settings.progress) return;
+        const double now = Wall();
+        if (now < lastLine + settings.progressEvery) return;
+        lastLine = now;
+        char text[320];
+        std::snprintf(text, sizeof text, "choosing a model: %.2f s CPU of a %.2f s limit; estimating %s",
+                      spent + extraCpu, Limit(extraCpu, 0.0), doing.c_str());
+        settings.progress(text);
+    }
+    const ChoiceSettings& settings;
+    double spent = 0.0, work = 0.0, polledWork = 0.0, candidateRunWork = 0.0;
+    double lastLine = 0.0;
+    std::string doing;
+};
+
+/// What one window measured (RunWindow).
+struct WindowResult {
+    bool stable = true;
+    double observed = 0.0;         // the largest sampled difference (or observed value) over the measured part
+    double length = 0.0;           // s: the measured part
+    double factor = 1.0;           // the Richardson factor
+    double growth = 1.0;           // the exponent used
+    double cpuSeconds = 0.0;       // candidate's probe only: the window's CPU apportioned by predicted work
+    double probeCpuSeconds = 0.0;  // every probe of the window, built and run
+    double simulated = 0.0;        // s the candidate's probe ran
+    double work = 0.0;             // PredictedWork units both probes did (a deterministic measure of their cost)
+    double pairObserved = -1.0;    // a whole run raised by its third probe: what the pair alone observed, else < 0
+    double missedAt = -1.0;        // s into the measured part where it already missed `missBound`, else < 0
+    double share = 1.0;            // the part of the window that ran (1 unless it stopped early)
+    // The convergence check over a whole run: the pair's difference (the largest, or at the end for energy), the
+    // finer pair's on the same terms, and the rounding level below which neither says anything.
+    double pair = -1.0, finer = -1.0, noise = 0.0;
+    bool stopped = false;  // cut short by the choice's CPU limit
+};
+
+/// How a window runs (RunWindow).
+struct WindowOptions {
+    int warmSteps = 0;
+    double fixedGrowth = -1.0;  // >= 0: the growth exponent used instead of the window's own
+    bool wholeRun = false;      // the window is the whole run (a third probe runs, energy is taken at the end)
+    double missBound = -1.0;
+    ChoiceClock* clock = nullptr;  // the choice's CPU limit (nullptr: none, as for the watch's checks)
+    bool third = false;            // a third probe, at the refinement's refinement, also on a window
+    bool byStep = false;           // refine by halving the step even where Refine doubles soft substeps
+};
+
+/// One window: the candidate and (unless the quantity is observed directly) its refinement run from the same state
+/// for `window` seconds (Physics/ModelWindow.cpp says how).
+WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
+                       const ErrorBudget& budget, double window, const WindowOptions& o);
+
+}  // namespace model_choice

@@ -1,0 +1,262 @@
+// One window of probes (docs/model-choice.md, "What is estimated"): the candidate, its refinement and, over a whole
+// run or for the convergence check, the refinement's refinement, run side by side from one state.
+#include <cfloat>
+#include <cmath>
+#include <memory>
+
+#include "Physics/ModelChoiceDetail.h"
+#include "Physics/PhysicsSystem.h"
+
+namespace model_choice {
+double ThreadCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+/// Formal order of accuracy of a candidate on a space: contact (volumes or particles bouncing off constraints) is
+/// non-smooth, so first order; otherwise the integrator's.
+int OrderOf(const ModelCandidate& c, const CandidateSpace& space) {
+    if (space.hasVolumes || space.hasContacts) return 1;
+    switch (c.integrator) {
+        case Integrator::ExplicitEuler:
+        case Integrator::SemiImplicitEuler:
+            return 1;
+        case Integrator::VelocityVerlet:
+        case Integrator::PositionVerlet:
+            return 2;
+        case Integrator::RK4:
+            return 4;
+    }
+    return 1;
+}
+
+/// Richardson factor: with the refinement's error 2^-p of the candidate's, the candidate's error is the
+/// difference times 1 / (1 - 2^-p).
+double RichardsonFactor(int order) { return 1.0 / (1.0 - std::pow(0.5, order)); }
+
+/// The budget's quantity between a candidate's probe and its refinement's (or of the candidate alone, for
+/// constraint error, which is observed, not estimated).
+struct QuantityProbe {
+    BudgetQuantity quantity;
+    double energyScale = 1.0;  // J: |E0| of the window's start (floored)
+    std::vector<double> a, b;
+    // The difference at the end of a warm-up, taken off every later one (Rebase).
+    bool based = false;
+    std::vector<double> baseDelta;
+    double baseEnergy = 0.0;
+
+    double Measure(const ModelProbe& coarse, const ModelProbe* fine) {
+        switch (quantity) {
+            case BudgetQuantity::Position: {
+                WorldPositions(coarse.World(), &a);
+                WorldPositions(fine->World(), &b);
+                double worst = 0.0;
+                const std::size_t n = std::min(a.size(), b.size());
+                for (std::size_t i = 0; i + 2 < n; i += 3) {
+                    double d[3];
+                    for (int c = 0; c < 3; ++c) d[c] = a[i + c] - b[i + c] - (based ? baseDelta[i + c] : 0.0);
+                    worst = std::max(worst, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+                }
+                return worst;
+            }
+            case BudgetQuantity::Energy:
+                return std::fabs(WorldEnergy(coarse.World()) - WorldEnergy(fine->World()) - baseEnergy) / energyScale;
+            case BudgetQuantity::Constraint:
+                return WorldConstraintError(coarse.World());
+        }
+        return kInf;
+    }
+
+    /// Takes the current difference as the zero of later ones.
+    void Rebase(const ModelProbe& coarse, const ModelProbe* fine) {
+        if (quantity == BudgetQuantity::Position) {
+            WorldPositions(coarse.World(), &a);
+            WorldPositions(fine->World(), &b);
+            baseDelta.assign(std::min(a.size(), b.size()), 0.0);
+            for (std::size_t i = 0; i < baseDelta.size(); ++i) baseDelta[i] = a[i] - b[i];
+        } else if (quantity == BudgetQuantity::Energy) {
+            baseEnergy = WorldEnergy(coarse.World()) - WorldEnergy(fine->World());
+        }
+        based = true;
+    }
+};
+
+/// The level at which a difference is rounding (float states): relative for energy, scaled by the largest
+/// coordinate (at least 1 m) for positions and joints.
+double ConvergenceNoise(BudgetQuantity quantity, const std::vector<double>& positions) {
+    double scale = 1.0;
+    if (quantity != BudgetQuantity::Energy) {
+        for (double x : positions) scale = std::max(scale, std::fabs(x));
+    }
+    return 32.0 * FLT_EPSILON * scale;
+}
+
+/// The refinement a window uses: Refine, or half the step (`byStep`: the convergence check along the step).
+ModelCandidate RefineFor(const ModelCandidate& c, const CandidateSpace& space, bool byStep) {
+    if (!byStep) return Refine(c, space);
+    ModelCandidate r = c;
+    r.step = c.step * 0.5;
+    return r;
+}
+
+/// One window: the candidate and (unless the quantity is observed directly) its refinement run from the same
+/// state for `window` seconds, sampled at up to 256 whole-step times (an oscillation must not hide between
+/// samples). `warmSteps` steps of the candidate first run unmeasured, and the difference at their end is taken off
+/// the later ones: probes built from a mid-run state of a world with volumes lack its contact history (no warm
+/// start), so they first settle.
+/// Over the whole run (`wholeRun`) a third probe at a quarter of the step runs beside them. An energy budget is then
+/// the difference at the end, where the budget bounds it, not the largest over the run: two runs that dissipate at
+/// an impact a step apart differ by the impact's whole loss between the two times, which says nothing about the
+/// energy either keeps. One difference at one time can be small by chance (an impact falling at the same place
+/// within both steps), so the finer pair's difference at the end, times 2^p (what it predicts for the coarser pair
+/// when the error has order p), is taken when it is larger. A position budget keeps the largest difference over
+/// the run; there the finer pair's largest is taken, times 2^p, only when it exceeds the pair's: the error has
+/// stopped shrinking with the step (a period error saturated at coarse steps). Where it is smaller the pair's
+/// stands, as a finer pair at float rounding (RK4 at fine steps) times 2^p would overstate it.
+/// A window with `missBound` > 0 stops at the first sample whose difference, with the Richardson factor, already
+/// exceeds it: the window's contribution can only be larger (its growth is at least 0), so the candidate misses,
+/// and what is left of the window would only say by how much. Its result is then that lower bound (`missedAt`).
+WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
+                       const ErrorBudget& budget, double window, const WindowOptions& o) {
+    const int warmSteps = o.warmSteps;
+    const double fixedGrowth = o.fixedGrowth, missBound = o.missBound;
+    const bool wholeRun = o.wholeRun;
+    ChoiceClock* clock = o.clock;
+    WindowResult r;
+    const double start = ThreadCpuSeconds();
+    if (clock) clock->StartPiece();
+    std::unique_ptr<ModelProbe> coarse = factory();
+    coarse->Apply(candidate);
+    std::unique_ptr<ModelProbe> fine, finest;
+    const bool observed = budget.quantity == BudgetQuantity::Constraint;
+    const ModelCandidate refined = RefineFor(candidate, space, o.byStep);
+    const ModelCandidate refinedTwice = RefineFor(refined, space, o.byStep);
+    if (!observed) {
+        fine = factory();
+        fine->Apply(refined);
+    }
+    const bool third = (wholeRun || o.third) && !observed;
+    const bool atEnd = wholeRun && budget.quantity == BudgetQuantity::Energy;
+    if (third) {
+        finest = factory();
+        finest->Apply(refinedTwice);
+    }
+    QuantityProbe q{budget.quantity, 1.0, {}, {}, false, {}, 0.0};
+    if (budget.quantity == BudgetQuantity::Energy) {
+        q.energyScale = std::max(std::fabs(WorldEnergy(coarse->World())), 1e-12);
+    }
+    QuantityProbe q2 = q;  // the refinement against the third probe
+    const long long warm = observed ? 0 : warmSteps;
+    const long long measured = std::max(2LL, std::llround(window / candidate.step));
+    const int samples = static_cast<int>(std::min<long long>(256, measured));
+    double half = 0.0, full = 0.0;  // running maximum at the measured part's middle and end
+    double finer = 0.0;             // the third probe's: the largest over the run of the finer pair's difference
+    double last = 0.0;              // the difference at the end
+    bool ok = true;
+    auto advance = [&](double t) {
+        if (!coarse->AdvanceTo(t)) {
+            r.stable = false;
+            return false;
+        }
+        if ((!observed && !fine->AdvanceTo(t)) || (finest && !finest->AdvanceTo(t))) {
+            r.observed = kInf;  // the refinement blew up but the candidate did not: no estimate can be trusted
+            return false;
+        }
+        return true;
+    };
+    if (warm > 0) {
+        ok = advance(candidate.step * static_cast<double>(warm));
+        if (ok) q.Rebase(*coarse, fine.get());
+    }
+    long long reached = warm;  // steps of the candidate run, the warm-up included
+    const double own = PredictedWork(candidate, space);
+    const double perSecond =
+        own + (observed ? 0.0 : PredictedWork(refined, space)) + (third ? PredictedWork(refinedTwice, space) : 0.0);
+    const double factor = observed ? 1.0 : RichardsonFactor(OrderOf(candidate, space));
+    for (int s = 1; ok && s <= samples; ++s) {
+        reached = warm + (measured * s) / samples;
+        ok = advance(candidate.step * static_cast<double>(reached));
+        if (!ok) break;
+        const double d = q.Measure(*coarse, fine.get());
+        if (!std::isfinite(d)) {
+            r.stable = false;
+            ok = false;
+            break;
+        }
+        full = std::max(full, d);
+        last = d;
+        if (third && !atEnd) finer = std::max(finer, q2.Measure(*fine, finest.get()));
+        if (2 * s <= samples) half = full;
+        if (missBound > 0.0 && !atEnd && s < samples && factor * full > missBound) {
+            r.missedAt = candidate.step * static_cast<double>(reached - warm);
+            break;
+        }
+        if (clock && s < samples && clock->Poll(start, candidate.step * static_cast<double>(reached) * perSecond)) {
+            r.stopped = true;
+            break;
+        }
+    }
+    r.probeCpuSeconds = ThreadCpuSeconds() - start;
+    r.simulated = candidate.step * static_cast<double>(reached);
+    r.share = static_cast<double>(reached) / static_cast<double>(warm + measured);
+    r.work = r.simulated * perSecond;
+    // The candidate's part of the window's CPU, by predicted work: the thread's CPU clock is a system call (about
+    // 0.25 us), and reading it around every sample's advance was half a microsecond problem's calibration (the
+    // projectile's: 69 us with it, 36 us without).
+    r.cpuSeconds = r.probeCpuSeconds * own / perSecond;
+    if (clock) clock->Add(r.probeCpuSeconds, r.work);
+    r.noise = ConvergenceNoise(budget.quantity, q.b);
+    if (!ok) return r;
+    const double length = candidate.step * static_cast<double>(measured);
+    if (r.missedAt >= 0.0 || r.stopped) {
+        // A lower bound: the difference so far, nothing extrapolated.
+        r.observed = full;
+        r.length = length;
+        r.factor = factor;
+        r.growth = 0.0;
+        return r;
+    }
+    // Growth in time, fitted from the measured part's halves, 0 (bounded: a symplectic integrator's energy error, a
+    // stack that settled) to 1 (a drift: a phase error, a velocity bias). Nothing is extrapolated faster than
+    // linearly: an instability starting is left to the live checks.
+    double growth = 1.0;
+    if (full > 0.0 && half > 0.0) growth = std::clamp(std::log2(full / half), 0.0, 1.0);
+    if (fixedGrowth >= 0.0) growth = fixedGrowth;
+    r.growth = growth;
+    r.observed = full;
+    r.length = length;
+    r.factor = factor;
+    if (third) {
+        if (atEnd) finer = std::fabs(WorldEnergy(fine->World()) - WorldEnergy(finest->World())) / q.energyScale;
+        if (!std::isfinite(finer)) {
+            r.observed = kInf;  // as a refinement that blew up: the candidate itself ran
+            return r;
+        }
+        const double predicted = std::pow(2.0, OrderOf(candidate, space)) * finer;
+        const double pair = atEnd ? last : full;
+        r.pair = pair;
+        r.finer = finer;
+        r.observed = pair;
+        // Energy: the larger. Position: the finer pair only when it differs more (the error is not shrinking).
+        if ((atEnd && predicted > pair) || (!atEnd && finer > full)) {
+            r.observed = predicted;
+            r.pairObserved = pair;
+        }
+        r.growth = 0.0;  // nothing is extrapolated: the window is the run
+    }
+    return r;
+}
+
+double WindowFor(const ChoiceSettings& s) {
+    return std::min(s.runSeconds, std::clamp(s.windowFraction * s.runSeconds, s.minWindow, s.maxWindow));
+}
+
+/// Candidates of the same family (integrator and solver) that differ only in step and passes.
+bool SameFamily(const ModelCandidate& a, const ModelCandidate& b) {
+    return a.integrator == b.integrator && a.solver == b.solver;
+}
+
+int Passes(const ModelCandidate& c) { return c.solver == ContactSolver::Soft ? c.softSubsteps : c.iterations; }
+
+}  // namespace model_choice
