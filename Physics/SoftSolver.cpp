@@ -401,6 +401,7 @@ void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
                         (old->n * o.normal.impulse + old->t1 * o.tangent1.impulse + old->t2 * o.tangent2.impulse) *
                         soft.warmStartFactor;
                     c.normal.impulse = std::fmax(Dot(P, pair.n), 0.0f);
+                    c.support = c.normal.impulse;
                     c.tangent1.impulse = Dot(P, pair.t1);
                     c.tangent2.impulse = Dot(P, pair.t2);
                     inheritedNormal += c.normal.impulse;
@@ -547,8 +548,9 @@ void SoftContactSolver::SolvePair(const Pair& pair, const Softness& softness, fl
     if (!useBias) {
         for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
             Contact& c = contacts[k];
-            // Friction: the TOTAL stays inside the Coulomb cone mu * jn (book §15, Coulomb clamp).
-            const float limit = pair.friction * c.normal.impulse;
+            // Friction: the TOTAL stays inside the Coulomb cone mu * jn (book §15, Coulomb clamp), jn from the
+            // last pass without bias (Contact::support; docs/ch15.md, "Convergence of the contact solvers").
+            const float limit = pair.friction * c.support;
             float speed1, speed2;
             RowSpeeds(x, t1, c.tangent1, t2, c.tangent2, &speed1, &speed2);
             float j1 = c.tangent1.impulse - c.tangent1.mass * speed1;
@@ -587,6 +589,7 @@ void SoftContactSolver::SolvePair(const Pair& pair, const Softness& softness, fl
         const float dn = jn - c.normal.impulse;
         c.normal.impulse = jn;
         c.maxNormalImpulse = std::max(c.maxNormalImpulse, jn);
+        if (!useBias) c.support = jn;
         ApplyRow(x, invA, invB, n, c.normal, dn);
     }
     StoreVelocities(x, A, B);

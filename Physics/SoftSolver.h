@@ -79,6 +79,7 @@ public:
         float relativeVelocity = 0.0f;  // normal speed before solving, m/s (restitution)
         float maxNormalImpulse = 0.0f;  // largest total normal impulse of the step, N s
         float baseSeparation = 0.0f;    // separation - n . (rB - rA): the separation with the step's offsets removed
+        float support = 0.0f;           // normal impulse of the last pass without bias (the friction cone's bound), N s
         vec3 rA;                        // anchors from the body centres at the start of the step, world, m
         float separation = 0.0f;        // from the manifold, m (< 0 penetrating)
         vec3 rB;
@@ -140,7 +141,7 @@ public:
     struct WidePoint {
         Vec4x3 rA, rB;
         WideRow normal, tangent1, tangent2;
-        Float4 baseSeparation, current, relativeVelocity, maxNormalImpulse;
+        Float4 baseSeparation, current, relativeVelocity, maxNormalImpulse, support;
     };
     /// Up to four pairs of one colour (no moving body twice), solved together: lane l is pairs[pair[l]], or
     /// empty (pair -1: no bodies, zero masses).

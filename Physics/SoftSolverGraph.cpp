@@ -310,6 +310,7 @@ void SoftContactSolver::BuildBatches(const std::vector<int>& list, std::size_t b
                     SetLane(&p.rA, lane, c.rA);
                     SetLane(&p.rB, lane, c.rB);
                     p.normal.impulse[lane] = c.normal.impulse;  // the warm start Collide matched
+                    p.support[lane] = c.support;
                     p.tangent1.impulse[lane] = c.tangent1.impulse;
                     p.tangent2.impulse[lane] = c.tangent2.impulse;
                     p.baseSeparation[lane] = c.separation;  // minus n . (rB - rA) below
@@ -396,7 +397,7 @@ void SoftContactSolver::WideSolve(const Block& block, float invH, float maxPusho
             // Friction in the relax pass only, and before the normal rows, as in SolvePair.
             for (int k = 0; k < batch.pointCount; ++k) {
                 WidePoint& p = batch.points[k];
-                const Float4 limit = batch.friction * p.normal.impulse;
+                const Float4 limit = batch.friction * p.support;
                 Float4 j1 = p.tangent1.impulse - p.tangent1.mass * RowSpeed(s, batch.t1, p.tangent1);
                 Float4 j2 = p.tangent2.impulse - p.tangent2.mass * RowSpeed(s, batch.t2, p.tangent2);
                 const Float4 sq = j1 * j1 + j2 * j2;
@@ -435,6 +436,7 @@ void SoftContactSolver::WideSolve(const Block& block, float invH, float maxPusho
             const Float4 jn = Max(J - p.normal.mass * massScale * (vn + bias) - impulseScale * J, zero);
             p.normal.impulse = jn;
             p.maxNormalImpulse = Max(p.maxNormalImpulse, jn);
+            if (!useBias) p.support = jn;
             ApplyRow(s, batch.invMassA, batch.invMassB, batch.n, p.normal, jn - J);
         }
         Scatter(state, batch, s);
