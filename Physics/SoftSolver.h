@@ -175,6 +175,14 @@ public:
     /// by one after a block's batches (a moving body already in every colour, or the one pair of a colour's last
     /// batch; without colouring, every pair, in one block).
     const std::vector<Pair>& Pairs() const { return pairs; }
+    /// The last Step's contact points, pair by pair (Pair::first, Pair::count).
+    const std::vector<Contact>& Contacts() const { return contacts; }
+    /// Where body i (an index into the last Step's volumes) was at the start of the last Step, m: contact anchors
+    /// (Contact::rA, rB) are from there.
+    vec3 StartPosition(int i) const {
+        const std::size_t k = static_cast<std::size_t>(i);
+        return sim[k].p - state[k].dp;
+    }
     const std::vector<Block>& Blocks() const { return blocks; }
     const std::vector<int>& BlockBodies() const { return blockBodies; }
     const std::vector<WideBatch>& Batches() const { return batches; }
