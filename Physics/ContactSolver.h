@@ -65,6 +65,11 @@ struct SoftSolverSettings {
     float restitutionThreshold = 1.0f;
     /// Fraction (0..1) of last step's matched impulse applied as the warm start.
     float warmStartFactor = 1.0f;
+    /// Shock propagation (docs/ch15.md, "Mass ratios") in every solver block whose moving bodies' masses differ by
+    /// at least this factor (largest / smallest); 0 turns it off. Gauss-Seidel passes converge at a rate of
+    /// heavy / (heavy + light) per pass through a light body under a heavy one, so below this ratio the passes
+    /// hold the load and the shock pass is not run (nor paid for).
+    float shockMassRatio = 10.0f;
 };
 
 /// Settings of the Accumulated solver (WorldSettings::accumulated). Iterations and slop are WorldSettings'

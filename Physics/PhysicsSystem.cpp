@@ -18,6 +18,7 @@ void PhysicsSystem::Update(float deltaTime) {
     ctx.dt = deltaTime;
     ctx.invDt = 1.0f / deltaTime;
     ctx.step = stepCount;
+    softCollisionsPending = false;  // set again by a soft step
 
     // Book order (docs/book-reference.md §3.4): collisions, forces, impulses, integrate, linear projection,
     // constraints. Spring forces are evaluated inside particle integration (erratum 5.2-20: a force over the step, not
@@ -154,6 +155,7 @@ void PhysicsSystem::ClearRigidbodys() {
     joints.clear();
     others.clear();
     resultCount = 0;
+    softCollisionsPending = false;
     softSolver.Clear();
     stopReason.clear();  // a new world may run again
     RebuildParticleList();

@@ -80,9 +80,19 @@ public:
     const std::vector<OBB>& Constraints() const { return constraints; }
     const std::vector<Spring>& Springs() const { return springs; }
     const std::vector<Cloth*>& Cloths() const { return cloths; }
-    /// Colliding pairs found at the start of the last step (debug drawing of manifolds).
-    const std::vector<CollisionPair>& Collisions() const { return results; }
-    std::size_t CollisionCount() const { return resultCount; }
+    /// Colliding pairs found at the start of the last step (debug drawing of manifolds), [0, CollisionCount()).
+    /// Every solver fills them. ContactSolver::Soft: the soft step's pairs with a touching point (separation
+    /// <= 0; speculative points are left out), the points where the step found them, the pair's normal, and the
+    /// deepest of those points' penetrations as depth; built from the solver's own contacts on the first call
+    /// after a step (the step itself pays nothing; FillSoftCollisions).
+    const std::vector<CollisionPair>& Collisions() const {
+        if (softCollisionsPending) FillSoftCollisions();
+        return results;
+    }
+    std::size_t CollisionCount() const {
+        if (softCollisionsPending) FillSoftCollisions();
+        return resultCount;
+    }
     /// The Accumulated solver's kept contacts and impulses (empty while settings.contactSolver is Book).
     const AccumulatedContactSolver& AccumulatedSolver() const { return accumulatedSolver; }
     /// Islands and sleep of the volumes (settings.sleep; untouched while it is off).
@@ -133,6 +143,9 @@ private:
     /// ContactSolver::Soft: the whole volume step (pair search with AABBs grown by the speculative margin, then
     /// SoftContactSolver::Step in settings.soft.substeps substeps). Fills ctx's substep fields.
     void StepSoftVolumes(StepContext& ctx);
+    /// Writes the soft step's touching contacts into results[0..resultCount) (Collisions()); const because the
+    /// readers are: it only turns the solver's kept contacts into the book's form.
+    void FillSoftCollisions() const;
 
     // ---- ch16: PhysicsSystemSoft.cpp
     /// Adds the force of every spring (system and cloth) to its particles' `forces`.
@@ -154,8 +167,10 @@ private:
     std::vector<IntegratorScratch> integratorScratch;     // ch14: one per allParticles entry, grown only
     std::vector<ParticleConstraint> preparedConstraints;  // ch14: constraints with AABBs, rebuilt per step
 
-    std::vector<CollisionPair> results;  // capacity reused; only [0, resultCount) is valid
-    std::size_t resultCount = 0;
+    // Capacity reused; only [0, resultCount) is valid. Mutable: after a soft step Collisions() fills them.
+    mutable std::vector<CollisionPair> results;
+    mutable std::size_t resultCount = 0;
+    mutable bool softCollisionsPending = false;       // the last step was a soft one and results are not yet filled
     Broadphase broadphase;                            // used only from settings.broadphaseMinVolumes volumes up
     std::vector<std::pair<int, int>> candidatePairs;  // broadphase output, capacity reused
     struct GrownBounds {

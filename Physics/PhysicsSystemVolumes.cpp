@@ -91,7 +91,7 @@ void PhysicsSystem::StepSoftVolumes(StepContext& ctx) {
     ctx.substep = 0;
     ctx.substepSerial = volumeSubstepSerial;
     lastVolumeSubsteps = n;
-    resultCount = 0;  // Collisions() holds the book's manifolds, which this path does not compute
+    resultCount = 0;  // Collisions() turns the soft step's contacts into the book's form when asked
 
     // Islands and sleep (Islands.h): null while settings.sleep is off. Sleeping bodies are held like static ones;
     // a pair is searched only when one body is active, and a sleeping island whose grown AABB meets an active
@@ -145,6 +145,39 @@ void PhysicsSystem::StepSoftVolumes(StepContext& ctx) {
         islands.EndUpdate(volumes, settings.sleep);
     }
     volumeSubstepSerial += n;
+    softCollisionsPending = true;
+}
+
+void PhysicsSystem::FillSoftCollisions() const {
+    softCollisionsPending = false;
+    resultCount = 0;
+    const std::vector<SoftContactSolver::Pair>& pairs = softSolver.Pairs();
+    const std::vector<SoftContactSolver::Contact>& contacts = softSolver.Contacts();
+    for (const SoftContactSolver::Pair& pair : pairs) {
+        const std::size_t a = static_cast<std::size_t>(pair.a), b = static_cast<std::size_t>(pair.b);
+        if (b >= volumes.size() || volumes[a] != pair.bodyA || volumes[b] != pair.bodyB) continue;
+        if (resultCount == results.size()) results.emplace_back();
+        CollisionPair& slot = results[resultCount];
+        CollisionManifold& m = slot.manifold;
+        ResetCollisionManifold(&m);
+        m.normal = pair.n;
+        m.depth = 0.0f;
+        // The anchors are from body a's centre at the start of the step, as the manifold found them.
+        const vec3 start = softSolver.StartPosition(pair.a);
+        for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
+            const SoftContactSolver::Contact& c = contacts[k];
+            if (c.separation > 0.0f) continue;
+            m.contacts.push_back(start + c.rA);
+            m.depth = std::max(m.depth, -c.separation);
+        }
+        if (m.contacts.empty()) continue;
+        m.colliding = true;
+        slot.a = volumes[a];
+        slot.b = volumes[b];
+        slot.indexA = pair.a;
+        slot.indexB = pair.b;
+        ++resultCount;
+    }
 }
 
 void PhysicsSystem::ApplyVolumeForces(const StepContext& ctx, const Islands* sleep) {

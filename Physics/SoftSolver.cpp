@@ -258,6 +258,7 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
     // With colouring the batches prepare their own rows, four wide; Prepare does the pairs solved one by one.
     BuildBlocks(ctx.settings.softGraphColouring, softness, staticSoftness);
     Prepare(volumes, ctx);
+    BuildShock(ctx);
     // Every substep of a block before the next block: islands share no moving body, so this is the order of one
     // pass over all of them, with the block's rows still in cache (kBlockPairs).
     for (const Block& block : blocks) {
@@ -267,6 +268,9 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
             WarmStart(block);
             for (int k = 0; k < soft.iterations; ++k)
                 Solve(block, ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, true);
+            if (!shockPoints.empty())
+                ShockPass(static_cast<std::size_t>(&block - blocks.data()), ctx.invH, staticSoftness.biasRate,
+                          soft.maxPushoutSpeed, soft.linearSlop);
             IntegratePositions(ctx, block);
             // The first relax pass brings each pair's separations up to date as it reaches the pair (the same
             // values UpdateSeparations gives: poses do not change during a pass); without one, UpdateSeparations
@@ -274,6 +278,9 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
             if (soft.relaxIterations == 0) UpdateSeparations(block);
             for (int k = 0; k < soft.relaxIterations; ++k)
                 Solve(block, ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, false, k == 0);
+            // Again after the relax pass, without push-out: the velocities the next substep starts from.
+            if (!shockPoints.empty())
+                ShockPass(static_cast<std::size_t>(&block - blocks.data()), ctx.invH, 0.0f, 0.0f, soft.linearSlop);
         }
     }
     StoreBatchImpulses();  // the batches' impulses back to the contacts (none without colouring)

@@ -176,10 +176,39 @@ public:
     /// by one after a block's batches (a moving body already in every colour, or the one pair of a colour's last
     /// batch; without colouring, every pair, in one block).
     const std::vector<Pair>& Pairs() const { return pairs; }
+    /// The last Step's contact points, pair by pair (Pair::first, Pair::count).
+    const std::vector<Contact>& Contacts() const { return contacts; }
+    /// Where body i (an index into the last Step's volumes) was at the start of the last Step, m: contact anchors
+    /// (Contact::rA, rB) are from there.
+    vec3 StartPosition(int i) const {
+        const std::size_t k = static_cast<std::size_t>(i);
+        return sim[k].p - state[k].dp;
+    }
     const std::vector<Block>& Blocks() const { return blocks; }
     const std::vector<int>& BlockBodies() const { return blockBodies; }
     const std::vector<WideBatch>& Batches() const { return batches; }
     const std::vector<int>& OverflowPairs() const { return overflow; }
+
+    /// One contact point of the shock pass (SoftSolverShock.cpp): the pair's body nearer the static ones in the
+    /// contact graph (`lower`, fewer pairs away) is held still and only `upper` is moved. n points from lower to
+    /// upper; anchors from the bodies' centres at the start of the step.
+    struct ShockPoint {
+        vec3 n, rU, rL;
+        vec3 rUxN, iUrUxN;                    // rU x n and its image under upper's world inverse inertia
+        float mass = 0.0f;                    // 1 / (upper's inverse mass + rUxN . iUrUxN), kg
+        float base = 0.0f;                    // separation at the step's start minus n . (rU - rL), m
+        vec3 t1, t2;                          // the pair's tangents
+        vec3 rUxT1, iUrUxT1, rUxT2, iUrUxT2;  // rU x t and their images under upper's world inverse inertia
+        float massT1 = 0.0f, massT2 = 0.0f;   // upper's effective masses along t1, t2, kg
+        float friction = 0.0f;                // the pair's mu
+        vec3 rLxN, rLxT1, rLxT2;              // rL x n, rL x t1, rL x t2 (lower's rows)
+        std::size_t sequence = 0;             // order of creation (pair order): the sort's last key
+        int upper = -1, lower = -1;
+        int layer = 0;  // lower's distance from a static body, in pairs
+        std::size_t block = 0;
+    };
+    /// The last Step's shock points, by block, then by layer (bottom up), then in pair order.
+    const std::vector<ShockPoint>& ShockPoints() const { return shockPoints; }
 
 private:
     // Blocks and graph colouring (SoftSolverGraph.cpp): blocks and their batches built once per step before
@@ -217,6 +246,13 @@ private:
     void Solve(const Block& block, float invH, const Softness& softness, const Softness& staticSoftness,
                float maxPushout, float slop, bool useBias, bool updateSeparations = false);
     void ApplyRestitution(float threshold);
+    // Shock propagation (SoftSolverShock.cpp): built once per step after BuildBlocks for the blocks whose mass
+    // ratio reaches soft.shockMassRatio; run after each substep's biased passes.
+    void BuildShock(const StepContext& ctx);
+    /// Bottom up, each point's upper body is given the normal speed the biased pass asks of the contact against a
+    /// lower body held still: approach no faster than the gap closes, push out of penetration at the static
+    /// softness' bias rate.
+    void ShockPass(std::size_t block, float invH, float biasRate, float maxPushout, float slop);
     void StoreBodies(const std::vector<RigidbodyVolume*>& volumes);
 
     std::vector<BodyState> state;
@@ -233,6 +269,10 @@ private:
     std::vector<int> overflow;               // pair indices solved one by one after a block's batches
     std::vector<std::uint32_t> bodyColours;  // per body: the colours it has this step (bit c)
     std::vector<int> colourPairs[kColours];  // pair indices of each colour, in pair order
+    std::vector<ShockPoint> shockPoints;
+    std::vector<std::size_t> shockBlockStart;  // per block: its first shock point (one more entry at the end)
+    std::vector<int> bodyLayer, bodyBlock, layerQueue, adjacencyStart, adjacency;  // BuildShock's scratch
+    std::vector<unsigned char> blockShocks;
     std::size_t warmStarted = 0;
     float inheritedNormal = 0.0f;
     long long lastStep = -2;

@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
         msAwake.push_back(Time(awake, 20));
     }
     const double a = Median(msAsleep), b = Median(msAwake);
-    // The soft step keeps its pairs in its own solver (Collisions() holds the book's manifolds only).
+    // The soft step's own pairs, speculative ones included (Collisions() lists only the touching ones).
     auto pairs = [](const PhysicsSystem& system) {
         return system.settings.contactSolver == ContactSolver::Soft ? system.SoftSolver().PairCount()
                                                                     : system.CollisionCount();

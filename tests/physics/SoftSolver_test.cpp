@@ -187,7 +187,7 @@ TEST(SoftSolver, Deterministic) {
 }
 
 // Switching a world between solvers: after book steps the soft step starts cold (nothing inherited from a step
-// that was not the one before) and the book's collision list is emptied.
+// that was not the one before) and the book's collision list is replaced by the soft step's touching pair.
 TEST(SoftSolver, StartsColdAfterAnotherSolver) {
     RigidWorld world(WithGround(Ground(), {Cube(vec3(0.0f, 0.5f, 0.0f))}));
     world.system.settings.contactSolver = ContactSolver::Soft;
@@ -198,7 +198,8 @@ TEST(SoftSolver, StartsColdAfterAnotherSolver) {
     world.system.settings.contactSolver = ContactSolver::Soft;
     world.system.Update(kDt);
     EXPECT_EQ(world.system.SoftSolver().WarmStartedCount(), 0u);
-    EXPECT_EQ(world.system.CollisionCount(), 0u);
+    ASSERT_EQ(world.system.CollisionCount(), 1u);
+    EXPECT_EQ(world.system.Collisions()[0].manifold.depth, world.system.SoftSolver().DeepestPenetration());
     EXPECT_EQ(world.system.LastVolumeSubsteps(), world.system.settings.soft.substeps);
 }
 
