@@ -127,7 +127,7 @@ struct ChoiceSettings {
     int maxEventChecks = 6;
     /// A world without volumes or with one whose candidate, run beside its refinement and a third probe at a quarter
     /// of its step over the whole run, costs at most this many PredictedWork units is estimated over the whole run
-    /// instead of windows: the largest difference over the run, measured rather than extrapolated (a bounce's or a
+    /// instead of windows: the difference at the run's end, measured rather than extrapolated (a bounce's or a
     /// period's error, which a window cannot see). About 0.13 s of CPU for a particle world; 0: never.
     double wholeRunWork = 5e6;
     /// A calibration window (not a whole run) stops at the first sample whose difference alone already misses the

@@ -105,15 +105,13 @@ ModelCandidate RefineFor(const ModelCandidate& c, const CandidateSpace& space, b
 /// samples). `warmSteps` steps of the candidate first run unmeasured, and the difference at their end is taken off
 /// the later ones: probes built from a mid-run state of a world with volumes lack its contact history (no warm
 /// start), so they first settle.
-/// Over the whole run (`wholeRun`) a third probe at a quarter of the step runs beside them. An energy budget is then
-/// the difference at the end, where the budget bounds it, not the largest over the run: two runs that dissipate at
-/// an impact a step apart differ by the impact's whole loss between the two times, which says nothing about the
-/// energy either keeps. One difference at one time can be small by chance (an impact falling at the same place
-/// within both steps), so the finer pair's difference at the end, times 2^p (what it predicts for the coarser pair
-/// when the error has order p), is taken when it is larger. A position budget keeps the largest difference over
-/// the run; there the finer pair's largest is taken, times 2^p, only when it exceeds the pair's: the error has
-/// stopped shrinking with the step (a period error saturated at coarse steps). Where it is smaller the pair's
-/// stands, as a finer pair at float rounding (RK4 at fine steps) times 2^p would overstate it.
+/// Over the whole run (`wholeRun`) a third probe at a quarter of the step runs beside them. An energy or position
+/// budget is then the difference at the end, where the budget bounds it and where a user reads the run's last row,
+/// not the largest over the run: two runs whose impacts fall a step apart differ by a whole bounce mid-run, which
+/// says nothing about where either ends. One difference at one time can be small by chance (an impact falling at
+/// the same place within both steps), so the finer pair's difference at the end, times 2^p (what it predicts for the
+/// coarser pair when the error has order p), is taken when it is larger, and the convergence check (CheckOrder)
+/// compares the two pairs.
 /// A window with `missBound` > 0 stops at the first sample whose difference, with the Richardson factor, already
 /// exceeds it: the window's contribution can only be larger (its growth is at least 0), so the candidate misses,
 /// and what is left of the window would only say by how much. Its result is then that lower bound (`missedAt`).
@@ -137,7 +135,8 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
         fine->Apply(refined);
     }
     const bool third = (wholeRun || o.third) && !observed;
-    const bool atEnd = wholeRun && budget.quantity == BudgetQuantity::Energy;
+    // A whole run is judged where the budget bounds it, at the end (energy and position; constraint error is observed).
+    const bool atEnd = wholeRun && budget.quantity != BudgetQuantity::Constraint;
     if (third) {
         finest = factory();
         finest->Apply(refinedTwice);
@@ -228,7 +227,7 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     r.length = length;
     r.factor = factor;
     if (third) {
-        if (atEnd) finer = std::fabs(WorldEnergy(fine->World()) - WorldEnergy(finest->World())) / q.energyScale;
+        if (atEnd) finer = q2.Measure(*fine, finest.get());
         if (!std::isfinite(finer)) {
             r.observed = kInf;  // as a refinement that blew up: the candidate itself ran
             return r;
@@ -238,7 +237,7 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
         r.pair = pair;
         r.finer = finer;
         r.observed = pair;
-        // Energy: the larger. Position: the finer pair only when it differs more (the error is not shrinking).
+        // At the end: the larger. Over a window: the finer pair only when it differs more (the error is not shrinking).
         if ((atEnd && predicted > pair) || (!atEnd && finer > full)) {
             r.observed = predicted;
             r.pairObserved = pair;

@@ -305,7 +305,9 @@ TEST(AutoModel, PilotFindsTheImpactOfAParticleWorld) {
 // refinement's and a third probe's at a quarter of the step, costs at most ChoiceSettings::wholeRunWork; the costlier
 // ones keep their windows. A bouncing particle over 100 s at a tight budget has candidates of both kinds.
 TEST(AutoModel, CheapCandidatesAreMeasuredOverTheWholeRun) {
-    const Chosen run(DroppedParticle(), 100.0, Budget(1e-6));  // met or refused; 1 um: with the skin contact (auto's) coarse candidates meet 1 mm whole
+    // Refused: 1e-12 m is below any candidate, so the search goes on into the costly ones (at the end of the run,
+    // where whole runs are judged, the skin contact leaves cheap candidates at rest within a micrometre).
+    const Chosen run(DroppedParticle(), 100.0, Budget(1e-12));
     const double limit = ChoiceSettings().wholeRunWork;
     int whole = 0, windowed = 0;
     for (const CandidateEstimate& e : run.autoModel.Choice().candidates) {
@@ -378,13 +380,13 @@ TEST(AutoModel, AWindowEstimateIsNotTrustedBelowItsFamilysWholeRun) {
     EXPECT_NE(fine->note.find("raised from"), std::string::npos) << fine->note;
 }
 
-// A whole run's largest difference is checked by a third probe at a quarter of the step, whose difference from the
-// refinement, when it is the larger, says the error has stopped shrinking with the step. The 120° pendulum with
-// the validation's budget for a period error of 0.1 (1.73 m, docs/model-choice-validation.md): every integrator's
-// period error saturates near 0.25 at steps of 0.02 s and more (the sweep: semi-implicit Euler 0.244 at 0.1 s, 0.253
-// at 0.05 s), so the candidate at 0.1 s and its refinement agree while both are far off. Without the third probe
-// semi-implicit Euler at 0.1 s was chosen (estimated 0.78 m) and ended 2.4 times over the period budget. The finer
-// pair differs more than the pair, so the error does not shrink at the candidate's order: it is unreliable, never
+// A whole run's difference (at its end) is checked by a third probe at a quarter of the step, whose difference from
+// the refinement, when it is not smaller by the order's factor, says the error has stopped shrinking with the step. The
+// 120° pendulum with the validation's budget for a period error of 0.1 (1.73 m, docs/model-choice-validation.md): every
+// integrator's period error saturates near 0.25 at steps of 0.02 s and more (the sweep: semi-implicit Euler 0.244 at
+// 0.1 s, 0.253 at 0.05 s), so the candidate at 0.1 s and its refinement agree while both are far off. Without the third
+// probe semi-implicit Euler at 0.1 s was chosen (estimated 0.78 m) and ended 2.4 times over the period budget. The
+// finer pair differs more than the pair, so the error does not shrink at the candidate's order: it is unreliable, never
 // chosen, and its note (--explain-model) says so with the two differences.
 TEST(AutoModel, AWholeRunDifferenceIsCheckedByAFinerPair) {
     const Chosen run = ReferenceChoice("pendulum-large", 1.732);
@@ -393,7 +395,6 @@ TEST(AutoModel, AWholeRunDifferenceIsCheckedByAFinerPair) {
     for (const CandidateEstimate& e : run.autoModel.Choice().candidates) {
         if (!e.evaluated || e.model.step < 0.1 - 1e-12) continue;
         EXPECT_TRUE(e.wholeRun) << e.model.Describe(true, false);
-        EXPECT_GT(e.estimate, 1.732 / 2.0) << e.model.Describe(true, false) << " misses the budget";
         EXPECT_FALSE(e.meets) << e.model.Describe(true, false);
         EXPECT_TRUE(e.unreliable) << e.model.Describe(true, false);
         EXPECT_NE(e.note.find("does not shrink"), std::string::npos) << "--explain-model says why: " << e.note;
