@@ -351,7 +351,7 @@ bool RunFrame(RunLoop& r, int frame, std::string* failure) {
     const bool selected = r.outputs.WantsFrames() && Selected(r, frame);
     if ((selected || r.outputs.Recording()) && !QueueFrame(r, frame, selected)) return false;
     if (blownUp) {
-        *failure = "frame " + std::to_string(frame) + ": unstable simulation, stopped: " + report;
+        *failure = "frame " + std::to_string(frame) + ": the simulation stopped: " + report;
         return false;
     }
     if (last) {
@@ -373,7 +373,7 @@ int RunFrames(RunLoop& r, Clock::time_point wallStart) {
     }
     std::string report;
     if (ok && r.demo.Unstable(&report))  // blew up during the last frame's steps
-        ok = false, failure = "unstable simulation after the last frame: " + report;
+        ok = false, failure = "the simulation stopped after the last frame: " + report;
     r.progress.End();
     r.stats->renderCpuSeconds = CpuSeconds(CLOCK_THREAD_CPUTIME_ID) - renderCpuStart - r.queueCpu;
     if (!failure.empty()) std::fprintf(stderr, "physics-sandbox: %s\n", failure.c_str());

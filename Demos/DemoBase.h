@@ -63,8 +63,9 @@ public:
     virtual void ScriptFrame(int /*frame*/) {}
     /// False if any collected body state is non-finite; *where then names the body and the value.
     bool StateIsFinite(std::string* where) const;
-    /// True once the demo's stability monitor has reported a blow-up (the world is then frozen); *report is
-    /// the monitor's one-line message. Demos without a monitor are never unstable.
+    /// True once the demo's world has stopped: its stability monitor reported a blow-up, or the world refused to go
+    /// on (PhysicsSystem::StopReason: a pair search over its limit); *report is the one-line reason. The world is then
+    /// frozen. Demos without a monitor are never stopped.
     virtual bool Unstable(std::string* /*report*/) const { return false; }
     /// The simulated world, for --export-scene (docs/scenes.md, "Export"); nullptr for a demo whose motion is
     /// scripted rather than simulated.
