@@ -65,6 +65,26 @@ RigidbodyVolume MakeSphere(const vec3& position, float radius, float mass) {
 
 RigidbodyVolume MakeGround(const vec3& halfExtents, float topY) { return MakeBody(GroundSpec(halfExtents, topY)); }
 
+BodySpec UndampedSpec(BodySpec spec) {
+    spec.velocityRetention = 1.0f;
+    spec.velocityEpsilon = 0.0f;
+    return spec;
+}
+
+TiltedSlab MakeTiltedSlab(double theta, double mu) {
+    TiltedSlab t;
+    t.spec = UndampedSpec(BoxSpec(vec3(), vec3(6.0f, 0.5f, 2.0f), 0.0f));
+    t.spec.friction = float(mu);
+    t.spec.restitution = 0.0f;
+    t.spec.eulerRadians = vec3(0.0f, 0.0f, float(theta));
+    const RigidbodyVolume tilted = MakeBody(t.spec);
+    const float* axes = tilted.box.orientation.asArray;  // rows: local X, Y, Z in world space
+    t.normal = vec3(axes[3], axes[4], axes[5]);
+    t.downhill = vec3(axes[0], axes[1], axes[2]);
+    if (t.downhill.y > 0.0f) t.downhill = t.downhill * -1.0f;
+    return t;
+}
+
 namespace {
 
 /// `cube` moved to `position`, upright.

@@ -36,6 +36,19 @@ BodySpec SphereSpec(const vec3& position, float radius = 1.0f, float mass = 1.0f
 /// A static box with half extents `halfExtents` whose top face is the plane y = topY, centred on x = z = 0.
 BodySpec GroundSpec(const vec3& halfExtents, float topY = 0.0f);
 
+/// `spec` with no damping: velocity retention 1 and no velocity threshold (problems with exact answers).
+BodySpec UndampedSpec(BodySpec spec);
+
+/// A static, undamped slab (12 x 1 x 4 m, centred on the origin) tilted by `theta` (rad) about z, with friction `mu`
+/// and restitution 0; its top face's normal and down-slope direction in world space (unit). The incline of the sweep
+/// and of the contact problems.
+struct TiltedSlab {
+    BodySpec spec;
+    vec3 normal;    ///< the top face's outward normal (its centre is at normal * 0.5 m)
+    vec3 downhill;  ///< along the face, pointing down the slope
+};
+TiltedSlab MakeTiltedSlab(double theta, double mu);
+
 /// A body built from `spec`, collision volumes synced. The spec is not validated (PhysicsSystem::AddRigidbody
 /// refuses a degenerate body with a message).
 RigidbodyVolume MakeBody(const BodySpec& spec);

@@ -23,11 +23,7 @@ constexpr double kG = 9.82;
 long long StepsFor(double seconds, double dt) { return std::llround(seconds / dt); }
 
 /// A body spec with the sweep's damping 1 and velocityEpsilon 0 (see the top of this file).
-BodySpec Undamped(BodySpec spec) {
-    spec.velocityRetention = 1.0f;
-    spec.velocityEpsilon = 0.0f;
-    return spec;
-}
+BodySpec Undamped(BodySpec spec) { return UndampedSpec(spec); }
 
 /// Static ground slab 40 x 1 x 40 m, top face at y = 0.
 BodySpec Ground() { return Undamped(GroundSpec(vec3(20.0f, 0.5f, 20.0f))); }
@@ -160,15 +156,9 @@ Outcome RunRotation(const Settings& s, bool energy) {
 // restitution 0. Acceleration from the down-slope speed at 0.5 s and 1.5 s against g (sin - mu cos).
 Outcome RunIncline(const Settings& s) {
     const double theta = 30.0 * M_PI / 180.0, mu = 0.3;
-    BodySpec slab = Undamped(BoxSpec(vec3(), vec3(6.0f, 0.5f, 2.0f), 0.0f));
-    slab.friction = float(mu);
-    slab.restitution = 0.0f;
-    slab.eulerRadians = vec3(0.0f, 0.0f, float(theta));
-    const RigidbodyVolume tilted = MakeBody(slab);
-    const float* axes = tilted.box.orientation.asArray;  // rows: local X, Y, Z in world space
-    const vec3 normal(axes[3], axes[4], axes[5]);
-    vec3 downhill(axes[0], axes[1], axes[2]);
-    if (downhill.y > 0.0f) downhill = downhill * -1.0f;
+    const TiltedSlab incline = MakeTiltedSlab(theta, mu);
+    const BodySpec& slab = incline.spec;
+    const vec3 normal = incline.normal, downhill = incline.downhill;
     // Start resting on the face, 2 mm into it (inside PenetrationSlack) so the contact exists from step 1.
     BodySpec cube = Undamped(BoxSpec(normal * (0.5f + 0.25f - 0.002f), vec3(0.25f, 0.25f, 0.25f), 1.0f));
     cube.friction = float(mu);

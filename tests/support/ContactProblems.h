@@ -66,11 +66,7 @@ struct Setting {
 };
 
 /// An undamped spec (the exact answers have no damping).
-inline BodySpec Undamped(BodySpec spec) {
-    spec.velocityRetention = 1.0f;
-    spec.velocityEpsilon = 0.0f;
-    return spec;
-}
+inline BodySpec Undamped(BodySpec spec) { return UndampedSpec(spec); }
 
 /// A rigid world at one setting, stepped for `seconds`.
 struct World : RigidWorld {
@@ -112,15 +108,9 @@ inline double BoxSlideStop(const Setting& s) {
 /// 0.5 s later it should be a t^2 / 2 down the slope from there (a = 0: it stays).
 inline double Incline(const Setting& s, bool sphere, double thetaDeg, double mu, double a) {
     const double theta = thetaDeg * kPi / 180.0, T = 0.5, r = 0.25;
-    BodySpec slab = Undamped(BoxSpec(vec3(), vec3(6.0f, 0.5f, 2.0f), 0.0f));
-    slab.friction = float(mu);
-    slab.restitution = 0.0f;
-    slab.eulerRadians = vec3(0.0f, 0.0f, float(theta));
-    const RigidbodyVolume tilted = MakeBody(slab);
-    const float* axes = tilted.box.orientation.asArray;  // rows: local X, Y, Z in world space
-    const vec3 normal(axes[3], axes[4], axes[5]);
-    vec3 downhill(axes[0], axes[1], axes[2]);
-    if (downhill.y > 0.0f) downhill = downhill * -1.0f;
+    const TiltedSlab incline = MakeTiltedSlab(theta, mu);
+    const BodySpec& slab = incline.spec;
+    const vec3 normal = incline.normal, downhill = incline.downhill;
     const vec3 start = normal * float(0.5 + r);
     BodySpec body = Undamped(sphere ? SphereSpec(start, float(r), 1.0f) : BoxSpec(start, vec3(0.25f, 0.25f, 0.25f)));
     body.friction = float(mu);
