@@ -234,11 +234,25 @@ void AccumulatedContactSolver::Solve(const std::vector<RigidbodyVolume*>& volume
                 c.jn = jn;
                 if (dn != 0.0f) ApplyPairImpulse(A, B, invA, invB, iA, iB, c.rA, c.rB, arb.n * dn);
 
-                // Friction: stop the tangential motion; the TOTAL stays inside the Coulomb cone mu * jn.
+                // Friction: stop the tangential motion (two rows, along t1 and t2, each with its own effective mass);
+                // the TOTAL stays inside the Coulomb cone mu * jn. A contact that slides (the two rows would leave the
+                // cone) is solved as one row along its slip instead, so its impulse opposes the slip: the two rows'
+                // masses differ wherever the contact is off the body's axes, and their clamped sum pushed a sliding
+                // box sideways, so a box sliding at a yaw curved and slid too far, by the same amount at every step
+                // (docs/ch15.md, "Convergence of the contact solvers"). Sticking contacts are solved as before.
                 const vec3 vr = RelativeVelocity(A, B, c.rA, c.rB);
-                float jt1 = c.jt1 - c.massT1 * Dot(vr, arb.t1);
-                float jt2 = c.jt2 - c.massT2 * Dot(vr, arb.t2);
-                ClampToCone(arb.mu * c.jn, &jt1, &jt2);
+                const float v1 = Dot(vr, arb.t1), v2 = Dot(vr, arb.t2);
+                const float limit = arb.mu * c.jn;
+                float jt1 = c.jt1 - c.massT1 * v1;
+                float jt2 = c.jt2 - c.massT2 * v2;
+                const float slip = std::sqrt(v1 * v1 + v2 * v2);
+                if (jt1 * jt1 + jt2 * jt2 > limit * limit && slip > 0.0f) {
+                    const vec3 along = (arb.t1 * v1 + arb.t2 * v2) * (1.0f / slip);
+                    const float mass = EffectiveMass(invA + invB, iA, iB, c.rA, c.rB, along);
+                    jt1 = c.jt1 - mass * v1;
+                    jt2 = c.jt2 - mass * v2;
+                }
+                ClampToCone(limit, &jt1, &jt2);
                 const float d1 = jt1 - c.jt1, d2 = jt2 - c.jt2;
                 c.jt1 = jt1;
                 c.jt2 = jt2;

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <new>
@@ -165,11 +166,15 @@ TEST(SteadyStateAllocation, BoxpileWithSleep) {
     w.system.settings.sleep.enabled = true;
     for (int i = 0; i < 1500; ++i) w.system.Update(1.0f / 60.0f);
     ASSERT_EQ(w.system.SleepIslands().SleepingCount(), 200u) << "the pile should have settled";
+    std::size_t fewestAsleep = 200;  // after the wake: the island may settle and sleep again within the 4 s
     EXPECT_EQ(AllocationsDuring([&] {
                   for (int i = 0; i < 60; ++i) w.system.Update(1.0f / 60.0f);
                   w.Body(5).AddVelocityChange(vec3(0.0f, 2.0f, 0.0f));
-                  for (int i = 0; i < 240; ++i) w.system.Update(1.0f / 60.0f);
+                  for (int i = 0; i < 240; ++i) {
+                      w.system.Update(1.0f / 60.0f);
+                      fewestAsleep = std::min(fewestAsleep, w.system.SleepIslands().SleepingCount());
+                  }
               }),
               0);
-    EXPECT_LT(w.system.SleepIslands().SleepingCount(), 200u) << "the velocity change should have woken an island";
+    EXPECT_LT(fewestAsleep, 200u) << "the velocity change should have woken an island";
 }
