@@ -448,7 +448,6 @@ TEST(SceneFile, LoadReportsUnreadableAndOversizedFiles) {
     EXPECT_FALSE(LoadSceneFile("/nonexistent/scene.json", &d, &errors));
     ASSERT_EQ(errors.size(), 1u);
     EXPECT_NE(errors[0].find("/nonexistent/scene.json: cannot read"), std::string::npos);
-    errors.clear();
     EXPECT_NE(errors[0].find("cannot read: No such file or directory"), std::string::npos) << errors[0];
     errors.clear();
     EXPECT_FALSE(LoadSceneFile("/tmp", &d, &errors));
