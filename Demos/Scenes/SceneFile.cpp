@@ -273,22 +273,19 @@ void ReadWorld(const Json& j, SceneWorld* w, Problems* problems) {
     ObjectReader r(j, "world", problems);
     r.Vec3("gravity", &w->gravity);
     ReadStep(j, &r, &w->step, problems);
-    std::string name;
-    r.String("integrator", &name);
-    if (!name.empty() && !ParseIntegrator(name, &w->integrator)) {
-        problems->Add("world.integrator", "is not an integrator (" + std::string(IntegratorIds()) + ")",
-                      &j.at("integrator"));
-    }
-    name.clear();
-    r.String("particleContact", &name);
-    if (!name.empty() && !ParseParticleContact(name, &w->particleContact))
-        problems->Add("world.particleContact", "is not a particle contact (book, skin)", &j.at("particleContact"));
-    name.clear();
-    r.String("contactSolver", &name);
-    if (!name.empty() && !ParseContactSolver(name, &w->contactSolver)) {
-        problems->Add("world.contactSolver", "is not a contact solver (" + ContactSolverIds() + ")",
-                      &j.at("contactSolver"));
-    }
+    // A named choice: absent keeps the default; a name `parse` does not know is refused with the valid ones.
+    auto choice = [&](const char* key, const std::string& what, const std::string& ids, auto parse) {
+        std::string name;
+        r.String(key, &name);
+        if (!name.empty() && !parse(name))
+            problems->Add(std::string("world.") + key, "is not " + what + " (" + ids + ")", &j.at(key));
+    };
+    choice("integrator", "an integrator", IntegratorIds(),
+           [&](const std::string& n) { return ParseIntegrator(n, &w->integrator); });
+    choice("particleContact", "a particle contact", "book, skin",
+           [&](const std::string& n) { return ParseParticleContact(n, &w->particleContact); });
+    choice("contactSolver", "a contact solver", ContactSolverIds(),
+           [&](const std::string& n) { return ParseContactSolver(n, &w->contactSolver); });
     r.Int("iterations", &w->iterations, 1, SceneLimits::kMaxIterations);
     r.Float("penetrationSlop", &w->penetrationSlop, Range::NonNegative);
     r.Bool("linearProjection", &w->linearProjection);
