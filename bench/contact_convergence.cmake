@@ -1,4 +1,4 @@
-# psb-contact-convergence: contact problems with exact answers at a grid of steps, every solver (docs/ch15.md,
+# psb-contact-convergence: contact problems with exact answers at a grid of steps, every solver (docs/soft-solver.md,
 # "Convergence of the contact solvers"). GL-free.
 add_executable(psb-contact-convergence ${CMAKE_CURRENT_LIST_DIR}/contact_convergence.cpp)
 target_link_libraries(psb-contact-convergence PRIVATE psb_scenes psb_physics psb_options)

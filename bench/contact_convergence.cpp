@@ -1,11 +1,11 @@
 // psb-contact-convergence: the contact problems of tests/support/ContactProblems.h at a grid of steps for every
 // contact solver (and soft substep counts), one CSV row per run: problem,solver,dt,substeps,h,error_m,cpu_s.
-// scripts/plot-contact-convergence.sh draws docs/sweep/contact-*.png from it (docs/ch15.md, "Convergence of the
+// scripts/plot-contact-convergence.sh draws docs/sweep/contact-*.png from it (docs/soft-solver.md, "Convergence of the
 // contact solvers").
 //   psb-contact-convergence [--quick] [--problem NAME] [--solver ID] [--grid N] [--dt LIST] [--substeps LIST]
 //                           [--min-h S]
 // Soft runs whose substep h = dt / substeps is below --min-h (default 1.5e-5 s) are skipped: below about 15 us
-// every solver's error grows again from single-precision rounding of v += a h and x += v h (docs/ch15.md).
+// every solver's error grows again from single-precision rounding of v += a h and x += v h (docs/soft-solver.md).
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>

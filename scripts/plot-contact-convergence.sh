@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Draws docs/sweep/contact-convergence.png from psb-contact-convergence's CSV (docs/ch15.md, "Convergence of the
+# Draws docs/sweep/contact-convergence.png from psb-contact-convergence's CSV (docs/soft-solver.md, "Convergence of the
 # contact solvers"): one panel per problem, error (m) against the substep h = dt / substeps (s) on log-log axes,
 # one line per solver (the soft solver one line per substep count, over the step), and the 1 mm line. The particle
 # bounce is drawn against the step dt: particles are not substepped by the contact solvers.

@@ -1,4 +1,4 @@
-// ContactManifold.cpp: solver manifolds (docs/ch15.md, "Solver manifolds"): face contacts with corner points and
+// ContactManifold.cpp: solver manifolds (docs/soft-solver.md, "Solver manifolds"): face contacts with corner points and
 // stable feature ids, speculative points within the margin, edge-on-face and edge-edge contacts, the reduction to
 // four points, a seeded comparison with the book's manifolds, and the sphere pairs.
 #include "Physics/Geometry/ContactManifold.h"

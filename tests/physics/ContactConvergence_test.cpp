@@ -1,5 +1,5 @@
 // Every contact solver converges on contact problems with exact answers (tests/support/ContactProblems.h;
-// docs/ch15.md, "Convergence of the contact solvers"): for each solver and problem, the error at a fine setting is
+// docs/soft-solver.md, "Convergence of the contact solvers"): for each solver and problem, the error at a fine setting is
 // within 1 mm and smaller than at a coarse one; and the soft solver at 64 substeps of a 1 ms step, where before
 // its friction took its bound from the relax pass it ended 1.46 m from a box's stop.
 #include <gtest/gtest.h>
@@ -17,7 +17,7 @@ struct Pair {
 };
 
 /// The settings of one solver: book and accumulated at a 4 ms and a 0.125 ms step; soft at its 6 substeps of a
-/// 4 ms step and at 16 substeps of a 0.25 ms step (h = 15.6 us, above single precision's floor: docs/ch15.md).
+/// 4 ms step and at 16 substeps of a 0.25 ms step (h = 15.6 us, above single precision's floor: docs/soft-solver.md).
 /// The drop grid is 3 x 3 here (15 x 15 in the sweep).
 Pair SettingsOf(ContactSolver solver) {
     Pair p;

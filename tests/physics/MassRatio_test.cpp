@@ -1,4 +1,4 @@
-// Large mass ratios with ContactSolver::Soft at its defaults (docs/ch15.md, "Mass ratios"), on the shipped scene files
+// Large mass ratios with ContactSolver::Soft at its defaults (docs/soft-solver.md, "Mass ratios"), on the shipped scene files
 // scenes/mass-*.json: 1000:1 heavy on light and light on heavy, a column of 1, 1000 and 1 kg, and 100 kg on a column
 // of ten 1 kg cubes (cubes of half extent 0.5, friction 0.6, restitution 0, no damping, on a static ground). Each
 // runs 10 s at 60 Hz and at the book's 0.03 s; the deepest penetration any contact reaches (Collisions()) and the
@@ -77,7 +77,7 @@ void ExpectStands(const std::string& name, float sideways) {
 TEST(MassRatio, HeavyOnLight) { ExpectStands("mass-heavy-on-light.json", 0.01f); }
 // Measured 0.27 / 0.41 mm sideways (it stood before too).
 TEST(MassRatio, LightOnHeavy) { ExpectStands("mass-light-on-heavy.json", 0.01f); }
-// Measured deepest 0.13 / 1.6 mm, sideways 14 / 11 mm: the target of 1 cm sideways is not met (docs/ch15.md).
+// Measured deepest 0.13 / 1.6 mm, sideways 14 / 11 mm: the target of 1 cm sideways is not met (docs/soft-solver.md).
 TEST(MassRatio, HeavyBetweenLight) { ExpectStands("mass-heavy-between-light.json", 0.03f); }
 // Measured deepest 1.6 / 4.2 mm, sideways 86 / 144 mm (2.5 / 29 m before): the target of 1 cm sideways is not met.
 TEST(MassRatio, HeavyOnTowerOfTen) { ExpectStands("mass-heavy-on-tower.json", 0.25f); }

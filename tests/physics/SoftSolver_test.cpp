@@ -1,6 +1,6 @@
 // SoftContactSolver (ContactSolver::Soft): softness formula, warm start by feature id, restitution threshold,
 // speculative contacts, determinism. 60 Hz, damping off, cubes of half extent 0.5 and 1 kg on a static ground box
-// of half extents (50, 0.5, 50) whose top is y = 0 (docs/ch15.md, "The soft-step solver").
+// of half extents (50, 0.5, 50) whose top is y = 0 (docs/soft-solver.md, "The soft-step solver").
 #include "Physics/SoftSolver.h"
 
 #include <gtest/gtest.h>
@@ -259,7 +259,7 @@ std::vector<float> StateOf(const RigidWorld& world) {
 
 }  // namespace
 
-// Graph colouring (docs/ch15.md, "Graph colouring"), on a pyramid of base 12 (78 cubes): every pair is in exactly one
+// Graph colouring (docs/soft-solver.md, "Graph colouring"), on a pyramid of base 12 (78 cubes): every pair is in exactly one
 // lane of one batch or in the overflow; no moving body is in two pairs of one colour (static ones may be); lanes and
 // batches follow the pair order within a colour, and colours come in increasing order.
 TEST(SoftSolverGraph, ColoursShareNoMovingBody) {
@@ -298,7 +298,7 @@ TEST(SoftSolverGraph, ColoursShareNoMovingBody) {
                 solver.OverflowPairs().size());
 }
 
-// Blocks (docs/ch15.md, "Blocks"): the 1,000-cube pile of the peer bench is a hundred columns, each an island. Every
+// Blocks (docs/soft-solver.md, "Blocks"): the 1,000-cube pile of the peer bench is a hundred columns, each an island. Every
 // moving body is in exactly one block, in index order; every pair is solved in the block of its moving bodies (an
 // island is never split), once, in a batch or the block's overflow; each block but the last holds at least
 // kBlockPairs pairs; blocks come in order of their first body; within a block, colours increase and a colour keeps

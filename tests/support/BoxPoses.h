@@ -1,5 +1,5 @@
 #pragma once
-// Seeded box-box poses shared by the solver-manifold tests and psb-manifold-bench (docs/ch15.md, "Solver
+// Seeded box-box poses shared by the solver-manifold tests and psb-manifold-bench (docs/soft-solver.md, "Solver
 // manifolds"): box A at the origin, box B of random size and rotation along a random direction, placed where the
 // book's SAT (OBBOBB) says the two just touch. The caller then moves B in or out along that direction.
 

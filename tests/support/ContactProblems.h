@@ -1,6 +1,6 @@
 #pragma once
 // Contact problems with exact answers, for the convergence tests (tests/physics/ContactConvergence_test.cpp) and
-// the sweep that plots them (bench/contact_convergence.cpp, docs/ch15.md "Convergence of the contact solvers").
+// the sweep that plots them (bench/contact_convergence.cpp, docs/soft-solver.md "Convergence of the contact solvers").
 // Each runs one problem at one setting (solver, step, soft substeps) and returns its error against the exact rigid
 // answer in metres. Bodies are undamped (velocity retention 1, no velocity threshold) so the exact answers hold at
 // every step. GL-free.
