@@ -1,7 +1,7 @@
 // Every contact solver converges on contact problems with exact answers (tests/support/ContactProblems.h;
-// docs/soft-solver.md, "Convergence of the contact solvers"): for each solver and problem, the error at a fine setting is
-// within 1 mm and smaller than at a coarse one; and the soft solver at 64 substeps of a 1 ms step, where before
-// its friction took its bound from the relax pass it ended 1.46 m from a box's stop.
+// docs/soft-solver.md, "Convergence of the contact solvers"): for each solver and problem, the error at a fine setting
+// is within 1 mm and smaller than at a coarse one; and the soft solver at 64 substeps of a 1 ms step, where before its
+// friction took its bound from the relax pass it ended 1.46 m from a box's stop.
 #include <gtest/gtest.h>
 
 #include "tests/support/ContactProblems.h"

@@ -240,9 +240,9 @@ TEST(ContactSolver, AccumulatedTwoRunsAreBitwiseIdentical) {
 // A box sliding to a stop at a yaw: Coulomb friction opposes the slip, so it stops v0^2 / (2 mu g) along its launch
 // direction, whatever its yaw. The accumulated solver's two friction rows (t1, t2) have different effective masses at
 // a contact off the body's axes; clamped together they pushed the sliding box sideways, and at 65 degrees it curved
-// and stopped 6.8 cm from there at 0.5 ms and at 0.1 ms alike (docs/soft-solver.md, "Convergence of the contact solvers").
-// A sliding contact is now one row along its slip. Book and accumulated at 1 ms: within 5 mm. (The soft solver's
-// friction rows have the same flaw, not mended yet: 3.3 cm here; docs/soft-solver.md.)
+// and stopped 6.8 cm from there at 0.5 ms and at 0.1 ms alike (docs/soft-solver.md, "Convergence of the contact
+// solvers"). A sliding contact is now one row along its slip. Book and accumulated at 1 ms: within 5 mm. (The soft
+// solver's friction rows have the same flaw, not mended yet: 3.3 cm here; docs/soft-solver.md.)
 TEST(ContactSolver, ABoxSlidingAtAYawStopsWhereCoulombSays) {
     const float mu = 0.2566f, g = 9.82f;
     const vec3 v(1.0514f, 0.0f, -1.7360f);

@@ -259,9 +259,9 @@ std::vector<float> StateOf(const RigidWorld& world) {
 
 }  // namespace
 
-// Graph colouring (docs/soft-solver.md, "Graph colouring"), on a pyramid of base 12 (78 cubes): every pair is in exactly one
-// lane of one batch or in the overflow; no moving body is in two pairs of one colour (static ones may be); lanes and
-// batches follow the pair order within a colour, and colours come in increasing order.
+// Graph colouring (docs/soft-solver.md, "Graph colouring"), on a pyramid of base 12 (78 cubes): every pair is in
+// exactly one lane of one batch or in the overflow; no moving body is in two pairs of one colour (static ones may be);
+// lanes and batches follow the pair order within a colour, and colours come in increasing order.
 TEST(SoftSolverGraph, ColoursShareNoMovingBody) {
     RigidWorld world(PeerPyramid(12));
     world.system.settings.contactSolver = ContactSolver::Soft;
@@ -298,8 +298,8 @@ TEST(SoftSolverGraph, ColoursShareNoMovingBody) {
                 solver.OverflowPairs().size());
 }
 
-// Blocks (docs/soft-solver.md, "Blocks"): the 1,000-cube pile of the peer bench is a hundred columns, each an island. Every
-// moving body is in exactly one block, in index order; every pair is solved in the block of its moving bodies (an
+// Blocks (docs/soft-solver.md, "Blocks"): the 1,000-cube pile of the peer bench is a hundred columns, each an island.
+// Every moving body is in exactly one block, in index order; every pair is solved in the block of its moving bodies (an
 // island is never split), once, in a batch or the block's overflow; each block but the last holds at least
 // kBlockPairs pairs; blocks come in order of their first body; within a block, colours increase and a colour keeps
 // the pair order.

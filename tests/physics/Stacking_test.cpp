@@ -1,8 +1,8 @@
-// Stacking, mass ratios, bounce and incline with ContactSolver::Soft (docs/soft-solver.md, "The soft-step solver"): at its
-// default settings (6 substeps, contacts of 90 Hz at damping ratio 1), except the bounce (16 substeps). Every scene:
-// 60 Hz, one step per frame, 600 steps, sleeping off, damping off (velocity retention 1, velocity threshold 0), cubes
-// of half extent 0.5, 1 kg, friction 0.6, restitution 0, on a static ground box of half extents (50, 0.5, 50) whose top
-// is y = 0 (PeerCube, PeerGround: the peer benchmark's definitions, Demos/Scenes/WorldBuilder.h).
+// Stacking, mass ratios, bounce and incline with ContactSolver::Soft (docs/soft-solver.md, "The soft-step solver"): at
+// its default settings (6 substeps, contacts of 90 Hz at damping ratio 1), except the bounce (16 substeps). Every
+// scene: 60 Hz, one step per frame, 600 steps, sleeping off, damping off (velocity retention 1, velocity threshold 0),
+// cubes of half extent 0.5, 1 kg, friction 0.6, restitution 0, on a static ground box of half extents (50, 0.5, 50)
+// whose top is y = 0 (PeerCube, PeerGround: the peer benchmark's definitions, Demos/Scenes/WorldBuilder.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
