@@ -273,6 +273,60 @@ def render(root, peers=None):
     return "\n".join(lines) + "\n"
 
 
+def optional_rows(root, rel, peers=None):
+    path = peers if (peers and rel.endswith("peers.csv")) else os.path.join(root, rel)
+    return read_rows(path) if os.path.exists(path) else []
+
+
+def headline_peers(rows):
+    ours = [r for r in rows if r["engine"] != "bullet"]
+    if not ours:
+        return "not measured yet ([hand-measured figures](docs/peers.md))"
+    ratios = [float(r["ratio_to_bullet"]) for r in ours]
+    stands = sum(1 for r in ours if r["stands"] == "1")
+    return "%s–%s× Bullet's CPU per step; %d of %d runs stand" % (g3(min(ratios)), g3(max(ratios)), stands, len(ours))
+
+
+def headline(root, peers=None):
+    """The README's short results table: one figure per measured area, each linking to its table."""
+    rows = ["| what | figure | table |", "|---|---|---|"]
+    peer_rows = optional_rows(root, "docs/data/peers.csv", peers)
+    rows.append("| contacts against Bullet 3.24, same scenes, one process | %s | [results](docs/results.md#speed-against-"
+                "bullet), [method](docs/peers.md) |" % headline_peers(peer_rows))
+    sweep = optional_rows(root, "docs/sweep/results.csv")
+    stack = [r for r in sweep if r["problem"] == "stack-10" and usable(r) and float(r["error"]) <= 0.01]
+    if stack:
+        best = min(stack, key=lambda r: float(r["cpu_per_sim_s"]))
+        rows.append("| a tower of 10 cubes within 1 cm, cheapest setting | %s, %s CPU s per simulated s | [results](docs/"
+                    "results.md#for-this-error-use-this-setting), [sweep](docs/sweep.md) |" %
+                    (setting_of(best), g3(float(best["cpu_per_sim_s"]))))
+    demo = optional_rows(root, "docs/sweep/demo-dt0.03.csv")
+    proj = [r for r in demo if r["problem"] == "projectile"]
+    book = next((r for r in proj if is_book_model(r)), None)
+    if book:
+        best = min((r for r in proj if usable(r)), key=lambda r: float(r["error"]))
+        rows.append("| the book's 0.03 s step: projectile error after 2 s | %s m (semi-implicit Euler); %s m (%s) at %s× "
+                    "the cost | [results](docs/results.md#what-the-demos-step-costs-in-accuracy) |" %
+                    (g3(float(book["error"])), g3(float(best["error"])), best["integrator"],
+                     g3(float(best["cpu_per_sim_s"]) / float(book["cpu_per_sim_s"]))))
+    auto = optional_rows(root, "docs/sweep/auto.csv")
+    answered = [r for r in auto if r["refused"] != "1"]
+    if answered:
+        within = sum(1 for r in answered if float(r["error"]) <= float(r["budget"]))
+        rows.append("| `model=auto` on the %d reference problems | %d of %d answered budgets met, %d refused up front | "
+                    "[results](docs/results.md#an-error-budget-instead-of-a-step-modelauto), [method](docs/model-"
+                    "choice-validation.md) |" % (len(set(r["problem"] for r in auto)), within, len(answered),
+                                              len(auto) - len(answered)))
+    return rows
+
+
+def replace_block(readme, rows):
+    begin = readme.index("<!-- results:begin")
+    begin = readme.index("\n", begin) + 1
+    end = readme.index("<!-- results:end -->")
+    return readme[:begin] + "\n".join(rows) + "\n" + readme[end:]
+
+
 def machine_name():
     model = platform.machine()
     try:
@@ -316,17 +370,23 @@ def main():
         return stamp(args)
     text = render(args.root, args.peers)
     target = os.path.join(args.root, "docs", "results.md")
+    readme_path = os.path.join(args.root, "README.md")
+    readme = open(readme_path).read()
+    new_readme = replace_block(readme, headline(args.root, args.peers))
     if args.check:
         with tempfile.NamedTemporaryFile("w", suffix=".md", delete=False) as tmp:
             tmp.write(text)
         committed = open(target).read() if os.path.exists(target) else ""
         os.unlink(tmp.name)
-        if committed != text:
-            sys.exit("gen-results: docs/results.md differs from what scripts/gen-results.py writes from the CSVs; "
-                     "run scripts/gen-results.py and commit the page")
+        if committed != text or new_readme != readme:
+            sys.exit("gen-results: docs/results.md or README.md's results table differs from what "
+                     "scripts/gen-results.py writes from the CSVs; run scripts/gen-results.py and commit them")
         return 0
     with open(args.out or target, "w") as f:
         f.write(text)
+    if not args.out:
+        with open(readme_path, "w") as f:
+            f.write(new_readme)
     return 0
 
 
