@@ -15,69 +15,32 @@
 #include "Demos/Scenes/WorldBuilder.h"
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
+#include "tests/support/TestWorld.h"
 #include "tests/support/Volumes.h"
 
 namespace {
 
 constexpr float kDt = 1.0f / 60.0f;
 
-/// Ground at [0], then the scene's boxes; `bodies` must not reallocate after the system holds pointers.
-struct Scene {
-    std::vector<RigidbodyVolume> bodies;
-    std::vector<vec3> start;
-    PhysicsSystem system;
+/// The solver and its passes for a world of tests/support/TestWorld.h.
+void UseSolver(TestWorld* w, ContactSolver solver, int iterations) {
+    w->system.settings.contactSolver = solver;
+    w->system.settings.solverIterations = iterations;
+}
 
-    Scene(ContactSolver solver, int iterations) {
-        system.settings.contactSolver = solver;
-        system.settings.solverIterations = iterations;
-    }
-    void Add() {
-        for (RigidbodyVolume& b : bodies) {
-            start.push_back(b.position);
-            b.referenceStep = kDt;
-            system.AddRigidbody(&b);
-        }
-    }
-    void Run(int steps) {
-        for (int i = 0; i < steps; ++i) system.Update(kDt);
-    }
-    /// Largest horizontal (x, z) distance of any box from its start, m.
-    float MaxDrift() const {
-        float d = 0;
-        for (std::size_t i = 1; i < bodies.size(); ++i) {
-            const vec3 s = bodies[i].position - start[i];
-            d = std::fmax(d, std::sqrt(s.x * s.x + s.z * s.z));
-        }
-        return d;
-    }
-    /// Largest |y - y0| of any box, m.
-    float MaxVertical() const {
-        float d = 0;
-        for (std::size_t i = 1; i < bodies.size(); ++i) d = std::fmax(d, std::fabs(bodies[i].position.y - start[i].y));
-        return d;
-    }
-    /// Linear plus rotational kinetic energy of every body, J.
-    float KineticEnergy() const {
-        float e = 0;
-        for (const RigidbodyVolume& b : bodies)
-            if (b.mass > 0)
-                e += 0.5f * b.mass * MagnitudeSq(b.velocity) +
-                     0.5f * Dot(b.angVel, MultiplyVector(b.angVel, b.InertiaTensor()));
-        return e;
-    }
-};
+/// Ground at [0], then the specs' boxes, each with its damping and threshold per 1/60 s step.
+void AddScene(TestWorld* w, const std::vector<BodySpec>& specs) {
+    for (const BodySpec& spec : specs) w->Add(spec).referenceStep = kDt;
+    w->Join();
+}
 
 /// A 2-D pyramid of unit boxes with `base` boxes in the bottom row, 0.01 m gaps between neighbours.
-void BuildPyramid(Scene* s, int base) {
-    s->bodies = MakeBodies(WithGround(GroundSlabSpec(), Pyramid(base, BodySpec(), 0.01f)));
-    s->Add();
+void BuildPyramid(TestWorld* w, int base) {
+    AddScene(w, WithGround(GroundSlabSpec(), Pyramid(base, BodySpec(), 0.01f)));
 }
 
 /// A column of `height` unit boxes resting face on face, bottom on the ground.
-void BuildTower(Scene* s, int height) {
-    s->bodies = MakeBodies(WithGround(GroundSlabSpec(), Tower(height, BodySpec())));
-    s->Add();
-}
+void BuildTower(TestWorld* w, int height) { AddScene(w, WithGround(GroundSlabSpec(), Tower(height, BodySpec()))); }
 
 }  // namespace
 
@@ -100,11 +63,12 @@ TEST(ContactSolver, NamesRoundTrip) {
 // Why the option exists: the book's solver (erratum 5.2-15) with the same settings, even at 10 passes, lets a
 // column of 5 fall over (measured: 5.6 m of drift).
 TEST(ContactSolver, BookSolverTowerOfFiveFalls) {
-    Scene s(ContactSolver::Book, 10);
+    TestWorld s;
+    UseSolver(&s, ContactSolver::Book, 10);
     BuildTower(&s, 5);
-    s.Run(600);
-    std::printf("book tower 5: drift %.3f m\n", s.MaxDrift());
-    EXPECT_GT(s.MaxDrift(), 1.0f);
+    s.Step(kDt, 600);
+    std::printf("book tower 5: drift %.3f m\n", s.MaxHorizontalDrift());
+    EXPECT_GT(s.MaxHorizontalDrift(), 1.0f);
 }
 
 // Towers of 5 and 10 with the Accumulated solver stand for 10 s: no box moves more than 5 cm sideways (measured
@@ -113,14 +77,15 @@ TEST(ContactSolver, BookSolverTowerOfFiveFalls) {
 // 6e-15 and 4e-7 J).
 TEST(ContactSolver, AccumulatedTowersOfFiveAndTenStand) {
     for (int height : {5, 10}) {
-        Scene s(ContactSolver::Accumulated, 10);
+        TestWorld s;
+        UseSolver(&s, ContactSolver::Accumulated, 10);
         BuildTower(&s, height);
-        s.Run(600);
+        s.Step(kDt, 600);
         std::printf("accumulated tower %d: drift %.4f m, sink %.4f m, KE %.3g J, warm-started %zu/%zu\n", height,
-                    s.MaxDrift(), s.MaxVertical(), s.KineticEnergy(), s.system.AccumulatedSolver().WarmStartedCount(),
-                    s.system.AccumulatedSolver().ContactCount());
-        EXPECT_LT(s.MaxDrift(), 0.05f) << height;
-        EXPECT_LT(s.MaxVertical(), 0.02f * height) << height;
+                    s.MaxHorizontalDrift(), s.MaxVerticalMove(), s.KineticEnergy(),
+                    s.system.AccumulatedSolver().WarmStartedCount(), s.system.AccumulatedSolver().ContactCount());
+        EXPECT_LT(s.MaxHorizontalDrift(), 0.05f) << height;
+        EXPECT_LT(s.MaxVerticalMove(), 0.02f * height) << height;
         EXPECT_LT(s.KineticEnergy(), 1e-4f) << height;
         // Resting contacts persist: every contact of the last step inherited an impulse.
         EXPECT_EQ(s.system.AccumulatedSolver().ArbiterCount(), static_cast<std::size_t>(height));
@@ -130,22 +95,24 @@ TEST(ContactSolver, AccumulatedTowersOfFiveAndTenStand) {
 
 // A 2-D pyramid with a base of 10 (55 boxes) stands for 10 s: drift below 5 cm (measured 0.012), KE below 1e-4 J.
 TEST(ContactSolver, AccumulatedPyramidOfTenStands) {
-    Scene s(ContactSolver::Accumulated, 10);
+    TestWorld s;
+    UseSolver(&s, ContactSolver::Accumulated, 10);
     BuildPyramid(&s, 10);
-    s.Run(600);
-    std::printf("accumulated pyramid 10: drift %.4f m, sink %.4f m, KE %.3g J\n", s.MaxDrift(), s.MaxVertical(),
-                s.KineticEnergy());
-    EXPECT_LT(s.MaxDrift(), 0.05f);
-    EXPECT_LT(s.MaxVertical(), 0.2f);
+    s.Step(kDt, 600);
+    std::printf("accumulated pyramid 10: drift %.4f m, sink %.4f m, KE %.3g J\n", s.MaxHorizontalDrift(),
+                s.MaxVerticalMove(), s.KineticEnergy());
+    EXPECT_LT(s.MaxHorizontalDrift(), 0.05f);
+    EXPECT_LT(s.MaxVerticalMove(), 0.2f);
     EXPECT_LT(s.KineticEnergy(), 1e-4f);
 }
 
 // One unit box on the ground, 10 s: it never sinks deeper than the slack plus the one-step gravity overshoot
 // (g dt^2 = 0.0027 m; bound slack + 0.005), it is at rest in the last second, and it does not wander.
 TEST(ContactSolver, AccumulatedRestingBoxStaysWithinSlop) {
-    Scene s(ContactSolver::Accumulated, 10);
+    TestWorld s;
+    UseSolver(&s, ContactSolver::Accumulated, 10);
     BuildTower(&s, 1);
-    RigidbodyVolume& box = s.bodies[1];
+    RigidbodyVolume& box = s.Volume(1);
     float lowest = 1.0f, maxLateSpeed = 0.0f;
     for (int i = 0; i < 600; ++i) {
         s.system.Update(kDt);
@@ -153,10 +120,10 @@ TEST(ContactSolver, AccumulatedRestingBoxStaysWithinSlop) {
         if (i >= 540) maxLateSpeed = std::fmax(maxLateSpeed, Magnitude(box.velocity));
     }
     std::printf("accumulated resting box: deepest sink %.4f m, max late speed %.3g m/s, drift %.3g m\n", 1.0f - lowest,
-                maxLateSpeed, s.MaxDrift());
+                maxLateSpeed, s.MaxHorizontalDrift());
     EXPECT_GE(lowest, 1.0f - (s.system.settings.penetrationSlop + 0.005f));
     EXPECT_LT(maxLateSpeed, 1e-3f);
-    EXPECT_LT(s.MaxDrift(), 1e-3f);
+    EXPECT_LT(s.MaxHorizontalDrift(), 1e-3f);
 }
 
 // Coulomb friction on the accumulated totals, NOT divided by the contact count: a unit box sliding at 5 m/s on
@@ -164,13 +131,14 @@ TEST(ContactSolver, AccumulatedRestingBoxStaysWithinSlop) {
 // 5.892 m/s^2, so after 0.5 s it moves at 5 - 2.946 = 2.054 m/s (bound 0.05 m/s; a solver that divided the
 // friction by the 4 contacts would leave ~4.3 m/s). No spin is created.
 TEST(ContactSolver, AccumulatedSlidingFrictionIsMuG) {
-    Scene s(ContactSolver::Accumulated, 10);
+    TestWorld s;
+    UseSolver(&s, ContactSolver::Accumulated, 10);
     BuildTower(&s, 1);
-    RigidbodyVolume& box = s.bodies[1];
+    RigidbodyVolume& box = s.Volume(1);
     box.velocityRetention = 1.0f;
-    s.Run(30);  // settle
+    s.Step(kDt, 30);  // settle
     box.velocity = vec3(5, 0, 0);
-    s.Run(30);
+    s.Step(kDt, 30);
     const float expected = 5.0f - 0.6f * 9.82f * 0.5f;
     std::printf("accumulated sliding box: v %.4f m/s after 0.5 s (expected %.4f)\n", box.velocity.x, expected);
     EXPECT_NEAR(box.velocity.x, expected, 0.05f);
@@ -181,19 +149,19 @@ TEST(ContactSolver, AccumulatedSlidingFrictionIsMuG) {
 // momentum is conserved to 1e-5 relative, and the closing speed 6 m/s (above the restitution threshold) comes
 // out as e = 0.5 times itself.
 TEST(ContactSolver, AccumulatedSphereCollisionConservesMomentum) {
-    PhysicsSystem system;
-    system.settings.contactSolver = ContactSolver::Accumulated;
-    system.settings.solverIterations = 10;
-    RigidbodyVolume a(RigidbodyType::Sphere), b(RigidbodyType::Sphere);
+    TestWorld w;
+    UseSolver(&w, ContactSolver::Accumulated, 10);
+    PhysicsSystem& system = w.system;
+    RigidbodyVolume& a = w.Add(RigidbodyVolume(RigidbodyType::Sphere));
+    RigidbodyVolume& b = w.Add(RigidbodyVolume(RigidbodyType::Sphere));
     a.position = vec3(0, 0, 0);
     b.position = vec3(2.05f, 0.3f, 0);  // off-centre: the normal is not along the velocity
     b.mass = 2.0f;
     for (RigidbodyVolume* body : {&a, &b}) {
         body->gravity = vec3();
         body->velocityRetention = 1.0f;
-        body->SynchCollisionVolumes();
-        system.AddRigidbody(body);
     }
+    ASSERT_TRUE(w.Join()) << system.LastError();
     a.velocity = vec3(6, 0, 0);
     const vec3 p0 = a.velocity * a.mass + b.velocity * b.mass;
     int hits = 0;
@@ -219,13 +187,13 @@ namespace {
 
 /// A tilted, offset stack dropped with a sphere on top, then 300 steps with the Accumulated solver.
 std::vector<unsigned char> RunDrop() {
-    Scene s(ContactSolver::Accumulated, 10);
+    TestWorld s;
+    UseSolver(&s, ContactSolver::Accumulated, 10);
     std::vector<BodySpec> specs = WithGround(GroundSlabSpec(), TiltedColumn(5));
     specs.push_back(SphereSpec(vec3(0.5f, 14, 0.2f)));
-    s.bodies = MakeBodies(specs);
-    s.Add();
-    s.Run(300);
-    return Snapshot(s.bodies);
+    AddScene(&s, specs);
+    s.Step(kDt, 300);
+    return s.Snapshot();
 }
 
 }  // namespace

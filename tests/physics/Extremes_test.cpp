@@ -20,6 +20,7 @@
 #include "Physics/RigidbodyVolume.h"
 #include "Physics/Spring.h"
 #include "Physics/StabilityMonitor.h"
+#include "tests/support/TestWorld.h"
 
 namespace {
 
@@ -31,74 +32,51 @@ bool Finite(const RigidbodyVolume& b) {
     return IsFinite(b.position) && IsFinite(b.velocity) && IsFinite(b.angVel) && IsFinite(b.orientation);
 }
 
-/// A world of volumes kept in one vector (reserved, so the system's pointers stay valid).
-struct Volumes {
-    PhysicsSystem system;
-    std::vector<RigidbodyVolume> bodies;
-    Volumes() { bodies.reserve(16); }
-    /// A sphere of radius `half` or a cube of half extent `half` (WorldBuilder.h).
-    RigidbodyVolume& Add(RigidbodyType type, const vec3& position, float mass, float half) {
-        bodies.push_back(MakeBody(type == RigidbodyType::Sphere ? SphereSpec(position, half, mass)
-                                                                : BoxSpec(position, vec3(half, half, half), mass)));
-        return bodies.back();
-    }
-    void Finish() {
-        for (RigidbodyVolume& b : bodies) {
-            b.SynchCollisionVolumes();
-            system.AddRigidbody(&b);
-        }
-    }
-    /// Steps and returns false at the first non-finite body.
-    bool Run(float dt, int steps) {
-        for (int i = 0; i < steps; ++i) {
-            system.Update(dt);
-            for (const RigidbodyVolume& b : bodies)
-                if (!Finite(b)) return false;
-        }
-        return true;
-    }
-};
+/// A sphere of radius `half` or a cube of half extent `half` (WorldBuilder.h), added to the world.
+RigidbodyVolume& AddShape(TestWorld* w, RigidbodyType type, const vec3& position, float mass, float half) {
+    return w->Add(type == RigidbodyType::Sphere ? SphereSpec(position, half, mass)
+                                                : BoxSpec(position, vec3(half, half, half), mass));
+}
 
 /// Ground slab (static) with its top face at height `top`, centred at (x, ., z).
-RigidbodyVolume& AddGround(Volumes* w, float top, float x = 0.0f, float z = 0.0f, float half = 20.0f) {
+RigidbodyVolume& AddGround(TestWorld* w, float top, float x = 0.0f, float z = 0.0f, float half = 20.0f) {
     BodySpec ground = GroundSpec(vec3(half, 0.5f, half), top);
     ground.position.x = x;
     ground.position.z = z;
-    w->bodies.push_back(MakeBody(ground));
-    return w->bodies.back();
+    return w->Add(ground);
 }
 
-/// A particle on a ground box (top at y = 0) with the given integrator, dropped from 2 m.
-struct ParticleOnGround {
-    PhysicsSystem system;
-    Particle p;
-    explicit ParticleOnGround(Integrator integrator, const vec3& offset = vec3(), float groundHalf = 10.0f) {
-        system.settings.integrator = integrator;
-        system.AddConstraint(OBB(offset + vec3(0.0f, -1.0f, 0.0f), vec3(groundHalf, 1.0f, groundHalf)));
-        p.SetPosition(offset + vec3(0.0f, 2.0f, 0.0f));
-        system.AddRigidbody(&p);
-    }
-};
+/// A particle on a ground box (top at y = 0) with the given integrator, dropped from 2 m; already in the world.
+Particle& DropParticleOnGround(TestWorld* w, Integrator integrator, const vec3& offset = vec3(),
+                               float groundHalf = 10.0f) {
+    w->system.settings.integrator = integrator;
+    w->system.AddConstraint(OBB(offset + vec3(0.0f, -1.0f, 0.0f), vec3(groundHalf, 1.0f, groundHalf)));
+    Particle& p = w->AddParticle();
+    p.SetPosition(offset + vec3(0.0f, 2.0f, 0.0f));
+    w->Join();
+    return p;
+}
 
 // ---------------------------------------------------------------------------------------------------------
 // Zero, negative and non-finite dt: refused (the step does nothing) by PhysicsSystem and the scenes.
 
 TEST(ExtremesTest, ZeroNegativeAndNonFiniteDtLeaveTheWorldUntouched) {
     for (Integrator integrator : kAllIntegrators) {
-        ParticleOnGround w(integrator);
-        w.p.SetVelocity(vec3(1.0f, 2.0f, 3.0f));
+        TestWorld w;
+        Particle& p = DropParticleOnGround(&w, integrator);
+        p.SetVelocity(vec3(1.0f, 2.0f, 3.0f));
         for (float dt : {0.0f, -0.01f, kNaN, kInfF, -kInfF}) w.system.Update(dt);
         EXPECT_EQ(w.system.StepCount(), 0) << ToString(integrator);
-        EXPECT_EQ(w.p.GetPosition().y, 2.0f);
-        EXPECT_EQ(w.p.GetVelocity().z, 3.0f);
+        EXPECT_EQ(p.GetPosition().y, 2.0f);
+        EXPECT_EQ(p.GetVelocity().z, 3.0f);
     }
-    Volumes v;
+    TestWorld v;
     AddGround(&v, 0.0f);
-    v.Add(RigidbodyType::Box, vec3(0.0f, 0.45f, 0.0f), 1.0f, 0.5f);  // overlapping: would be pushed out
-    v.Finish();
+    AddShape(&v, RigidbodyType::Box, vec3(0.0f, 0.45f, 0.0f), 1.0f, 0.5f);  // overlapping: would be pushed out
+    v.Join();
     for (float dt : {0.0f, -1.0f, kNaN}) v.system.Update(dt);
     EXPECT_EQ(v.system.StepCount(), 0);
-    EXPECT_EQ(v.bodies[1].position.y, 0.45f);
+    EXPECT_EQ(v.Volume(1).position.y, 0.45f);
 }
 
 TEST(ExtremesTest, SceneStepRefusesZeroAndNonFiniteSteps) {
@@ -113,12 +91,13 @@ TEST(ExtremesTest, SceneStepRefusesZeroAndNonFiniteSteps) {
 TEST(ExtremesTest, TinyStepParticlesFallAsExpected) {
     // 2,000 steps of 1e-5 s = 0.02 s of free fall: y = 2 - g t^2 / 2 to float rounding of 2,000 small steps.
     for (Integrator integrator : kAllIntegrators) {
-        ParticleOnGround w(integrator);
-        w.p.SetVelocityRetention(1.0f);
+        TestWorld w;
+        Particle& p = DropParticleOnGround(&w, integrator);
+        p.SetVelocityRetention(1.0f);
         for (int i = 0; i < 2000; ++i) w.system.Update(1e-5f);
-        ASSERT_TRUE(Finite(w.p)) << ToString(integrator);
-        EXPECT_NEAR(w.p.GetPosition().y, 2.0f - 0.5f * 9.82f * 0.02f * 0.02f, 2e-4f) << ToString(integrator);
-        EXPECT_NEAR(w.p.GetVelocity().y, -9.82f * 0.02f, 1e-3f) << ToString(integrator);
+        ASSERT_TRUE(Finite(p)) << ToString(integrator);
+        EXPECT_NEAR(p.GetPosition().y, 2.0f - 0.5f * 9.82f * 0.02f * 0.02f, 2e-4f) << ToString(integrator);
+        EXPECT_NEAR(p.GetVelocity().y, -9.82f * 0.02f, 1e-3f) << ToString(integrator);
     }
 }
 
@@ -127,30 +106,31 @@ TEST(ExtremesTest, HugeStepParticlesLandOnTheGroundWithoutTunnelling) {
     // must stop it on top. Explicit Euler gains height on the first bounces at this step (its energy error)
     // but levels off near 10 m (2,000 steps: 9.4 m); 20 m is the bound.
     for (Integrator integrator : kAllIntegrators) {
-        ParticleOnGround w(integrator);
+        TestWorld w;
+        Particle& p = DropParticleOnGround(&w, integrator);
         for (int i = 0; i < 40; ++i) {
             w.system.Update(0.5f);
-            ASSERT_TRUE(Finite(w.p)) << ToString(integrator) << " step " << i;
-            ASSERT_GE(w.p.GetPosition().y, 0.0f) << ToString(integrator) << " step " << i;
-            ASSERT_LT(w.p.GetPosition().y, 20.0f) << ToString(integrator) << " step " << i;
+            ASSERT_TRUE(Finite(p)) << ToString(integrator) << " step " << i;
+            ASSERT_GE(p.GetPosition().y, 0.0f) << ToString(integrator) << " step " << i;
+            ASSERT_LT(p.GetPosition().y, 20.0f) << ToString(integrator) << " step " << i;
         }
     }
 }
 
 /// Three unit boxes on a ground slab `thickness` m thick, stepped 40 times at 0.5 s; false if not finite.
-bool HugeStepStack(float thickness, int projection, Volumes* w) {
+bool HugeStepStack(float thickness, int projection, TestWorld* w) {
     w->system.settings.linearProjection = projection != 0;
     RigidbodyVolume& g = AddGround(w, 0.0f);
     g.position.y = -0.5f * thickness;
     g.box.size.y = 0.5f * thickness;
-    for (int i = 0; i < 3; ++i) w->Add(RigidbodyType::Box, vec3(0.0f, 0.5f + float(i), 0.0f), 1.0f, 0.5f);
-    w->Finish();
-    return w->Run(0.5f, 40);
+    for (int i = 0; i < 3; ++i) AddShape(w, RigidbodyType::Box, vec3(0.0f, 0.5f + float(i), 0.0f), 1.0f, 0.5f);
+    w->Join();
+    return w->StepWhileFinite(0.5f, 40);
 }
 
 TEST(ExtremesTest, HugeStepVolumeStackStaysFinite) {
     for (int projection : {0, 1}) {
-        Volumes w;
+        TestWorld w;
         EXPECT_TRUE(HugeStepStack(1.0f, projection, &w)) << "projection " << projection;
     }
 }
@@ -166,26 +146,26 @@ TEST(ExtremesTest, HugeStepVolumeStackStaysFinite) {
 TEST(ExtremesTest, HugeStepVolumeStackStaysOnTheGround) {
     for (float thickness : {1.0f, 10.0f})
         for (int projection : {1}) {
-            Volumes w;
+            TestWorld w;
             ASSERT_TRUE(HugeStepStack(thickness, projection, &w));
-            for (std::size_t i = 1; i < w.bodies.size(); ++i)
-                EXPECT_GT(w.bodies[i].position.y, -1.0f) << "slab " << thickness << " m, box " << i;
+            for (std::size_t i = 1; i < w.VolumeCount(); ++i)
+                EXPECT_GT(w.Volume(i).position.y, -1.0f) << "slab " << thickness << " m, box " << i;
         }
 }
 
 // The same stack: every step was subdivided (a bounded n), and the state stays bounded (no box further than 10 m
 // from where the stack stood, none faster than 20 m/s), step by step.
 TEST(ExtremesTest, HugeStepVolumeStackIsSubdividedAndBounded) {
-    Volumes w;
+    TestWorld w;
     ASSERT_TRUE(HugeStepStack(1.0f, 1, &w));  // builds and runs 40 steps; re-run step by step below
     for (int i = 0; i < 40; ++i) {
         w.system.Update(0.5f);
         EXPECT_GE(w.system.LastVolumeSubsteps(), 2) << "step " << i;
         EXPECT_LE(w.system.LastVolumeSubsteps(), w.system.settings.maxVolumeSubsteps) << "step " << i;
-        for (std::size_t b = 1; b < w.bodies.size(); ++b) {
-            ASSERT_TRUE(Finite(w.bodies[b])) << "step " << i;
-            EXPECT_LT(Magnitude(w.bodies[b].position - vec3(0.0f, 1.5f, 0.0f)), 10.0f) << "step " << i << " box " << b;
-            EXPECT_LT(Magnitude(w.bodies[b].velocity), 20.0f) << "step " << i << " box " << b;
+        for (std::size_t b = 1; b < w.VolumeCount(); ++b) {
+            ASSERT_TRUE(Finite(w.Volume(b))) << "step " << i;
+            EXPECT_LT(Magnitude(w.Volume(b).position - vec3(0.0f, 1.5f, 0.0f)), 10.0f) << "step " << i << " box " << b;
+            EXPECT_LT(Magnitude(w.Volume(b).velocity), 20.0f) << "step " << i << " box " << b;
         }
     }
     EXPECT_TRUE(w.system.LastError().empty()) << w.system.LastError();
@@ -194,13 +174,13 @@ TEST(ExtremesTest, HugeStepVolumeStackIsSubdividedAndBounded) {
 // Beyond settings.maxVolumeSubsteps the step is clamped (not refused: the world still advances) and LastError says so,
 // naming dt; the state stays finite.
 TEST(ExtremesTest, StepNeedingTooManySubstepsIsClampedAndReported) {
-    Volumes w;
+    TestWorld w;
     w.system.settings.maxVolumeSubsteps = 4;
-    RigidbodyVolume& ball = w.Add(RigidbodyType::Sphere, vec3(), 1.0f, 0.5f);
+    RigidbodyVolume& ball = AddShape(&w, RigidbodyType::Sphere, vec3(), 1.0f, 0.5f);
     ball.gravity = vec3();
     ball.velocity = vec3(1000.0f, 0.0f, 0.0f);
-    w.Finish();
-    ASSERT_TRUE(w.Run(1.0f / 60.0f, 1));
+    w.Join();
+    ASSERT_TRUE(w.StepWhileFinite(1.0f / 60.0f, 1));
     EXPECT_EQ(w.system.LastVolumeSubsteps(), 4);
     EXPECT_NE(w.system.LastError().find("dt = 0.0166667 s"), std::string::npos) << w.system.LastError();
     EXPECT_NE(w.system.LastError().find("maxVolumeSubsteps = 4"), std::string::npos) << w.system.LastError();
@@ -208,13 +188,13 @@ TEST(ExtremesTest, StepNeedingTooManySubstepsIsClampedAndReported) {
 
 TEST(ExtremesTest, TinyStepVolumeSettlesOnTheGround) {
     // A box dropped 1 cm at dt = 1e-4 s comes to rest on the ground, finite, without sinking through it.
-    Volumes w;
+    TestWorld w;
     AddGround(&w, 0.0f);
-    w.Add(RigidbodyType::Box, vec3(0.0f, 0.51f, 0.0f), 1.0f, 0.5f);
-    w.Finish();
-    ASSERT_TRUE(w.Run(1e-4f, 5000));
-    EXPECT_GT(w.bodies[1].position.y, 0.4f);
-    EXPECT_LT(w.bodies[1].position.y, 0.52f);
+    AddShape(&w, RigidbodyType::Box, vec3(0.0f, 0.51f, 0.0f), 1.0f, 0.5f);
+    w.Join();
+    ASSERT_TRUE(w.StepWhileFinite(1e-4f, 5000));
+    EXPECT_GT(w.Volume(1).position.y, 0.4f);
+    EXPECT_LT(w.Volume(1).position.y, 0.52f);
 }
 
 // The book's velocityEpsilon (0.001 m/s) zeroes every velocity component below it AFTER gravity is added, so for
@@ -222,11 +202,11 @@ TEST(ExtremesTest, TinyStepVolumeSettlesOnTheGround) {
 // for ever. Away from their 0.03 s reference step the threshold and the retention are now converted to the step
 // (RigidbodyVolume::referenceStep).
 TEST(ExtremesTest, TinyStepVolumeReleasedFromRestFalls) {
-    Volumes w;
-    w.Add(RigidbodyType::Box, vec3(0.0f, 10.0f, 0.0f), 1.0f, 0.5f);
-    w.Finish();
-    ASSERT_TRUE(w.Run(1e-5f, 10000));  // 0.1 s
-    EXPECT_LT(w.bodies[0].position.y, 10.0f - 0.04f);
+    TestWorld w;
+    AddShape(&w, RigidbodyType::Box, vec3(0.0f, 10.0f, 0.0f), 1.0f, 0.5f);
+    w.Join();
+    ASSERT_TRUE(w.StepWhileFinite(1e-5f, 10000));  // 0.1 s
+    EXPECT_LT(w.Volume(0).position.y, 10.0f - 0.04f);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -234,16 +214,16 @@ TEST(ExtremesTest, TinyStepVolumeReleasedFromRestFalls) {
 
 TEST(ExtremesTest, MassRatioStacksStayFiniteAndBounded) {
     for (float topMass : {0.001f, 1000.0f}) {
-        Volumes w;
+        TestWorld w;
         AddGround(&w, 0.0f);
-        w.Add(RigidbodyType::Box, vec3(0.0f, 0.5f, 0.0f), 1.0f, 0.5f);
-        w.Add(RigidbodyType::Box, vec3(0.0f, 1.5f, 0.0f), topMass, 0.5f);
-        w.Finish();
-        ASSERT_TRUE(w.Run(1.0f / 60.0f, 300)) << "top mass " << topMass;
-        for (std::size_t i = 1; i < w.bodies.size(); ++i) {
-            EXPECT_LT(Magnitude(w.bodies[i].position), 20.0f) << "top mass " << topMass << " box " << i;
-            EXPECT_LT(Magnitude(w.bodies[i].velocity), 50.0f) << "top mass " << topMass << " box " << i;
-            EXPECT_GT(w.bodies[i].position.y, -1.0f) << "top mass " << topMass << " box " << i;
+        AddShape(&w, RigidbodyType::Box, vec3(0.0f, 0.5f, 0.0f), 1.0f, 0.5f);
+        AddShape(&w, RigidbodyType::Box, vec3(0.0f, 1.5f, 0.0f), topMass, 0.5f);
+        w.Join();
+        ASSERT_TRUE(w.StepWhileFinite(1.0f / 60.0f, 300)) << "top mass " << topMass;
+        for (std::size_t i = 1; i < w.VolumeCount(); ++i) {
+            EXPECT_LT(Magnitude(w.Volume(i).position), 20.0f) << "top mass " << topMass << " box " << i;
+            EXPECT_LT(Magnitude(w.Volume(i).velocity), 50.0f) << "top mass " << topMass << " box " << i;
+            EXPECT_GT(w.Volume(i).position.y, -1.0f) << "top mass " << topMass << " box " << i;
         }
     }
 }
@@ -252,20 +232,20 @@ TEST(ExtremesTest, MassRatioHeadOnCollisionConservesMomentum) {
     // No gravity, no damping, spheres 1 m apart closing at 2 m/s: whatever the ratio, the impulses are equal and
     // opposite, so total momentum is kept and nothing becomes non-finite.
     for (float ratio : {0.001f, 1000.0f}) {
-        Volumes w;
-        RigidbodyVolume& a = w.Add(RigidbodyType::Sphere, vec3(-1.0f, 0.0f, 0.0f), 1.0f, 0.5f);
-        RigidbodyVolume& b = w.Add(RigidbodyType::Sphere, vec3(0.05f, 0.0f, 0.0f), ratio, 0.5f);
+        TestWorld w;
+        RigidbodyVolume& a = AddShape(&w, RigidbodyType::Sphere, vec3(-1.0f, 0.0f, 0.0f), 1.0f, 0.5f);
+        RigidbodyVolume& b = AddShape(&w, RigidbodyType::Sphere, vec3(0.05f, 0.0f, 0.0f), ratio, 0.5f);
         for (RigidbodyVolume* s : {&a, &b}) {
             s->gravity = vec3();
             s->velocityRetention = 1.0f;
         }
         a.velocity = vec3(2.0f, 0.0f, 0.0f);
-        w.Finish();
-        const float p0 = w.bodies[0].mass * w.bodies[0].velocity.x;
-        ASSERT_TRUE(w.Run(1.0f / 60.0f, 120)) << "ratio " << ratio;
-        const float p1 = w.bodies[0].mass * w.bodies[0].velocity.x + w.bodies[1].mass * w.bodies[1].velocity.x;
+        w.Join();
+        const float p0 = w.Volume(0).mass * w.Volume(0).velocity.x;
+        ASSERT_TRUE(w.StepWhileFinite(1.0f / 60.0f, 120)) << "ratio " << ratio;
+        const float p1 = w.Volume(0).mass * w.Volume(0).velocity.x + w.Volume(1).mass * w.Volume(1).velocity.x;
         EXPECT_NEAR(p1, p0, 1e-3f * std::fmax(1.0f, ratio)) << "ratio " << ratio;
-        EXPECT_LT(w.bodies[0].velocity.x, w.bodies[1].velocity.x + 1e-4f) << "ratio " << ratio << ": still closing";
+        EXPECT_LT(w.Volume(0).velocity.x, w.Volume(1).velocity.x + 1e-4f) << "ratio " << ratio << ": still closing";
     }
 }
 
@@ -275,17 +255,16 @@ TEST(ExtremesTest, MassRatioHeadOnCollisionConservesMomentum) {
 TEST(ExtremesTest, ThousandMetresPerSecondParticleStopsAtAThinWall) {
     // A 0.2 m wall at x = 10 crossed in a single 1/60 s step (16.7 m): the segment test must catch it.
     for (Integrator integrator : kAllIntegrators) {
-        PhysicsSystem system;
-        system.settings.integrator = integrator;
-        system.AddConstraint(OBB(vec3(10.0f, 0.0f, 0.0f), vec3(0.1f, 5.0f, 5.0f)));
-        Particle p;
+        TestWorld w;
+        w.system.settings.integrator = integrator;
+        w.system.AddConstraint(OBB(vec3(10.0f, 0.0f, 0.0f), vec3(0.1f, 5.0f, 5.0f)));
+        Particle& p = w.AddParticle();
         p.SetPosition(vec3());
         p.SetGravity(vec3());
         p.SetBounce(0.5f);
         p.SetVelocity(vec3(1000.0f, 0.0f, 0.0f));
-        system.AddRigidbody(&p);
         for (int i = 0; i < 10; ++i) {
-            system.Update(1.0f / 60.0f);
+            w.Step(1.0f / 60.0f);
             ASSERT_TRUE(Finite(p)) << ToString(integrator);
             ASSERT_LT(p.GetPosition().x, 9.9f) << ToString(integrator) << " tunnelled at step " << i;
         }
@@ -296,16 +275,16 @@ TEST(ExtremesTest, ThousandMetresPerSecondParticleStopsAtAThinWall) {
 TEST(ExtremesTest, ThousandMetresPerSecondVolumesStayFinite) {
     // Volumes have no continuous collision: a sphere at 1,000 m/s may pass a box, but it must not gain speed
     // or produce NaN, and a direct hit on a deep box must not send it faster than it came.
-    Volumes w;
-    RigidbodyVolume& wall = w.Add(RigidbodyType::Box, vec3(10.0f, 0.0f, 0.0f), 0.0f, 0.5f);
+    TestWorld w;
+    RigidbodyVolume& wall = AddShape(&w, RigidbodyType::Box, vec3(10.0f, 0.0f, 0.0f), 0.0f, 0.5f);
     wall.box.size = vec3(20.0f, 5.0f, 5.0f);
-    RigidbodyVolume& ball = w.Add(RigidbodyType::Sphere, vec3(-11.0f, 0.0f, 0.0f), 1.0f, 0.5f);
+    RigidbodyVolume& ball = AddShape(&w, RigidbodyType::Sphere, vec3(-11.0f, 0.0f, 0.0f), 1.0f, 0.5f);
     ball.gravity = vec3();
     ball.velocityRetention = 1.0f;
     ball.velocity = vec3(1000.0f, 0.0f, 0.0f);
-    w.Finish();
-    ASSERT_TRUE(w.Run(1.0f / 60.0f, 30));
-    EXPECT_LE(Magnitude(w.bodies[1].velocity), 1000.0f * 1.001f);
+    w.Join();
+    ASSERT_TRUE(w.StepWhileFinite(1.0f / 60.0f, 30));
+    EXPECT_LE(Magnitude(w.Volume(1).velocity), 1000.0f * 1.001f);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -314,11 +293,12 @@ TEST(ExtremesTest, ThousandMetresPerSecondVolumesStayFinite) {
 TEST(ExtremesTest, ParticleRestsOnGroundTenKilometresOut) {
     const vec3 far(10000.0f, 10000.0f, -10000.0f);
     for (Integrator integrator : kAllIntegrators) {
-        ParticleOnGround w(integrator, far);
-        w.p.SetBounce(0.0f);
+        TestWorld w;
+        Particle& p = DropParticleOnGround(&w, integrator, far);
+        p.SetBounce(0.0f);
         for (int i = 0; i < 300; ++i) w.system.Update(1.0f / 60.0f);
-        ASSERT_TRUE(Finite(w.p)) << ToString(integrator);
-        const float height = w.p.GetPosition().y - far.y;
+        ASSERT_TRUE(Finite(p)) << ToString(integrator);
+        const float height = p.GetPosition().y - far.y;
         EXPECT_GE(height, -0.002f) << ToString(integrator) << ": below the ground";
         EXPECT_LT(height, 0.02f) << ToString(integrator) << ": not resting";
     }
@@ -326,12 +306,12 @@ TEST(ExtremesTest, ParticleRestsOnGroundTenKilometresOut) {
 
 TEST(ExtremesTest, VolumeRestsOnGroundTenKilometresOut) {
     const vec3 far(10000.0f, 10000.0f, -10000.0f);
-    Volumes w;
+    TestWorld w;
     AddGround(&w, far.y, far.x, far.z);
-    w.Add(RigidbodyType::Box, far + vec3(0.0f, 0.5f, 0.0f), 1.0f, 0.5f);
-    w.Finish();
-    ASSERT_TRUE(w.Run(1.0f / 60.0f, 300));
-    EXPECT_LT(Magnitude(w.bodies[1].position - (far + vec3(0.0f, 0.5f, 0.0f))), 0.1f);
+    AddShape(&w, RigidbodyType::Box, far + vec3(0.0f, 0.5f, 0.0f), 1.0f, 0.5f);
+    w.Join();
+    ASSERT_TRUE(w.StepWhileFinite(1.0f / 60.0f, 300));
+    EXPECT_LT(Magnitude(w.Volume(1).position - (far + vec3(0.0f, 0.5f, 0.0f))), 0.1f);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -342,15 +322,14 @@ TEST(ExtremesTest, VolumeRestsOnGroundTenKilometresOut) {
 // (ValidateVolume): each is refused with its value named, the world holds only the ground, and stepping it never
 // touches the refused bodies (the system keeps no pointer to them).
 TEST(ExtremesTest, ZeroSizeVolumesAreRefusedAndNeverStepped) {
-    Volumes w;
+    TestWorld w;
     AddGround(&w, 0.0f);
-    w.Add(RigidbodyType::Sphere, vec3(0.0f, 1.0f, 0.0f), 1.0f, 0.0f);
-    w.Add(RigidbodyType::Box, vec3(0.0f, 1.0f, 0.0f), 1.0f, 0.0f);  // coincident with the sphere
-    w.Add(RigidbodyType::Box, vec3(3.0f, 1.0f, 0.0f), 1.0f, 0.5f).box.size.y = 0.0f;
+    AddShape(&w, RigidbodyType::Sphere, vec3(0.0f, 1.0f, 0.0f), 1.0f, 0.0f);
+    AddShape(&w, RigidbodyType::Box, vec3(0.0f, 1.0f, 0.0f), 1.0f, 0.0f);  // coincident with the sphere
+    AddShape(&w, RigidbodyType::Box, vec3(3.0f, 1.0f, 0.0f), 1.0f, 0.5f).box.size.y = 0.0f;
     const char* named[] = {nullptr, "sphere.radius = 0", "box.size.x = 0", "box.size.y = 0"};
-    for (std::size_t i = 0; i < w.bodies.size(); ++i) {
-        w.bodies[i].SynchCollisionVolumes();
-        const bool added = w.system.AddRigidbody(&w.bodies[i]);
+    for (std::size_t i = 0; i < w.VolumeCount(); ++i) {
+        const bool added = w.JoinNext();
         if (named[i] == nullptr) {
             EXPECT_TRUE(added) << w.system.LastError();
         } else {
@@ -359,11 +338,11 @@ TEST(ExtremesTest, ZeroSizeVolumesAreRefusedAndNeverStepped) {
         }
     }
     ASSERT_EQ(w.system.Volumes().size(), 1u);
-    w.bodies[2].angVel = vec3(1.0f, 2.0f, 3.0f);  // spin with a zero inertia tensor
-    ASSERT_TRUE(w.Run(1.0f / 60.0f, 600));
-    for (std::size_t i = 1; i < w.bodies.size(); ++i) {
-        EXPECT_EQ(w.bodies[i].position.y, 1.0f) << "refused body " << i << " was stepped";
-        EXPECT_EQ(w.bodies[i].velocity.y, 0.0f) << "refused body " << i << " was stepped";
+    w.Volume(2).angVel = vec3(1.0f, 2.0f, 3.0f);  // spin with a zero inertia tensor
+    ASSERT_TRUE(w.StepWhileFinite(1.0f / 60.0f, 600));
+    for (std::size_t i = 1; i < w.VolumeCount(); ++i) {
+        EXPECT_EQ(w.Volume(i).position.y, 1.0f) << "refused body " << i << " was stepped";
+        EXPECT_EQ(w.Volume(i).velocity.y, 0.0f) << "refused body " << i << " was stepped";
     }
 }
 
@@ -373,19 +352,19 @@ TEST(ExtremesTest, ZeroSizeVolumesAreRefusedAndNeverStepped) {
 // the slab; with the book's PenetrationDepth every face axis then ties at the box's width and the normal can be
 // sideways, so they fell through for ever (ERRATA Chapter 15, N7).
 TEST(ExtremesTest, SmallVolumesLandOnTheGround) {
-    Volumes w;
+    TestWorld w;
     AddGround(&w, 0.0f);
-    w.Add(RigidbodyType::Sphere, vec3(0.0f, 1.0f, 0.0f), 1.0f, 1e-3f);
-    w.Add(RigidbodyType::Box, vec3(1.5f, 1.0f, 0.0f), 1.0f, 1e-2f);
-    w.Add(RigidbodyType::Box, vec3(3.0f, 1.0f, 0.0f), 1.0f, 0.5f).box.size.y = 1e-2f;
-    w.Add(RigidbodyType::Box, vec3(-1.5f, 1.0f, 0.0f), 1.0f, 1e-3f);
-    w.Add(RigidbodyType::Box, vec3(-3.0f, 1.0f, 0.0f), 1.0f, 3e-3f);
-    w.Finish();
+    AddShape(&w, RigidbodyType::Sphere, vec3(0.0f, 1.0f, 0.0f), 1.0f, 1e-3f);
+    AddShape(&w, RigidbodyType::Box, vec3(1.5f, 1.0f, 0.0f), 1.0f, 1e-2f);
+    AddShape(&w, RigidbodyType::Box, vec3(3.0f, 1.0f, 0.0f), 1.0f, 0.5f).box.size.y = 1e-2f;
+    AddShape(&w, RigidbodyType::Box, vec3(-1.5f, 1.0f, 0.0f), 1.0f, 1e-3f);
+    AddShape(&w, RigidbodyType::Box, vec3(-3.0f, 1.0f, 0.0f), 1.0f, 3e-3f);
+    w.Join();
     ASSERT_EQ(w.system.Volumes().size(), 6u) << w.system.LastError();
-    ASSERT_TRUE(w.Run(1.0f / 60.0f, 600));
-    for (std::size_t i = 1; i < w.bodies.size(); ++i) {
-        EXPECT_GT(w.bodies[i].position.y, -0.01f) << "body " << i << " sank into the ground";
-        EXPECT_LT(w.bodies[i].position.y, 0.05f) << "body " << i << " is not on the ground";
+    ASSERT_TRUE(w.StepWhileFinite(1.0f / 60.0f, 600));
+    for (std::size_t i = 1; i < w.VolumeCount(); ++i) {
+        EXPECT_GT(w.Volume(i).position.y, -0.01f) << "body " << i << " sank into the ground";
+        EXPECT_LT(w.Volume(i).position.y, 0.05f) << "body " << i << " is not on the ground";
     }
 }
 
@@ -451,19 +430,19 @@ TEST(ExtremesTest, DegenerateBodiesAreRefusedWithTheValueNamed) {
 // Sizes of 1e6 m (a box and a sphere of half size / radius 1e6 resting on a 1e6 m slab, and a unit box on a
 // 1e6 m box): accepted, finite, and on the ground after 2 s.
 TEST(ExtremesTest, MillionMetreVolumesStayFinite) {
-    Volumes w;
+    TestWorld w;
     AddGround(&w, 0.0f, 0.0f, 0.0f, 1e7f);
-    w.Add(RigidbodyType::Box, vec3(0.0f, 1e6f + 1.0f, 0.0f), 1.0f, 1e6f);
-    w.Add(RigidbodyType::Sphere, vec3(3e6f, 1e6f + 1.0f, 0.0f), 1.0f, 1e6f);
-    w.Add(RigidbodyType::Box, vec3(0.0f, 2e6f + 2.0f, 0.0f), 1.0f, 0.5f);  // a unit box on the huge one
-    w.Finish();
+    AddShape(&w, RigidbodyType::Box, vec3(0.0f, 1e6f + 1.0f, 0.0f), 1.0f, 1e6f);
+    AddShape(&w, RigidbodyType::Sphere, vec3(3e6f, 1e6f + 1.0f, 0.0f), 1.0f, 1e6f);
+    AddShape(&w, RigidbodyType::Box, vec3(0.0f, 2e6f + 2.0f, 0.0f), 1.0f, 0.5f);  // a unit box on the huge one
+    w.Join();
     EXPECT_EQ(w.system.Volumes().size(), 4u) << w.system.LastError();
-    ASSERT_TRUE(w.Run(1.0f / 60.0f, 120));
-    EXPECT_GT(w.bodies[1].position.y, 0.9e6f);
-    EXPECT_LT(w.bodies[1].position.y, 1.1e6f);
-    EXPECT_GT(w.bodies[2].position.y, 0.9e6f);
-    EXPECT_LT(w.bodies[2].position.y, 1.1e6f);
-    EXPECT_GT(w.bodies[3].position.y, 1.9e6f);
+    ASSERT_TRUE(w.StepWhileFinite(1.0f / 60.0f, 120));
+    EXPECT_GT(w.Volume(1).position.y, 0.9e6f);
+    EXPECT_LT(w.Volume(1).position.y, 1.1e6f);
+    EXPECT_GT(w.Volume(2).position.y, 0.9e6f);
+    EXPECT_LT(w.Volume(2).position.y, 1.1e6f);
+    EXPECT_GT(w.Volume(3).position.y, 1.9e6f);
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -517,16 +496,15 @@ TEST(ExtremesTest, BookStepOfTheChapter15ScenesIsUnchangedByTheGuards) {
 }
 
 TEST(ExtremesTest, ZeroSizeConstraintAndZeroMassParticleStayFinite) {
-    PhysicsSystem system;
-    system.AddConstraint(OBB(vec3(0.0f, 0.5f, 0.0f), vec3(0.0f, 0.0f, 0.0f)));  // a point box in the path
-    system.AddConstraint(OBB(vec3(0.0f, -1.0f, 0.0f), vec3(10.0f, 1.0f, 10.0f)));
-    Particle falling, massless;
+    TestWorld w;
+    w.system.AddConstraint(OBB(vec3(0.0f, 0.5f, 0.0f), vec3(0.0f, 0.0f, 0.0f)));  // a point box in the path
+    w.system.AddConstraint(OBB(vec3(0.0f, -1.0f, 0.0f), vec3(10.0f, 1.0f, 10.0f)));
+    Particle& falling = w.AddParticle();
+    Particle& massless = w.AddParticle();
     falling.SetPosition(vec3(0.0f, 2.0f, 0.0f));
     massless.SetMass(0.0f);
     massless.SetPosition(vec3(1.0f, 2.0f, 0.0f));
-    system.AddRigidbody(&falling);
-    system.AddRigidbody(&massless);
-    for (int i = 0; i < 120; ++i) system.Update(1.0f / 60.0f);
+    w.Step(1.0f / 60.0f, 120);
     ASSERT_TRUE(Finite(falling));
     ASSERT_TRUE(Finite(massless));
     EXPECT_GE(falling.GetPosition().y, 0.0f);
@@ -535,57 +513,62 @@ TEST(ExtremesTest, ZeroSizeConstraintAndZeroMassParticleStayFinite) {
 
 TEST(ExtremesTest, HugeGroundAndHugeBodiesStayFinite) {
     // A 1e6 m ground slab under a particle and a 1,000 m box; a 1,000 m sphere on it.
-    PhysicsSystem particles;
-    particles.AddConstraint(OBB(vec3(0.0f, -1.0f, 0.0f), vec3(1e6f, 1.0f, 1e6f)));
-    Particle p;
+    TestWorld particles;
+    particles.system.AddConstraint(OBB(vec3(0.0f, -1.0f, 0.0f), vec3(1e6f, 1.0f, 1e6f)));
+    Particle& p = particles.AddParticle();
     p.SetPosition(vec3(5e5f, 2.0f, -5e5f));
-    particles.AddRigidbody(&p);
-    for (int i = 0; i < 120; ++i) particles.Update(1.0f / 60.0f);
+    particles.Step(1.0f / 60.0f, 120);
     ASSERT_TRUE(Finite(p));
     EXPECT_GE(p.GetPosition().y, 0.0f);
 
-    Volumes w;
+    TestWorld w;
     AddGround(&w, 0.0f, 0.0f, 0.0f, 1e6f);
-    w.Add(RigidbodyType::Box, vec3(0.0f, 1000.0f, 0.0f), 1.0f, 1000.0f);
-    w.Add(RigidbodyType::Sphere, vec3(5000.0f, 1000.0f, 0.0f), 1.0f, 1000.0f);
-    w.Finish();
-    ASSERT_TRUE(w.Run(1.0f / 60.0f, 120));
-    EXPECT_GT(w.bodies[1].position.y, 900.0f);
-    EXPECT_GT(w.bodies[2].position.y, 900.0f);
+    AddShape(&w, RigidbodyType::Box, vec3(0.0f, 1000.0f, 0.0f), 1.0f, 1000.0f);
+    AddShape(&w, RigidbodyType::Sphere, vec3(5000.0f, 1000.0f, 0.0f), 1.0f, 1000.0f);
+    w.Join();
+    ASSERT_TRUE(w.StepWhileFinite(1.0f / 60.0f, 120));
+    EXPECT_GT(w.Volume(1).position.y, 900.0f);
+    EXPECT_GT(w.Volume(2).position.y, 900.0f);
 }
 
 // ---------------------------------------------------------------------------------------------------------
 // Inherently unstable: explicit Euler on a stiff spring must be detected and reported, not rendered as NaN.
 
-struct StiffSpring {
-    PhysicsSystem system;
-    Particle anchor, bob;
-    explicit StiffSpring(Integrator integrator, float stiffness) {
-        system.settings.integrator = integrator;
-        anchor.SetMass(0.0f);
-        anchor.SetPosition(vec3());
-        bob.SetPosition(vec3(1.1f, 0.0f, 0.0f));
-        for (Particle* p : {&anchor, &bob}) {
-            p->SetGravity(vec3());
-            p->SetVelocityRetention(1.0f);
-            system.AddRigidbody(p);
-        }
-        Spring s(-stiffness, 0.0f, 1.0f);
-        s.SetParticles(&anchor, &bob);
-        system.AddSpring(s);
-    }
+/// An anchor (mass 0) at the origin and a bob 1.1 m away on a spring of `stiffness` N/m and rest length 1 m, no
+/// gravity or damping, in a world of the given integrator.
+struct SpringBodies {
+    Particle& anchor;
+    Particle& bob;
 };
+SpringBodies AddStiffSpring(TestWorld* w, Integrator integrator, float stiffness) {
+    w->system.settings.integrator = integrator;
+    Particle& anchor = w->AddParticle();
+    Particle& bob = w->AddParticle();
+    anchor.SetMass(0.0f);
+    anchor.SetPosition(vec3());
+    bob.SetPosition(vec3(1.1f, 0.0f, 0.0f));
+    for (Particle* p : {&anchor, &bob}) {
+        p->SetGravity(vec3());
+        p->SetVelocityRetention(1.0f);
+    }
+    w->Join();
+    Spring s(-stiffness, 0.0f, 1.0f);
+    s.SetParticles(&anchor, &bob);
+    w->system.AddSpring(s);
+    return {anchor, bob};
+}
 
 TEST(ExtremesTest, ExplicitEulerOnAStiffSpringIsReportedBeforeAnyNaN) {
     // omega dt = 100 * 0.01 = 1: explicit Euler grows the energy by (1 + omega^2 dt^2) = 2x per step.
-    StiffSpring w(Integrator::ExplicitEuler, 1e4f);
+    TestWorld w;
+    const SpringBodies spring = AddStiffSpring(&w, Integrator::ExplicitEuler, 1e4f);
     StabilityMonitor monitor;
     monitor.Start(w.system);
     int steps = 0;
     while (steps < 1000 && monitor.Check(w.system)) {
         w.system.Update(0.01f);
         ++steps;
-        ASSERT_TRUE(Finite(w.bob)) << "non-finite state at step " << steps << " before the monitor fired";
+        ASSERT_TRUE(Finite(spring.bob)) << "non-finite state at step " << steps << " before the monitor fired";
     }
     ASSERT_FALSE(monitor.Stable()) << "explicit Euler at omega dt = 1 ran 1,000 steps unreported";
     const StabilityReport& r = monitor.Report();
@@ -600,7 +583,8 @@ TEST(ExtremesTest, SymplecticIntegratorsOnTheSameSpringStayStable) {
     // must stay quiet (no false alarm) over 1,000 steps.
     for (Integrator integrator :
          {Integrator::SemiImplicitEuler, Integrator::VelocityVerlet, Integrator::PositionVerlet}) {
-        StiffSpring w(integrator, 1e4f);
+        TestWorld w;
+        AddStiffSpring(&w, integrator, 1e4f);
         StabilityMonitor monitor;
         monitor.Start(w.system);
         for (int i = 0; i < 1000; ++i) {
@@ -614,7 +598,8 @@ TEST(ExtremesTest, EveryIntegratorBeyondItsLimitIsReported) {
     // omega dt = 1000 * 0.01 = 10, beyond every integrator's stability limit (2 for the symplectic ones, 2.83 for
     // RK4): each must be reported within 100 steps, with the state still finite when it is.
     for (Integrator integrator : kAllIntegrators) {
-        StiffSpring w(integrator, 1e6f);
+        TestWorld w;
+        AddStiffSpring(&w, integrator, 1e6f);
         StabilityMonitor monitor;
         monitor.Start(w.system);
         int steps = 0;

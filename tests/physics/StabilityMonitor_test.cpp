@@ -11,29 +11,33 @@
 #include "Physics/PhysicsSystem.h"
 #include "Physics/Spring.h"
 #include "tests/support/Approx.h"
+#include "tests/support/TestWorld.h"
 
 namespace {
 
-/// Anchor (mass 0) + 1 kg bob on the book's stiffest spring (k_book = -5 -> 166.7 N/m), no gravity or damping.
-struct StiffSpring {
-    Particle anchor, bob;
-    PhysicsSystem system;
-    explicit StiffSpring(Integrator integrator) {
-        for (Particle* p : {&anchor, &bob}) {
-            p->SetGravity(vec3());
-            p->SetVelocityRetention(1.0f);
-        }
-        anchor.SetMass(0.0f);
-        anchor.SetPosition(vec3(0, 3, 0));
-        bob.SetPosition(vec3(1.5f, 3, 0));
-        system.settings.integrator = integrator;
-        system.AddRigidbody(&anchor);
-        system.AddRigidbody(&bob);
-        Spring spring(FromBookSpringConstant(-5.0f), 0.0f, 1.0f);
-        spring.SetParticles(&anchor, &bob);
-        system.AddSpring(spring);
-    }
+/// Anchor (mass 0) + 1 kg bob on the book's stiffest spring (k_book = -5 -> 166.7 N/m), no gravity or damping, in a
+/// world (tests/support/TestWorld.h) of the given integrator.
+struct SpringBodies {
+    Particle& anchor;
+    Particle& bob;
 };
+SpringBodies AddStiffSpring(TestWorld* w, Integrator integrator) {
+    Particle& anchor = w->AddParticle();
+    Particle& bob = w->AddParticle();
+    for (Particle* p : {&anchor, &bob}) {
+        p->SetGravity(vec3());
+        p->SetVelocityRetention(1.0f);
+    }
+    anchor.SetMass(0.0f);
+    anchor.SetPosition(vec3(0, 3, 0));
+    bob.SetPosition(vec3(1.5f, 3, 0));
+    w->system.settings.integrator = integrator;
+    w->Join();
+    Spring spring(FromBookSpringConstant(-5.0f), 0.0f, 1.0f);
+    spring.SetParticles(&anchor, &bob);
+    w->system.AddSpring(spring);
+    return {anchor, bob};
+}
 
 }  // namespace
 
@@ -54,7 +58,8 @@ TEST(StabilityMonitor, MechanicalEnergyByHand) {
 }
 
 TEST(StabilityMonitor, CalmSystemStaysStable) {
-    StiffSpring s(Integrator::SemiImplicitEuler);  // omega*dt = 0.39 < 2: stable
+    TestWorld s;
+    AddStiffSpring(&s, Integrator::SemiImplicitEuler);  // omega*dt = 0.39 < 2: stable
     StabilityMonitor monitor;
     monitor.Start(s.system);
     for (int i = 0; i < 2000; ++i) {
@@ -67,7 +72,8 @@ TEST(StabilityMonitor, CalmSystemStaysStable) {
 // Explicit Euler multiplies this spring's energy by 1 + (omega dt)^2 = 1.15 per step at the book's dt:
 // the blow-up is reported as runaway energy, at a step, on the bob (particle 1).
 TEST(StabilityMonitor, StiffExplicitEulerBlowUpIsReportedWithStepAndBody) {
-    StiffSpring s(Integrator::ExplicitEuler);
+    TestWorld s;
+    const SpringBodies spring = AddStiffSpring(&s, Integrator::ExplicitEuler);
     StabilityMonitor monitor;
     monitor.Start(s.system);
     long long failedAt = 0;
@@ -82,7 +88,7 @@ TEST(StabilityMonitor, StiffExplicitEulerBlowUpIsReportedWithStepAndBody) {
     EXPECT_STREQ(r.kind, "particle");
     EXPECT_EQ(r.body, 1);
     EXPECT_EQ(r.cloth, -1);
-    EXPECT_TRUE(std::isfinite(s.bob.GetPosition().x));  // caught before it turned into inf/NaN
+    EXPECT_TRUE(std::isfinite(spring.bob.GetPosition().x));  // caught before it turned into inf/NaN
     EXPECT_NE(r.message.find("step " + std::to_string(failedAt)), std::string::npos) << r.message;
     EXPECT_NE(r.message.find("particle 1"), std::string::npos) << r.message;
     // The first report is kept.

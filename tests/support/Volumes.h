@@ -12,8 +12,10 @@ inline BodySpec GroundSlabSpec() { return GroundSpec(vec3(20.0f, 0.5f, 20.0f)); 
 /// GroundSlabSpec() built.
 inline RigidbodyVolume MakeGroundSlab() { return MakeBody(GroundSlabSpec()); }
 
-/// Position, velocity, angular velocity and orientation of every body as raw bytes, for bitwise comparison.
-inline std::vector<unsigned char> Snapshot(const std::vector<RigidbodyVolume>& bodies) {
+/// Position, velocity, angular velocity and orientation of every body as raw bytes, for bitwise comparison; any
+/// container of RigidbodyVolume.
+template <class Bodies>
+std::vector<unsigned char> Snapshot(const Bodies& bodies) {
     std::vector<unsigned char> out;
     for (const RigidbodyVolume& b : bodies) {
         const float f[13] = {b.position.x,    b.position.y,    b.position.z,   b.velocity.x, b.velocity.y,
