@@ -11,6 +11,7 @@
 
 #include "Physics/PhysicsSystem.h"
 #include "tests/support/Approx.h"
+#include "tests/support/TestWorld.h"
 
 namespace {
 const std::vector<OBB> kNoConstraints;
@@ -195,16 +196,17 @@ struct PendulumRun {
 PendulumRun RunPendulum(double theta0, float length, float dt, double periods,
                         Integrator integrator = Integrator::SemiImplicitEuler) {
     const vec3 pivotAt(0.0f, 2.0f, 0.0f);
-    PhysicsSystem world;
+    TestWorld w;
+    PhysicsSystem& world = w.system;
     world.settings.integrator = integrator;
-    Particle pivot, bob;
+    Particle& pivot = w.AddParticle();
+    Particle& bob = w.AddParticle();
     pivot.SetMass(0.0f);
     pivot.SetVelocityRetention(1.0f);
     pivot.SetPosition(pivotAt);
     bob.SetVelocityRetention(1.0f);
     bob.SetPosition(pivotAt + vec3(length * float(std::sin(theta0)), -length * float(std::cos(theta0)), 0.0f));
-    world.AddRigidbody(&pivot);
-    world.AddRigidbody(&bob);
+    w.Join();
     DistanceJoint joint;
     joint.Initialize(&pivot, &bob, length);
     world.AddRigidbody(&joint);

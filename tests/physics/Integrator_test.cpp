@@ -11,6 +11,7 @@
 #include "Physics/PhysicsSystem.h"
 #include "Physics/WorldSettings.h"
 #include "tests/support/Approx.h"
+#include "tests/support/TestWorld.h"
 
 namespace {
 
@@ -22,15 +23,13 @@ vec3 ProjectileAt(float t) { return vec3(kX0.x + kV0.x * t, kX0.y + kV0.y * t - 
 
 /// Position error after 2 s of free flight with `integrator`, friction 1 (the pure method), no constraints.
 double ProjectileError(Integrator integrator, float dt, vec3* finalVelocity = nullptr) {
-    Particle p;
+    TestWorld w;
+    Particle& p = w.AddParticle();
     p.SetVelocityRetention(1.0f);
     p.SetPosition(kX0);
     p.SetVelocity(kV0);
-    PhysicsSystem system;
-    system.settings.integrator = integrator;
-    system.AddRigidbody(&p);
-    const int steps = static_cast<int>(std::lround(2.0 / dt));
-    for (int i = 0; i < steps; ++i) system.Update(dt);
+    w.system.settings.integrator = integrator;
+    w.Step(dt, static_cast<int>(std::lround(2.0 / dt)));
     if (finalVelocity != nullptr) *finalVelocity = p.GetVelocity();
     const vec3 exact = ProjectileAt(2.0f);
     const vec3 x = p.GetPosition();
@@ -145,11 +144,10 @@ TEST(Integrator, OscillatorErrorShrinksAtEachIntegratorsOrder) {
 TEST(Integrator, FrictionGivesTheBooksTerminalSpeed) {
     for (Integrator i :
          {Integrator::ExplicitEuler, Integrator::SemiImplicitEuler, Integrator::VelocityVerlet, Integrator::RK4}) {
-        Particle p;
-        PhysicsSystem system;
-        system.settings.integrator = i;
-        system.AddRigidbody(&p);
-        for (int s = 0; s < 2000; ++s) system.Update(0.03f);
+        TestWorld w;
+        const Particle& p = w.AddParticle();
+        w.system.settings.integrator = i;
+        w.Step(0.03f, 2000);
         EXPECT_NEAR(-p.GetVelocity().y, 9.82f * 0.03f / 0.05f, 1e-3) << ToString(i);
         EXPECT_NEAR(-p.GetVelocity().y, 5.892f, 1e-3) << ToString(i);
     }
@@ -159,29 +157,27 @@ TEST(Integrator, FrictionGivesTheBooksTerminalSpeed) {
 // as far as a 1 kg one. Here the mass is divided out: every mass follows the closed form.
 TEST(Integrator, PositionVerletFallIsIndependentOfMass) {
     for (float mass : {1.0f, 3.0f, 0.25f}) {
-        Particle p;
+        TestWorld w;
+        Particle& p = w.AddParticle();
         p.SetVelocityRetention(1.0f);
         p.SetMass(mass);
         p.SetPosition(vec3(0, 100, 0));
-        PhysicsSystem system;
-        system.settings.integrator = Integrator::PositionVerlet;
-        system.AddRigidbody(&p);
-        for (int s = 0; s < 50; ++s) system.Update(0.02f);
+        w.system.settings.integrator = Integrator::PositionVerlet;
+        w.Step(0.02f, 50);
         EXPECT_NEAR(p.GetPosition().y, 100.0f - 0.5f * kG * 1.0f, 1e-3f) << "mass " << mass;
     }
 }
 
 TEST(Integrator, OldPositionIsTheStartOfTheStepForEveryIntegrator) {
     for (Integrator i : kAllIntegrators) {
-        Particle p;
+        TestWorld w;
+        Particle& p = w.AddParticle();
         p.SetPosition(vec3(1, 5, 2));
         p.SetVelocity(vec3(1, 0, 0));
-        PhysicsSystem system;
-        system.settings.integrator = i;
-        system.AddRigidbody(&p);
-        system.Update(0.03f);
+        w.system.settings.integrator = i;
+        w.Step(0.03f);
         const vec3 first = p.GetPosition();
-        system.Update(0.03f);
+        w.Step(0.03f);
         EXPECT_EQ(p.GetOldPosition().x, first.x) << ToString(i);
         EXPECT_EQ(p.GetOldPosition().y, first.y) << ToString(i);
         EXPECT_EQ(p.GetOldPosition().z, first.z) << ToString(i);

@@ -9,6 +9,7 @@
 
 #include "Physics/PhysicsSystem.h"
 #include "tests/support/Approx.h"
+#include "tests/support/TestWorld.h"
 
 namespace {
 
@@ -190,13 +191,14 @@ namespace {
 /// A particle (bounce 0.5) dropped 1 m onto a ground box whose top is y = 0.15, stepped `seconds` at `dt` with
 /// `contact`; returns the largest |vy| over the last second and, in *lastY, its final height.
 float RestingHop(ParticleContact contact, float dt, float seconds, float* lastY) {
-    PhysicsSystem world;
+    TestWorld w;
+    PhysicsSystem& world = w.system;
     world.settings.particleContact = contact;
     world.AddConstraint(OBB(vec3(0.0f, 0.0f, 0.0f), vec3(10.0f, 0.15f, 10.0f)));
-    Particle p;
+    Particle& p = w.AddParticle();
     p.SetPosition(vec3(0.0f, 1.15f, 0.0f));
     p.SetBounce(0.5f);
-    world.AddRigidbody(&p);
+    w.Join();
     const int steps = int(std::lround(seconds / dt));
     float hop = 0.0f;
     for (int i = 0; i < steps; ++i) {

@@ -11,6 +11,7 @@
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
 #include "tests/support/Approx.h"
+#include "tests/support/TestWorld.h"
 #include "tests/support/Volumes.h"
 
 namespace {
@@ -35,11 +36,11 @@ float BestUpAlignment(const RigidbodyVolume& b) {
 // The per-contact solver without accumulated impulses (erratum 5.2-15, the book's design) lets it wander
 // sideways a little: less than 5 cm in 10 s (measured 2 cm).
 TEST(PhysicsSystemVolumes, RestingBoxDoesNotSink) {
-    PhysicsSystem system;
-    RigidbodyVolume ground = MakeGroundSlab();
-    RigidbodyVolume box = MakeBox(vec3(0, 1, 0), vec3(1, 1, 1), 1.0f);
-    system.AddRigidbody(&ground);
-    system.AddRigidbody(&box);
+    TestWorld w;
+    w.Add(GroundSlabSpec());
+    RigidbodyVolume& box = w.Add(MakeBox(vec3(0, 1, 0), vec3(1, 1, 1), 1.0f));
+    ASSERT_TRUE(w.Join());
+    PhysicsSystem& system = w.system;
     float lowest = 1.0f, lastSpeed = 0.0f, maxLateSpeed = 0.0f;
     for (int i = 0; i < 600; ++i) {
         system.Update(kDt);
@@ -58,14 +59,12 @@ TEST(PhysicsSystemVolumes, RestingBoxDoesNotSink) {
 // diagonal vertical, plus a small tilt so it falls one way) comes to rest on a face: one local axis vertical
 // within 1 degree, centre at y = 1 within slack + margin, slow.
 TEST(PhysicsSystemVolumes, BoxDroppedOnACornerSettlesOnAFace) {
-    PhysicsSystem system;
-    RigidbodyVolume ground = MakeGroundSlab();
-    RigidbodyVolume box = MakeBox(vec3(0, 2.8f, 0), vec3(1, 1, 1), 1.0f);
+    TestWorld w;
+    w.Add(GroundSlabSpec());
+    RigidbodyVolume& box = w.Add(MakeBox(vec3(0, 2.8f, 0), vec3(1, 1, 1), 1.0f));
     box.SetEulerOrientation(vec3(DEG2RAD(45.0f), 0.05f, DEG2RAD(35.26f)));
     ASSERT_LT(BestUpAlignment(box), 0.75f);  // starts far from any face-down pose
-    system.AddRigidbody(&ground);
-    system.AddRigidbody(&box);
-    for (int i = 0; i < 600; ++i) system.Update(kDt);
+    w.Step(kDt, 600);
     std::printf("corner drop: up alignment %.6f, y %.4f, speed %.4f\n", BestUpAlignment(box), box.position.y,
                 Magnitude(box.velocity));
     EXPECT_GT(BestUpAlignment(box), std::cos(DEG2RAD(1.0f)));
@@ -86,17 +85,16 @@ struct InclineRun {
 /// Damping is switched off (the book's 0.98 per step is a strong drag: terminal speed a dt / 0.02).
 InclineRun RunIncline(float degrees, float seconds) {
     const float theta = DEG2RAD(degrees);
-    PhysicsSystem system;
-    RigidbodyVolume slab = MakeBox(vec3(0, -0.5f, 0), vec3(40, 0.5f, 5), 0.0f);
+    TestWorld w;
+    RigidbodyVolume& slab = w.Add(MakeBox(vec3(0, -0.5f, 0), vec3(40, 0.5f, 5), 0.0f));
     slab.SetEulerOrientation(vec3(0, 0, theta));
     const vec3 up = GetRow(ToMat3(slab.orientation), 1);
     const vec3 down = -GetRow(ToMat3(slab.orientation), 0) * (std::sin(theta) > 0 ? 1.0f : -1.0f);
-    RigidbodyVolume box = MakeBox(slab.position + up * 1.5f, vec3(1, 1, 1), 1.0f);
+    RigidbodyVolume& box = w.Add(MakeBox(slab.position + up * 1.5f, vec3(1, 1, 1), 1.0f));
     box.orientation = slab.orientation;
     box.velocityRetention = 1.0f;
-    box.SynchCollisionVolumes();
-    system.AddRigidbody(&slab);
-    system.AddRigidbody(&box);
+    w.Join();
+    PhysicsSystem& system = w.system;
     const vec3 start = box.position;
     const int steps = static_cast<int>(seconds / kDt + 0.5f);
     // Fit s(t) = s0 + v0 t + a t^2 / 2 by the second difference over the second half of the run.
@@ -170,16 +168,16 @@ TEST(PhysicsSystemVolumes, NoteN1_BookStageOrderCreepsDownAnIncline) {
 // Head-on sphere collision through the whole step (geometry manifold, impulses, projection), gravity and
 // damping off: linear momentum is conserved to 1e-5 relative and the relative speed after is e times before.
 TEST(PhysicsSystemVolumes, SphereCollisionThroughTheSystemConservesMomentum) {
-    PhysicsSystem system;
-    RigidbodyVolume a = MakeSphere(vec3(0, 0, 0), 1.0f, 1.0f);
-    RigidbodyVolume b = MakeSphere(vec3(2.05f, 0, 0), 1.0f, 2.0f);
+    TestWorld w;
+    RigidbodyVolume& a = w.Add(MakeSphere(vec3(0, 0, 0), 1.0f, 1.0f));
+    RigidbodyVolume& b = w.Add(MakeSphere(vec3(2.05f, 0, 0), 1.0f, 2.0f));
     for (RigidbodyVolume* s : {&a, &b}) {
         s->gravity = vec3();
         s->velocityRetention = 1.0f;
     }
     a.velocity = vec3(6, 0, 0);
-    system.AddRigidbody(&a);
-    system.AddRigidbody(&b);
+    ASSERT_TRUE(w.Join());
+    PhysicsSystem& system = w.system;
     const vec3 p0 = a.velocity * a.mass + b.velocity * b.mass;
     const float vrel0 = b.velocity.x - a.velocity.x;
     int hits = 0;
@@ -198,14 +196,13 @@ TEST(PhysicsSystemVolumes, SphereCollisionThroughTheSystemConservesMomentum) {
 // directly, as the book does, the rise would be (0.1 - slack) * 0.45.) A box rises by the same amount.
 TEST(PhysicsSystemVolumes, LinearProjectionUsesFullPenetrationForEveryShape) {
     for (RigidbodyType kind : {RigidbodyType::Sphere, RigidbodyType::Box}) {
-        PhysicsSystem system;
-        RigidbodyVolume ground = MakeGroundSlab();
-        RigidbodyVolume body = kind == RigidbodyType::Sphere ? MakeSphere(vec3(0, 0.8f, 0), 1.0f, 1.0f)
-                                                             : MakeBox(vec3(0, 0.8f, 0), vec3(1, 1, 1), 1.0f);
+        TestWorld w;
+        w.Add(GroundSlabSpec());
+        RigidbodyVolume& body = w.Add(kind == RigidbodyType::Sphere ? MakeSphere(vec3(0, 0.8f, 0), 1.0f, 1.0f)
+                                                                    : MakeBox(vec3(0, 0.8f, 0), vec3(1, 1, 1), 1.0f));
         body.gravity = vec3();
-        system.AddRigidbody(&ground);
-        system.AddRigidbody(&body);
-        system.Update(kDt);
+        PhysicsSystem& system = w.system;
+        w.Step(kDt);
         EXPECT_NEAR(body.position.y, 0.8f + (0.2f - 0.01f) * 0.45f, 1e-4f) << static_cast<int>(kind);
         body.position.y = 0.8f;
         body.SynchCollisionVolumes();
@@ -216,12 +213,11 @@ TEST(PhysicsSystemVolumes, LinearProjectionUsesFullPenetrationForEveryShape) {
 }
 
 TEST(PhysicsSystemVolumes, StaticPairsAreNeverTested) {
-    PhysicsSystem system;
-    RigidbodyVolume a = MakeBox(vec3(), vec3(1, 1, 1), 0.0f);
-    RigidbodyVolume b = MakeBox(vec3(0.5f, 0, 0), vec3(1, 1, 1), 0.0f);
-    system.AddRigidbody(&a);
-    system.AddRigidbody(&b);
-    system.Update(kDt);
+    TestWorld w;
+    w.Add(MakeBox(vec3(), vec3(1, 1, 1), 0.0f));
+    RigidbodyVolume& b = w.Add(MakeBox(vec3(0.5f, 0, 0), vec3(1, 1, 1), 0.0f));
+    PhysicsSystem& system = w.system;
+    w.Step(kDt);
     EXPECT_EQ(system.CollisionCount(), 0u);
     b.mass = 1.0f;
     b.gravity = vec3();
@@ -234,18 +230,18 @@ namespace {
 std::vector<unsigned char> RunStack(int steps, bool guards = true, float dt = kDt) {
     std::vector<BodySpec> specs = WithGround(GroundSlabSpec(), TiltedColumn(4));
     specs.push_back(SphereSpec(vec3(0.5f, 12, 0.2f)));
-    std::vector<RigidbodyVolume> bodies = MakeBodies(specs);
-    PhysicsSystem system;
-    if (!guards) {
-        system.settings.maxVolumeSubsteps = 1;
-        for (RigidbodyVolume& b : bodies) b.referenceStep = 0.0f;
+    TestWorld w;
+    for (const BodySpec& spec : specs) {
+        RigidbodyVolume& b = w.Add(spec);
+        if (!guards) b.referenceStep = 0.0f;
     }
-    for (RigidbodyVolume& b : bodies) system.AddRigidbody(&b);
+    if (!guards) w.system.settings.maxVolumeSubsteps = 1;
+    w.Join();
     for (int i = 0; i < steps; ++i) {
-        system.Update(dt);
-        EXPECT_EQ(system.LastVolumeSubsteps(), 1);
+        w.Step(dt);
+        EXPECT_EQ(w.system.LastVolumeSubsteps(), 1);
     }
-    return Snapshot(bodies);
+    return w.Snapshot();
 }
 
 }  // namespace
