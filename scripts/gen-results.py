@@ -126,6 +126,30 @@ def is_book_model(row):
     return row["solver"] == "book" and row["iterations"] == "5" and row["projection"] == "1"
 
 
+def solver_setting(row):
+    """A contact-solver run's column: the solver with its passes, or the soft solver with its substeps."""
+    if row["solver"] == "soft":
+        return "soft, %s substeps" % row["soft_substeps"]
+    return "%s, %s passes" % (row["solver"], row["iterations"])
+
+
+def stack_map_table(rows):
+    """stack-mass-ratio: per top-box mass ratio and solver setting, the largest step keeping the tower within 1 cm."""
+    rows = [r for r in rows if r["problem"] == "stack-mass-ratio" and r["projection"] in ("1", "-")]
+    columns = sorted(set(solver_setting(r) for r in rows))
+    ratios = sorted(set(r["param"] for r in rows), key=float)
+    best = {}
+    for r in rows:
+        if r["stable"] == "1" and r["error"] not in ("inf", "nan") and float(r["error"]) <= 0.01:
+            key = (r["param"], solver_setting(r))
+            best[key] = max(best.get(key, 0.0), float(r["dt"]))
+    out = ["| top mass ratio | " + " | ".join(columns) + " |", "|---" * (len(columns) + 1) + "|"]
+    for ratio in ratios:
+        cells = [("%g s" % best[(ratio, c)]) if (ratio, c) in best else "none" for c in columns]
+        out.append("| %s | %s |" % (ratio, " | ".join(cells)))
+    return out
+
+
 def demo_step_table(rows):
     """Per problem at the demos' 0.03 s: the book's model's error and the best model at that step."""
     groups = {}
@@ -228,6 +252,10 @@ SECTIONS = [
     ("For this error, use this setting", "docs/sweep/results.csv",
      "`psb-sweep` ([sweep.md](sweep.md)): per reference problem and target error, the cheapest stable run of the "
      "sweep whose error is at or below the target. Cost is CPU seconds per simulated second.", cheapest_table),
+    ("Stacks with a heavy or light top", "docs/sweep/results.csv",
+     "`psb-sweep`, problem `stack-mass-ratio` ([sweep.md](sweep.md), \"Stack stability map\"): five cubes, the top one "
+     "r times the others' mass, 5 s; the largest step at which the tower stays within 1 cm (book and accumulated "
+     "solvers with linear projection), \"none\" when no step of the sweep does.", stack_map_table),
     ("What the demos' step costs in accuracy", "docs/sweep/demo-dt0.03.csv",
      "`psb-sweep --dt 0.03` ([sweep.md](sweep.md), \"What each demo chose\"): every problem at the demos' 0.03 s "
      "step, with the book's model (semi-implicit Euler; the book's solver at 5 passes with projection) and the most "
