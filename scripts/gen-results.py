@@ -374,7 +374,7 @@ def stamp(args):
         sys.exit("gen-results: --stamp %s: no such file" % args.stamp)
     commit = subprocess.run(["git", "-C", os.path.dirname(os.path.abspath(args.stamp)), "rev-parse", "--short",
                              "HEAD"], capture_output=True, text=True).stdout.strip()
-    meta = [("date", args.date or datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M UTC")),
+    meta = [("date", args.date or datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")),
             ("machine", args.machine or machine_name()), ("commit", commit or "unknown"), ("command", args.command)]
     if args.note:
         meta.append(("note", args.note))

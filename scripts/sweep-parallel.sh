@@ -52,3 +52,6 @@ echo "sweep-parallel: $shards shards, $jobs at a time${login:+ on the hosts of $
 seq 1 "$shards" | parallel "${where[@]}" --halt now,fail=1 --line-buffer "$cmd --shard {}/$shards" >"$work/shards.csv" ||
   { echo "sweep-parallel: a shard failed; nothing written" >&2; exit 1; }
 bash "$root/scripts/sweep-merge.sh" "$out" "$work/shards.csv"
+# Date, machine and commit of the measurement beside the CSV (OUT.meta), for docs/results.md (scripts/gen-results.py).
+python3 "$root/scripts/gen-results.py" --stamp "$out" --command "scripts/sweep-parallel.sh --jobs $jobs${login:+ --sshloginfile $login} --out $(basename -- "$out")" ||
+  echo "sweep-parallel: could not write $out.meta" >&2

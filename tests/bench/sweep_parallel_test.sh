@@ -26,6 +26,8 @@ bash "$root/scripts/sweep-parallel.sh" --jobs 2 --shards 3 --sweep "$sweep" --ou
   2>"$dir/par.err" || fail "sweep-parallel.sh exited $?: $(tail -n 3 "$dir/par.err")"
 strip "$dir/par.csv" >"$dir/par.rows"
 cmp -s "$dir/one.rows" "$dir/par.rows" || fail "GNU parallel's merged CSV differs from the unsharded run"
+grep -q '^date: ' "$dir/par.csv.meta" && grep -q '^machine: ' "$dir/par.csv.meta" ||
+  fail "sweep-parallel.sh wrote no par.csv.meta with the date and machine (scripts/gen-results.py --stamp)"
 
 echo "2/:" >"$dir/hosts"
 bash "$root/scripts/sweep-parallel.sh" --sshloginfile "$dir/hosts" --shards 2 --sweep "$sweep" --out "$dir/ssh.csv" \
