@@ -8,6 +8,7 @@
 
 #include "Demos/Scenes/WorldBuilder.h"
 #include "Physics/PhysicsSystem.h"
+#include "tests/support/TestWorld.h"
 #include "tests/support/Volumes.h"
 
 namespace {
@@ -27,7 +28,7 @@ BodySpec Ground() { return GroundSpec(vec3(50.0f, 0.5f, 50.0f)); }
 // A cube resting on the ground: one pair, its four bottom corners at y = 0 under the cube, the normal along y,
 // and as depth the deepest of the solver's own separations (a fraction of a millimetre).
 TEST(SoftCollisions, RestingCubeGivesItsFourCorners) {
-    RigidWorld world(WithGround(Ground(), {Cube(vec3(0.3f, 0.5f, -0.2f))}));
+    TestWorld world(WithGround(Ground(), {Cube(vec3(0.3f, 0.5f, -0.2f))}));
     world.system.settings.contactSolver = ContactSolver::Soft;
     for (int i = 0; i < 60; ++i) world.system.Update(kDt);
     ASSERT_EQ(world.system.CollisionCount(), 1u);
@@ -54,7 +55,7 @@ TEST(SoftCollisions, RestingCubeGivesItsFourCorners) {
 // contact of f = twice contactHertz: 2.5 mm at 5 Hz, 0.008 mm at 90 Hz).
 TEST(SoftCollisions, DepthFollowsContactStiffness) {
     auto depth = [](float hertz) {
-        RigidWorld world(WithGround(Ground(), {Cube(vec3(0.0f, 0.5f, 0.0f))}));
+        TestWorld world(WithGround(Ground(), {Cube(vec3(0.0f, 0.5f, 0.0f))}));
         world.system.settings.contactSolver = ContactSolver::Soft;
         world.system.settings.soft.contactHertz = hertz;
         for (int i = 0; i < 120; ++i) world.system.Update(kDt);
@@ -70,7 +71,7 @@ TEST(SoftCollisions, DepthFollowsContactStiffness) {
 // Speculative points (within the margin, not yet touching) are the solver's but not collisions; a falling cube
 // shows none until it lands. Switching solvers refills the list from the solver in effect.
 TEST(SoftCollisions, SpeculativePointsAreNotCollisions) {
-    RigidWorld world(WithGround(Ground(), {Cube(vec3(0.0f, 0.51f, 0.0f))}));
+    TestWorld world(WithGround(Ground(), {Cube(vec3(0.0f, 0.51f, 0.0f))}));
     world.system.settings.contactSolver = ContactSolver::Soft;
     world.system.Update(kDt);
     EXPECT_GT(world.system.SoftSolver().ContactCount(), 0u) << "1 cm apart: inside the speculative margin";

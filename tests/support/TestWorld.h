@@ -19,6 +19,11 @@
 class TestWorld {
 public:
     TestWorld() = default;
+    /// One volume per spec, joined at once (what Demos/Scenes/WorldBuilder.h's RigidWorld builds, for tests).
+    explicit TestWorld(const std::vector<BodySpec>& specs) {
+        AddAll(specs);
+        Join();
+    }
     TestWorld(const TestWorld&) = delete;
     TestWorld& operator=(const TestWorld&) = delete;
 
@@ -78,6 +83,9 @@ public:
     std::size_t VolumeCount() const { return volumes.size(); }
     RigidbodyVolume& Volume(std::size_t i) { return volumes[i]; }
     const RigidbodyVolume& Volume(std::size_t i) const { return volumes[i]; }
+    /// Volume(i), under RigidWorld's name.
+    RigidbodyVolume& Body(std::size_t i) { return volumes[i]; }
+    const RigidbodyVolume& Body(std::size_t i) const { return volumes[i]; }
     /// The particles in the order added.
     Particle& ParticleAt(std::size_t i) { return particles[i]; }
     /// Volume i's position when it joined the system, m.
@@ -91,6 +99,13 @@ public:
         for (const Particle& p : particles)
             if (!IsFinite(p.GetPosition()) || !IsFinite(p.GetVelocity())) return false;
         return true;
+    }
+    /// Largest distance of a dynamic volume (mass > 0) from its start, m; 0 if there is none.
+    float MaxDisplacement() const {
+        float d = 0.0f;
+        for (std::size_t i = 0; i < volumeStart.size(); ++i)
+            if (volumes[i].mass > 0.0f) d = std::fmax(d, Magnitude(volumes[i].position - volumeStart[i]));
+        return d;
     }
     /// Largest horizontal (x, z) distance of a dynamic volume (mass > 0) from its start, m.
     float MaxHorizontalDrift() const {

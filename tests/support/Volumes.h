@@ -1,6 +1,7 @@
 #pragma once
 // The test ground and a bitwise state snapshot shared by the rigid-body test files; bodies and scenes come from
-// the one world builder, Demos/Scenes/WorldBuilder.h (MakeBox, MakeSphere, Tower, Pyramid, RigidWorld).
+// the one world builder, Demos/Scenes/WorldBuilder.h (MakeBox, MakeSphere, Tower, Pyramid), and a test's world is
+// tests/support/TestWorld.h.
 
 #include <vector>
 
