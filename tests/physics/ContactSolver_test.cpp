@@ -224,7 +224,7 @@ TEST(ContactSolver, ABoxSlidingAtAYawStopsWhereCoulombSays) {
         box.velocity = v;
         box.friction = mu;
         box.restitution = 0.0f;
-        RigidWorld w({ground, box});
+        TestWorld w({ground, box});
         w.system.settings.contactSolver = solver;
         for (int i = 0; i < 1200; ++i) w.system.Update(0.001f);
         const float travel = speed * speed / (2.0f * mu * g);

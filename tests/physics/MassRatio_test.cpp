@@ -14,6 +14,7 @@
 #include "Demos/Scenes/SceneFile.h"
 #include "Demos/Scenes/WorldBuilder.h"
 #include "Physics/PhysicsSystem.h"
+#include "tests/support/TestWorld.h"
 
 namespace {
 
@@ -41,7 +42,7 @@ std::vector<BodySpec> LoadBoxes(const std::string& name) {
 }
 
 Outcome Run(const std::vector<BodySpec>& specs, float dt) {
-    RigidWorld world(specs);
+    TestWorld world(specs);
     world.system.settings.contactSolver = ContactSolver::Soft;
     Outcome out;
     const int steps = static_cast<int>(std::lround(10.0f / dt));

@@ -10,6 +10,7 @@
 #include "Demos/Scenes/WorldBuilder.h"
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
+#include "tests/support/TestWorld.h"
 #include "tests/support/Volumes.h"
 
 namespace {
@@ -23,7 +24,7 @@ void UseSleep(PhysicsSystem& system, bool on) {
 }
 
 /// Steps until every body in [first, last] sleeps; returns the steps taken, or -1 after maxSteps.
-int StepUntilAsleep(RigidWorld& w, std::size_t first, std::size_t last, int maxSteps) {
+int StepUntilAsleep(TestWorld& w, std::size_t first, std::size_t last, int maxSteps) {
     for (int step = 1; step <= maxSteps; ++step) {
         w.system.Update(kDt);
         bool all = true;
@@ -51,7 +52,7 @@ std::vector<BodySpec> TowerAt(int height, float x, float z, float lift = 0.0f) {
 TEST(Sleep, DroppedBoxSleepsAndStopsMoving) {
     for (ContactSolver solver : {ContactSolver::Accumulated, ContactSolver::Book}) {
         SCOPED_TRACE(ToString(solver));
-        RigidWorld w(DroppedBox(2.0f));
+        TestWorld w(DroppedBox(2.0f));
         UseSleep(w.system, true);
         w.system.settings.contactSolver = solver;
         const int steps = StepUntilAsleep(w, 1, 1, 600);
@@ -74,7 +75,7 @@ TEST(Sleep, DroppedBoxSleepsAndStopsMoving) {
 // Sleep off (the default): the same box never sleeps, its sleep time stays 0 and its ground contact is tested every
 // step. Turning sleep off while it sleeps wakes it.
 TEST(Sleep, OffNeverSleeps) {
-    RigidWorld w(DroppedBox(2.0f));
+    TestWorld w(DroppedBox(2.0f));
     UseSleep(w.system, false);
     for (int i = 0; i < 600; ++i) {
         w.system.Update(kDt);
@@ -96,7 +97,7 @@ TEST(Sleep, OffNeverSleeps) {
 // to the same column with sleep off (the hooks only skip sleeping bodies and their pairs).
 TEST(Sleep, OnWithoutSleepersIsBitIdenticalToOff) {
     std::vector<BodySpec> specs = WithGround(GroundSlabSpec(), TiltedColumn(6));
-    RigidWorld off(specs), on(specs);
+    TestWorld off(specs), on(specs);
     UseSleep(off.system, false);
     UseSleep(on.system, true);
     on.system.settings.sleep.timeToSleep = 1e9f;
@@ -114,7 +115,7 @@ TEST(Sleep, OnWithoutSleepersIsBitIdenticalToOff) {
 TEST(Sleep, DroppedBoxWakesWholeStack) {
     std::vector<BodySpec> specs = WithGround(GroundSlabSpec(), Tower(3, BoxSpec(vec3())));  // tops at y = 6
     specs.push_back(BoxSpec(vec3(0.0f, 9.0f, 0.0f)));                                       // bottom at y = 8
-    RigidWorld w(specs);
+    TestWorld w(specs);
     w.Body(4).gravity = vec3();
     UseSleep(w.system, true);
     ASSERT_GT(StepUntilAsleep(w, 1, 4, 900), 0);
@@ -142,7 +143,7 @@ TEST(Sleep, DroppedBoxWakesWholeStack) {
 // A velocity change or an impulse through the body's API on one box of a sleeping tower wakes the whole tower.
 TEST(Sleep, ImpulseWakesWholeIsland) {
     for (int kind = 0; kind < 2; ++kind) {
-        RigidWorld w(WithGround(GroundSlabSpec(), Tower(3, BoxSpec(vec3()))));
+        TestWorld w(WithGround(GroundSlabSpec(), Tower(3, BoxSpec(vec3()))));
         UseSleep(w.system, true);
         ASSERT_GT(StepUntilAsleep(w, 1, 3, 900), 0);
         RigidbodyVolume& top = w.Body(3);
@@ -162,7 +163,7 @@ TEST(Sleep, ImpulseWakesWholeIsland) {
 // A changed mass, or a position set from outside, wakes the body: lifted 0.5 m, the box falls back.
 TEST(Sleep, ChangedPropertyWakes) {
     {
-        RigidWorld w(DroppedBox(0.0f));
+        TestWorld w(DroppedBox(0.0f));
         UseSleep(w.system, true);
         ASSERT_GT(StepUntilAsleep(w, 1, 1, 600), 0);
         w.Body(1).mass = 2.0f;
@@ -170,7 +171,7 @@ TEST(Sleep, ChangedPropertyWakes) {
         EXPECT_FALSE(w.Body(1).IsSleeping());
     }
     {
-        RigidWorld w(DroppedBox(0.0f));
+        TestWorld w(DroppedBox(0.0f));
         UseSleep(w.system, true);
         ASSERT_GT(StepUntilAsleep(w, 1, 1, 600), 0);
         RigidbodyVolume& box = w.Body(1);
@@ -189,7 +190,7 @@ TEST(Sleep, SeparatePilesSleepIndependently) {
     std::vector<BodySpec> specs{GroundSlabSpec()};
     for (const BodySpec& s : TowerAt(2, -10.0f, 0.0f)) specs.push_back(s);       // 1, 2: resting
     for (const BodySpec& s : TowerAt(2, 10.0f, 0.0f, 3.0f)) specs.push_back(s);  // 3, 4: dropped 3 m
-    RigidWorld w(specs);
+    TestWorld w(specs);
     UseSleep(w.system, true);
     w.system.Update(kDt);
     const int first = StepUntilAsleep(w, 1, 2, 900);
@@ -214,7 +215,7 @@ TEST(Sleep, SeparatePilesSleepIndependently) {
 // Determinism: a 60-box pile (broadphase path) with sleep on, run twice, is bit-identical, sleepers included.
 TEST(Sleep, Deterministic) {
     auto run = [](std::vector<unsigned char>* state, std::vector<bool>* sleeping) {
-        RigidWorld w(BoxpileScene(60));
+        TestWorld w(BoxpileScene(60));
         UseSleep(w.system, true);
         for (int i = 0; i < 600; ++i) w.system.Update(kDt);
         *state = Snapshot(w.Bodies());
@@ -233,7 +234,7 @@ TEST(Sleep, Deterministic) {
 
 // timeToSleep 0 still needs slow bodies: a falling box does not sleep in the air, and sleeps once it rests.
 TEST(Sleep, ZeroTimeToSleepNeedsSlowBodies) {
-    RigidWorld w(DroppedBox(2.0f));
+    TestWorld w(DroppedBox(2.0f));
     UseSleep(w.system, true);
     w.system.settings.sleep.timeToSleep = 0.0f;
     for (int i = 0; i < 20; ++i) {
@@ -250,7 +251,7 @@ TEST(Sleep, ZeroTimeToSleepNeedsSlowBodies) {
 TEST(Sleep, SoftStepSleepsAndWakesByIsland) {
     std::vector<BodySpec> specs = WithGround(GroundSlabSpec(), Tower(3, BoxSpec(vec3())));  // tops at y = 6
     specs.push_back(BoxSpec(vec3(0.0f, 9.0f, 0.0f)));                                       // bottom at y = 8
-    RigidWorld w(specs);
+    TestWorld w(specs);
     w.Body(4).gravity = vec3();
     UseSleep(w.system, true);
     w.system.settings.contactSolver = ContactSolver::Soft;
@@ -288,7 +289,7 @@ TEST(Sleep, SoftStepSleepsAndWakesByIsland) {
 TEST(Sleep, SoftStepNearbyTowersSleep) {
     std::vector<BodySpec> specs = WithGround(GroundSlabSpec(), TowerAt(3, 0.0f, 0.0f));
     for (const BodySpec& s : TowerAt(1, 2.003f, 0.0f)) specs.push_back(s);
-    RigidWorld w(specs);
+    TestWorld w(specs);
     UseSleep(w.system, true);
     w.system.settings.contactSolver = ContactSolver::Soft;
     ASSERT_GT(StepUntilAsleep(w, 1, 4, 900), 0) << "the two towers kept each other awake";

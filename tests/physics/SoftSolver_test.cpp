@@ -12,6 +12,7 @@
 
 #include "Demos/Scenes/WorldBuilder.h"
 #include "Physics/PhysicsSystem.h"
+#include "tests/support/TestWorld.h"
 #include "tests/support/Volumes.h"
 
 namespace {
@@ -53,7 +54,7 @@ TEST(SoftSolver, SoftnessFormula) {
 // warmStartFactor 0 the contacts are still matched but inherit nothing; after ClearRigidbodys (and the cube added
 // back) the first step starts cold and the next one warm again.
 TEST(SoftSolver, RestingContactsWarmStartById) {
-    RigidWorld world(WithGround(Ground(), {Cube(vec3(0.0f, 0.5f, 0.0f))}));
+    TestWorld world(WithGround(Ground(), {Cube(vec3(0.0f, 0.5f, 0.0f))}));
     world.system.settings.contactSolver = ContactSolver::Soft;
     for (int i = 0; i < 60; ++i) world.system.Update(kDt);
     const SoftContactSolver& solver = world.system.SoftSolver();
@@ -88,7 +89,7 @@ TEST(SoftSolver, SlidingContactsStayMatched) {
     BodySpec cube = Cube(vec3(0.0f, 0.5f, 0.0f));
     cube.friction = 0.0f;
     cube.velocity = vec3(5.0f, 0.0f, 0.0f);
-    RigidWorld world(WithGround(Ground(), {cube}));
+    TestWorld world(WithGround(Ground(), {cube}));
     world.system.settings.contactSolver = ContactSolver::Soft;
     for (int i = 0; i < 30; ++i) {
         world.system.Update(kDt);
@@ -109,7 +110,7 @@ TEST(SoftSolver, RestitutionThreshold) {
         ball.velocityRetention = 1.0f;
         ball.velocityEpsilon = 0.0f;
         ball.velocity = vec3(0.0f, -speed, 0.0f);
-        RigidWorld world(WithGround(Ground(1.0f), {ball}));
+        TestWorld world(WithGround(Ground(1.0f), {ball}));
         world.system.settings.contactSolver = ContactSolver::Soft;
         for (int i = 0; i < 2; ++i) world.system.Update(kDt);
         const float vy = world.Body(1).velocity.y;
@@ -128,7 +129,7 @@ TEST(SoftSolver, RestitutionThreshold) {
 TEST(SoftSolver, FlatBounceDoesNotSpin) {
     BodySpec cube = Cube(vec3(0.0f, 2.5f, 0.0f));
     cube.restitution = 0.5f;
-    RigidWorld world(WithGround(Ground(1.0f), {cube}));
+    TestWorld world(WithGround(Ground(1.0f), {cube}));
     world.system.settings.contactSolver = ContactSolver::Soft;
     const RigidbodyVolume& b = world.Body(1);
     bool bounced = false;
@@ -151,7 +152,7 @@ TEST(SoftSolver, FlatBounceDoesNotSpin) {
 TEST(SoftSolver, SpeculativeContactStopsFastBodyWithoutPopping) {
     BodySpec cube = Cube(vec3(0.0f, 0.515f, 0.0f));
     cube.velocity = vec3(0.0f, -5.0f, 0.0f);
-    RigidWorld world(WithGround(Ground(), {cube}));
+    TestWorld world(WithGround(Ground(), {cube}));
     world.system.settings.contactSolver = ContactSolver::Soft;
     world.system.Update(kDt);
     const RigidbodyVolume& b = world.Body(1);
@@ -169,7 +170,7 @@ TEST(SoftSolver, SpeculativeContactStopsFastBodyWithoutPopping) {
 TEST(SoftSolver, Deterministic) {
     std::vector<unsigned char> first;
     for (int run = 0; run < 2; ++run) {
-        RigidWorld world(TiltedColumn(12));
+        TestWorld world(TiltedColumn(12));
         world.system.settings.contactSolver = ContactSolver::Soft;
         std::size_t contacts = 0;
         for (int i = 0; i < 240; ++i) {
@@ -189,7 +190,7 @@ TEST(SoftSolver, Deterministic) {
 // Switching a world between solvers: after book steps the soft step starts cold (nothing inherited from a step
 // that was not the one before) and the book's collision list is replaced by the soft step's touching pair.
 TEST(SoftSolver, StartsColdAfterAnotherSolver) {
-    RigidWorld world(WithGround(Ground(), {Cube(vec3(0.0f, 0.5f, 0.0f))}));
+    TestWorld world(WithGround(Ground(), {Cube(vec3(0.0f, 0.5f, 0.0f))}));
     world.system.settings.contactSolver = ContactSolver::Soft;
     for (int i = 0; i < 10; ++i) world.system.Update(kDt);
     world.system.settings.contactSolver = ContactSolver::Book;
@@ -211,7 +212,7 @@ TEST(SoftSolver, FreeBoxKeepsItsAngularMomentum) {
     spec.velocityRetention = 1.0f;
     spec.velocityEpsilon = 0.0f;
     spec.angularVelocity = vec3(2.0f, 1.0f, 0.5f);
-    RigidWorld world({spec});
+    TestWorld world({spec});
     world.Body(0).gravity = vec3();
     world.system.settings.contactSolver = ContactSolver::Soft;
     const RigidbodyVolume& box = world.Bodies()[0];
@@ -231,7 +232,7 @@ TEST(SoftSolver, FreeCubeTurnsByTheExponentialMap) {
         BodySpec spec = Cube(vec3(0.0f, 5.0f, 0.0f));
         spec.angularVelocity = w;
         spec.eulerRadians = vec3(0.3f, -0.2f, 0.1f);
-        RigidWorld world({spec});
+        TestWorld world({spec});
         world.Body(0).gravity = vec3();
         world.system.settings.contactSolver = ContactSolver::Soft;
         const RigidbodyVolume& cube = world.Bodies()[0];
@@ -248,7 +249,7 @@ TEST(SoftSolver, FreeCubeTurnsByTheExponentialMap) {
 namespace {
 
 /// Every body's pose and velocities, bit for bit.
-std::vector<float> StateOf(const RigidWorld& world) {
+std::vector<float> StateOf(const TestWorld& world) {
     std::vector<float> out;
     for (const RigidbodyVolume& b : world.Bodies())
         for (float f : {b.position.x, b.position.y, b.position.z, b.orientation.x, b.orientation.y, b.orientation.z,
@@ -263,7 +264,7 @@ std::vector<float> StateOf(const RigidWorld& world) {
 // exactly one lane of one batch or in the overflow; no moving body is in two pairs of one colour (static ones may be);
 // lanes and batches follow the pair order within a colour, and colours come in increasing order.
 TEST(SoftSolverGraph, ColoursShareNoMovingBody) {
-    RigidWorld world(PeerPyramid(12));
+    TestWorld world(PeerPyramid(12));
     world.system.settings.contactSolver = ContactSolver::Soft;
     for (int i = 0; i < 60; ++i) world.system.Update(kDt);
     const SoftContactSolver& solver = world.system.SoftSolver();
@@ -304,7 +305,7 @@ TEST(SoftSolverGraph, ColoursShareNoMovingBody) {
 // kBlockPairs pairs; blocks come in order of their first body; within a block, colours increase and a colour keeps
 // the pair order.
 TEST(SoftSolverGraph, BlocksHoldWholeIslandsInOrder) {
-    RigidWorld world(PeerBoxpile(1000));
+    TestWorld world(PeerBoxpile(1000));
     world.system.settings.contactSolver = ContactSolver::Soft;
     world.system.settings.sleep.enabled = false;
     for (int i = 0; i < 60; ++i) world.system.Update(kDt);
@@ -375,8 +376,8 @@ TEST(SoftSolverGraph, OneBatchInPairOrderEqualsTheOneByOneSolveBitForBit) {
                                    Cube(vec3(2.0f, 0.5f, 0.0f)), Cube(vec3(6.0f, 0.5f, 0.0f))};
     cubes[2].velocity = vec3(3.0f, 0.0f, 1.0f);
     cubes[3].angularVelocity = vec3(0.0f, 4.0f, 0.0f);
-    RigidWorld wide(WithGround(Ground(), cubes)), single(WithGround(Ground(), cubes));
-    for (RigidWorld* w : {&wide, &single}) w->system.settings.contactSolver = ContactSolver::Soft;
+    TestWorld wide(WithGround(Ground(), cubes)), single(WithGround(Ground(), cubes));
+    for (TestWorld* w : {&wide, &single}) w->system.settings.contactSolver = ContactSolver::Soft;
     single.system.settings.softGraphColouring = false;
     for (int i = 0; i < 120; ++i) {
         wide.system.Update(kDt);
@@ -392,7 +393,7 @@ TEST(SoftSolverGraph, OneBatchInPairOrderEqualsTheOneByOneSolveBitForBit) {
 // each colour is a batch of four and a lone fifth pair, which is solved one by one with the overflow instead of
 // as a batch of four lanes with three empty. The column still stands.
 TEST(SoftSolverGraph, ALonePairIsSolvedOneByOne) {
-    RigidWorld world(PeerTower(10));
+    TestWorld world(PeerTower(10));
     world.system.settings.contactSolver = ContactSolver::Soft;
     for (int i = 0; i < 120; ++i) world.system.Update(kDt);
     const SoftContactSolver& solver = world.system.SoftSolver();
@@ -419,7 +420,7 @@ TEST(SoftSolverGraph, PairsBeyondTheColoursAreSolvedOneByOne) {
         BodySpec cube = Cube(vec3(-3.0f + 1.2f * static_cast<float>(i % 6), 1.0f, -3.0f + 1.2f * (i / 6)));
         bodies.push_back(cube);
     }
-    RigidWorld world(WithGround(Ground(), bodies));
+    TestWorld world(WithGround(Ground(), bodies));
     world.system.settings.contactSolver = ContactSolver::Soft;
     for (int i = 0; i < 120; ++i) world.system.Update(kDt);
     const SoftContactSolver& solver = world.system.SoftSolver();

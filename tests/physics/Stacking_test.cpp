@@ -13,6 +13,7 @@
 #include "Demos/Scenes/WorldBuilder.h"
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
+#include "tests/support/TestWorld.h"
 
 namespace {
 
@@ -21,7 +22,7 @@ constexpr int kSteps = 600;
 constexpr float kPi = 3.14159265f;
 
 /// Steps `world` with the soft solver; returns the deepest penetration the solver saw over the last 60 steps.
-float RunSoft(RigidWorld* world, int steps = kSteps) {
+float RunSoft(TestWorld* world, int steps = kSteps) {
     world->system.settings.contactSolver = ContactSolver::Soft;
     float deepest = 0.0f;
     for (int i = 0; i < steps; ++i) {
@@ -32,7 +33,7 @@ float RunSoft(RigidWorld* world, int steps = kSteps) {
 }
 
 /// Largest overlap (m) between neighbours of a column (body 0 the ground, then the column bottom up, half 0.5).
-float ColumnOverlap(const RigidWorld& world) {
+float ColumnOverlap(const TestWorld& world) {
     float overlap = 0.0f, below = 0.0f;  // top of the body below: the ground's is y = 0
     for (std::size_t i = 1; i < world.Bodies().size(); ++i) {
         const float bottom = world.Body(i).position.y - 0.5f;
@@ -48,7 +49,7 @@ float ColumnOverlap(const RigidWorld& world) {
 // tilt stiffness does not grow with the load above it, so the column is a stack of springs that buckles when they
 // are too soft: at the earlier defaults (4 substeps, 30 Hz, damping ratio 10) it tipped over (24.7 m).
 TEST(Stacking, TowerOf20Stands) {
-    RigidWorld world(WithGround(PeerGround(), Tower(20, PeerCube())));
+    TestWorld world(WithGround(PeerGround(), Tower(20, PeerCube())));
     RunSoft(&world);
     std::printf("soft tower 20: largest displacement %.4f m\n", world.MaxDisplacement());
     EXPECT_LT(world.MaxDisplacement(), 0.05f);
@@ -57,7 +58,7 @@ TEST(Stacking, TowerOf20Stands) {
 // 2-D pyramids with 0.05 m gaps stand: no cube ends more than 0.05 m from its start. Base 20 (210 cubes) stands
 // (measured 0.0053 m).
 TEST(Stacking, PyramidOf20Stands) {
-    RigidWorld world(WithGround(PeerGround(), Pyramid(20, PeerCube(), 0.05f)));
+    TestWorld world(WithGround(PeerGround(), Pyramid(20, PeerCube(), 0.05f)));
     RunSoft(&world);
     std::printf("soft pyramid 20: largest displacement %.4f m\n", world.MaxDisplacement());
     EXPECT_LT(world.MaxDisplacement(), 0.05f);
@@ -65,7 +66,7 @@ TEST(Stacking, PyramidOf20Stands) {
 
 // Base 30 (465 cubes): measured 0.010 m (0.133 m at the earlier defaults).
 TEST(Stacking, PyramidOf30Stands) {
-    RigidWorld world(WithGround(PeerGround(), Pyramid(30, PeerCube(), 0.05f)));
+    TestWorld world(WithGround(PeerGround(), Pyramid(30, PeerCube(), 0.05f)));
     RunSoft(&world);
     std::printf("soft pyramid 30: largest displacement %.4f m\n", world.MaxDisplacement());
     EXPECT_LT(world.MaxDisplacement(), 0.05f);
@@ -78,7 +79,7 @@ namespace {
 void ExpectMassRatioStackStands(const float (&m)[3]) {
     std::vector<BodySpec> column = Tower(3, PeerCube());
     for (int i = 0; i < 3; ++i) column[i].mass = m[i];
-    RigidWorld world(WithGround(PeerGround(), column));
+    TestWorld world(WithGround(PeerGround(), column));
     const float deepest = RunSoft(&world);
     std::printf("soft stack %g/%g/%g kg: overlap %.4f m, solver's deepest %.4f m, displacement %.4f m\n", m[0], m[1],
                 m[2], ColumnOverlap(world), deepest, world.MaxDisplacement());
@@ -115,7 +116,7 @@ TEST(Stacking, SphereBounceApexes) {
         ball.restitution = e;
         ball.velocityRetention = 1.0f;
         ball.velocityEpsilon = 0.0f;
-        RigidWorld world(WithGround(ground, {ball}));
+        TestWorld world(WithGround(ground, {ball}));
         world.system.settings.contactSolver = ContactSolver::Soft;
         world.system.settings.soft.substeps = 16;
         const RigidbodyVolume& b = world.Body(1);
@@ -157,7 +158,7 @@ TEST(Stacking, BoxOnIncline) {
         RigidbodyVolume probe = MakeBody(slab);
         const vec3 n(probe.box.orientation[1][0], probe.box.orientation[1][1], probe.box.orientation[1][2]);
         cube.position = n * 1.0f;  // resting on the slab's top face (0.5 + 0.5 along the normal)
-        RigidWorld world(WithGround(slab, {cube}));
+        TestWorld world(WithGround(slab, {cube}));
         world.system.settings.contactSolver = ContactSolver::Soft;
         const RigidbodyVolume& b = world.Body(1);
         const vec3 gravity = b.gravity;

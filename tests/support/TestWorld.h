@@ -83,6 +83,8 @@ public:
     std::size_t VolumeCount() const { return volumes.size(); }
     RigidbodyVolume& Volume(std::size_t i) { return volumes[i]; }
     const RigidbodyVolume& Volume(std::size_t i) const { return volumes[i]; }
+    /// Every volume in the order added (the names below are RigidWorld's, so a test reads the same with either).
+    const std::deque<RigidbodyVolume>& Bodies() const { return volumes; }
     /// Volume(i), under RigidWorld's name.
     RigidbodyVolume& Body(std::size_t i) { return volumes[i]; }
     const RigidbodyVolume& Body(std::size_t i) const { return volumes[i]; }
