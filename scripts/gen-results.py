@@ -228,6 +228,10 @@ def convergence_table(rows):
     return out
 
 
+def stands(row):
+    return row["stands"].strip().lower() in ("1", "yes", "true")
+
+
 def peers_table(rows):
     out = ["| scene | bodies | sleep | threads | engine | CPU ms per step | over Bullet | largest displacement (m) | "
            "stands |", "|---|---|---|---|---|---|---|---|---|"]
@@ -238,7 +242,7 @@ def peers_table(rows):
                 cells.append(g3(float(r[k])))
             except ValueError:
                 cells.append(r[k])
-        cells.append({"1": "yes", "0": "no"}.get(r["stands"], r["stands"]))
+        cells.append("yes" if stands(r) else "no" if r["stands"].strip().lower() in ("0", "no", "false") else r["stands"])
         out.append("| " + " | ".join(cells) + " |")
     return out
 
@@ -307,12 +311,12 @@ def optional_rows(root, rel, peers=None):
 
 
 def headline_peers(rows):
-    ours = [r for r in rows if r["engine"] != "bullet"]
+    ours = [r for r in rows if not r["engine"].lower().startswith("bullet")]
     if not ours:
         return "not measured yet ([hand-measured figures](docs/peers.md))"
     ratios = [float(r["ratio_to_bullet"]) for r in ours]
-    stands = sum(1 for r in ours if r["stands"] == "1")
-    return "%s–%s× Bullet's CPU per step; %d of %d runs stand" % (g3(min(ratios)), g3(max(ratios)), stands, len(ours))
+    standing = sum(1 for r in ours if stands(r))
+    return "%s–%s× Bullet's CPU per step; %d of %d runs stand" % (g3(min(ratios)), g3(max(ratios)), standing, len(ours))
 
 
 def headline(root, peers=None):
