@@ -25,7 +25,7 @@ long long SummarySteps(const std::string& err) {
     return start == std::string::npos ? -1 : std::atoll(err.c_str() + start + 2);
 }
 
-DtRun Run(const std::string& id, const std::vector<std::string>& step, const std::string& path) {
+DtRun RunAt(const std::string& id, const std::vector<std::string>& step, const std::string& path) {
     std::vector<std::string> args = {"--demo", id, "--frames", "30", "--no-ui", "--state", path};
     args.insert(args.end(), step.begin(), step.end());
     const SandboxResult r = RunSandboxExe(args);
@@ -40,15 +40,17 @@ TEST(OneDt, DtAndSetDtAreOneSettingThatChangesEveryDemosPhysics) {
     ASSERT_EQ(ids.size(), 9u);
     const std::string dir = ScratchDir("one_dt");
     for (const std::string& id : ids) {
-        const DtRun base = Run(id, {}, dir + "/" + id + "-default.csv");
-        const DtRun dt = Run(id, {"--dt", "0.02"}, dir + "/" + id + "-dt.csv");
-        const DtRun set = Run(id, {"--set", "dt=0.02"}, dir + "/" + id + "-set.csv");
+        const DtRun base = RunAt(id, {}, dir + "/" + id + "-default.csv");
+        const DtRun dt = RunAt(id, {"--dt", "0.02"}, dir + "/" + id + "-dt.csv");
+        const DtRun set = RunAt(id, {"--set", "dt=0.02"}, dir + "/" + id + "-set.csv");
         ASSERT_GT(base.steps, 0) << id;
         EXPECT_EQ(dt.csv, set.csv) << id << ": --dt 0.02 and --set dt=0.02 differ";
         EXPECT_EQ(dt.steps, set.steps) << id;
         EXPECT_NE(dt.steps, base.steps) << id << ": --dt 0.02 ran the default step";
         const bool hasBodies = base.csv.find('\n') + 1 < base.csv.size();  // more than the header
-        if (hasBodies) EXPECT_NE(dt.csv, base.csv) << id << ": --dt 0.02 wrote the default state";
+        if (hasBodies) {
+            EXPECT_NE(dt.csv, base.csv) << id << ": --dt 0.02 wrote the default state";
+        }
     }
 }
 
