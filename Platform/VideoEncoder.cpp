@@ -18,6 +18,7 @@
 #include "Platform/Files/AtomicFile.h"
 #include "Platform/Files/TempRegistry.h"
 #include "Platform/GifJoin.h"
+#include "Platform/GifPalette.h"
 #include "Platform/PngCodec.h"
 #include "Platform/VideoFileCheck.h"
 #include "Platform/Yuv420.h"
@@ -241,22 +242,6 @@ bool VideoEncoder::KeepGifFrame(int i) const {
     return std::ceil((i + 0.5) * ratio) > std::ceil((i - 0.5) * ratio);
 }
 
-int VideoEncoder::GifIndexOf(std::uint32_t rgb) {
-    // Open addressing in 512 slots for at most 256 colours: a slot holds the colour with bit 24 set and its index
-    // (the order in which the part met it) in bits 25-32; 0 is empty.
-    const std::uint64_t key = rgb | 0x1000000u;
-    for (std::uint32_t h = (rgb * 2654435761u) >> 23;; h = (h + 1) & 511u) {
-        const std::uint64_t slot = gifColourSlots[h];
-        if (slot == 0) {
-            if (gifColours.size() == 256) return -1;
-            gifColourSlots[h] = key | std::uint64_t(gifColours.size()) << 25;
-            gifColours.push_back(rgb);
-            return int(gifColours.size() - 1);
-        }
-        if ((slot & 0x1FFFFFFu) == key) return int(slot >> 25);
-    }
-}
-
 bool VideoEncoder::WriteGifFrame(const Image& frame, std::string* error) {
     if (!KeepGifFrame(frames)) return ++frames, true;
     if (gifPartFrameCount > 0) {  // the current part is the last started; full by the plan, else by the size
@@ -277,7 +262,7 @@ bool VideoEncoder::WriteGifFrame(const Image& frame, std::string* error) {
         const std::uint8_t* q = gifPartFrameCount > 0 ? gifPrevious.rgb.data() : nullptr;
         for (std::size_t i = 0; i < pixels && !gifColoursOverflow; ++i, p += 3) {
             if (q && p[0] == q[3 * i] && p[1] == q[3 * i + 1] && p[2] == q[3 * i + 2]) continue;
-            const int index = GifIndexOf(std::uint32_t(p[0]) << 16 | std::uint32_t(p[1]) << 8 | p[2]);
+            const int index = gifPalette.IndexOf(std::uint32_t(p[0]) << 16 | std::uint32_t(p[1]) << 8 | p[2]);
             if (index < 0) {
                 gifColoursOverflow = true;  // more than 256: this part is stored as BGRA from here on
                 if (!ExpandGifPartToBgra(error)) return false;
@@ -333,7 +318,7 @@ bool VideoEncoder::ExpandGifPartToBgra(std::string* error) {
     gifBgra.resize(4 * pixels);
     for (std::size_t k = 0; k < count; ++k) {
         for (std::size_t i = 0; i < pixels; ++i) {
-            const std::uint32_t c = gifColours[indices[pixels * k + i]];
+            const std::uint32_t c = gifPalette.Colours()[indices[pixels * k + i]];
             std::uint8_t* out = &gifBgra[4 * i];
             out[0] = std::uint8_t(c), out[1] = std::uint8_t(c >> 8), out[2] = std::uint8_t(c >> 16), out[3] = 255;
         }
@@ -357,11 +342,7 @@ bool VideoEncoder::BeginGifPart(std::string* error) {
     }
     // The colours go on from part to part (the parts then share one palette, and the joined GIF needs no local
     // tables), until a part meets more than 256: the next part starts afresh.
-    if (gifColoursOverflow || gifParts.empty()) {
-        gifColours.clear();
-        std::fill(std::begin(gifColourSlots), std::end(gifColourSlots), std::uint64_t(0));
-        ++gifEpoch;
-    }
+    if (gifColoursOverflow || gifParts.empty()) gifPalette.StartRun();
     gifColoursOverflow = false;
     // The part's ffmpeg starts now, so that its start-up (about 0.07 s of loading libraries) overlaps the
     // part's frames: it first reads a small image on its standard input (unused otherwise), which EndGifPart
@@ -413,12 +394,8 @@ bool VideoEncoder::EndGifPart(std::string* error) {
         // for them, and each pixel's index is its exact colour, which is what paletteuse would map it to. Every
         // frame gets the palette (ffmpeg's pal8 entries: 0xAARRGGBB, little-endian; unused entries transparent,
         // which the GIF encoder uses for the pixels a frame leaves unchanged).
-        std::uint8_t palette[1024] = {};
-        for (std::size_t k = 0; k < gifColours.size(); ++k) {
-            const std::uint32_t c = gifColours[k];
-            palette[4 * k] = std::uint8_t(c), palette[4 * k + 1] = std::uint8_t(c >> 8);
-            palette[4 * k + 2] = std::uint8_t(c >> 16), palette[4 * k + 3] = 255;
-        }
+        std::uint8_t palette[1024];
+        Pal8Palette(gifPalette.Colours(), palette);
         for (int f = 0; written && f < gifPartFrameCount; ++f)
             written = pwrite(fd, palette, sizeof palette, off_t(frameBytes * std::size_t(f) + pixels)) ==
                       ssize_t(sizeof palette);
@@ -432,8 +409,8 @@ bool VideoEncoder::EndGifPart(std::string* error) {
     const int gateFd = part.startFd;
     part.startFd = -1;
     if (!gifColoursOverflow) {
-        part.epoch = gifEpoch;
-        part.colours = gifColours;
+        part.epoch = gifPalette.Run();
+        part.colours = gifPalette.Colours();
         // Release the waiting ffmpeg: a 1x1 image on its standard input.
         std::vector<std::uint8_t> png;
         if (!EncodePng(Image(1, 1), PngOptions{}, &png, error)) return close(gateFd), false;
@@ -501,13 +478,7 @@ bool VideoEncoder::JoinGifParts(std::string* error) {
         if (epoch < 0) continue;
         const std::vector<std::uint32_t>* last = &gifParts[k].colours;
         for (std::size_t j = k + 1; j < gifParts.size() && gifParts[j].epoch == epoch; ++j) last = &gifParts[j].colours;
-        std::vector<std::uint8_t> table(768, 0);  // 256 entries: the colours by index, then black
-        for (std::size_t c = 0; c < last->size(); ++c) {
-            const std::uint32_t rgb = (*last)[c];
-            table[3 * c] = std::uint8_t(rgb >> 16), table[3 * c + 1] = std::uint8_t(rgb >> 8);
-            table[3 * c + 2] = std::uint8_t(rgb);
-        }
-        if (!ReplaceGlobalColourTable(&bytes[k], table, error)) {
+        if (!ReplaceGlobalColourTable(&bytes[k], GifColourTable(*last), error)) {
             *error = "GIF part " + std::to_string(k + 1) + " from ffmpeg: " + *error;
             return false;
         }

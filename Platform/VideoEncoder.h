@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "Platform/GifPalette.h"
 #include "Platform/Image.h"
 
 class VideoEncoder {
@@ -67,8 +68,6 @@ private:
     bool Wait(const std::string& output, std::string* error);
     /// GIF: records one frame (after resampling) into the current part, ending the part when it is full.
     bool WriteGifFrame(const Image& frame, std::string* error);
-    /// GIF: the index of a colour (0xRRGGBB) in the part's palette, adding it; -1 if the part already has 256.
-    int GifIndexOf(std::uint32_t rgb);
     /// GIF: rewrites the current part's frames so far, stored as indices, as BGRA (the part has met its 257th
     /// colour).
     bool ExpandGifPartToBgra(std::string* error);
@@ -114,22 +113,19 @@ private:
     std::string path, tempPath, logPath;
     int tempId = -1, logId = -1;  // TempRegistry slots of the temporaries
     std::vector<GifPart> gifParts;
-    TempFile gifRaw[3];                      // GIF: the parts' raw frames, in turn
-    int gifRawIndex = -1, gifRawFd = -1;     // GIF: the current part's raw file, open while its frames arrive
-    int gifPartFrames = 0;                   // GIF: frames per part as set (0: by frame size)
-    int gifPartSize = 0;                     // GIF: frames per part of this recording
-    int expectedFrames = 0;                  // frames the caller said it will send (0: unknown)
-    std::vector<int> gifPlan;                // GIF: part sizes planned from expectedFrames (then gifPartSize)
-    int gifPartFrameCount = 0;               // GIF: frames in the current part so far
-    std::vector<std::uint8_t> yuv;           // MP4, WebM: a frame as sent to ffmpeg
-    Image gifPrevious;                       // GIF: the last frame recorded (to find the pixels that changed)
-    std::vector<std::uint8_t> gifBgra;       // GIF: a frame as stored in the raw file
-    std::vector<std::uint32_t> gifColours;   // GIF: the current part's colours, 0xRRGGBB
-    std::uint64_t gifColourSlots[512] = {};  // their hash map to indices (GifIndexOf)
-    std::vector<std::uint8_t> gifIndices;    // GIF: a frame's indices into the part's colours
-    bool gifColoursOverflow = false;
-    int gifEpoch = 0;  // GIF: which run of shared colours the current part is in         // more than 256 colours in
-                       // the current part
+    TempFile gifRaw[3];                    // GIF: the parts' raw frames, in turn
+    int gifRawIndex = -1, gifRawFd = -1;   // GIF: the current part's raw file, open while its frames arrive
+    int gifPartFrames = 0;                 // GIF: frames per part as set (0: by frame size)
+    int gifPartSize = 0;                   // GIF: frames per part of this recording
+    int expectedFrames = 0;                // frames the caller said it will send (0: unknown)
+    std::vector<int> gifPlan;              // GIF: part sizes planned from expectedFrames (then gifPartSize)
+    int gifPartFrameCount = 0;             // GIF: frames in the current part so far
+    std::vector<std::uint8_t> yuv;         // MP4, WebM: a frame as sent to ffmpeg
+    Image gifPrevious;                     // GIF: the last frame recorded (to find the pixels that changed)
+    std::vector<std::uint8_t> gifBgra;     // GIF: a frame as stored in the raw file
+    GifPalette gifPalette;                 // GIF: the current run's colours (Platform/GifPalette.h)
+    std::vector<std::uint8_t> gifIndices;  // GIF: a frame's indices into the part's colours
+    bool gifColoursOverflow = false;       // GIF: more than 256 colours in the current part
     int width = 0, height = 0, frames = 0;
     double fps = 60.0;
     pid_t child = -1;
