@@ -134,33 +134,13 @@ int StartSession(const Options& o, const SceneDescription* scene, Session* s, Ru
     return StartDemo(o, scene, s, true);
 }
 
-/// One `--set` (or `--dt`, labelled so): "dt" is the one step setting (Application/StepSetting.h), the rest the
-/// demo's table. Exit 2 naming the value and listing the table.
-int ApplySet(Options& o, DemoBase& demo, const std::string& label, const std::string& key, const std::string& value) {
-    std::string error, note;
-    const bool ok = key == "dt" ? ApplyStepSetting(demo, label, value, &o.step, &error, &note)
-                                : demo.Parameters().Set(key, value, &error, &note);
-    if (!ok) {
-        std::fprintf(stderr, "physics-sandbox: %s: %s\nparameters of %s:\n%s", label.c_str(), error.c_str(),
-                     o.demo.c_str(), demo.Parameters().Describe().c_str());
-        return kExitUsage;
-    }
-    if (!note.empty()) std::fprintf(stderr, "physics-sandbox: %s\n", note.c_str());
-    return kExitOk;
-}
-
-// --dt (the same setting as --set dt=, its note already printed), then --set in order.
+// --dt and --set in order (ApplySetList); exit 2 naming the value and listing the table.
 int ApplySets(Options& o, DemoBase& demo) {
-    const bool dtGiven = std::find(o.flagsGiven.begin(), o.flagsGiven.end(), "--dt") != o.flagsGiven.end();
-    if (dtGiven) {
-        const std::string exact = RationalText(o.step);
-        if (const int code = ApplySet(o, demo, "--dt " + exact, "dt", exact); code != kExitOk) return code;
-    }
-    const std::vector<std::pair<std::string, std::string>> sets = o.sets;
-    for (const auto& [key, value] : sets) {
-        if (const int code = ApplySet(o, demo, "--set " + key + "=" + value, key, value); code != kExitOk) return code;
-    }
-    return kExitOk;
+    std::string error;
+    if (ApplySetList(&o, demo, &error)) return kExitOk;
+    std::fprintf(stderr, "physics-sandbox: %s\nparameters of %s:\n%s", error.c_str(), o.demo.c_str(),
+                 demo.Parameters().Describe().c_str());
+    return kExitUsage;
 }
 
 // --params: prints the table (the values in effect) and ends the run.

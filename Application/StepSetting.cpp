@@ -1,7 +1,9 @@
 #include "Application/StepSetting.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <numeric>
 
 #include "Application/CommandLine.h"
@@ -37,4 +39,34 @@ Rational HostStepOf(const Rational& hostStep, const DemoBase& demo) {
     if (micros <= 0) return hostStep;
     const std::int64_t g = std::gcd(micros, std::int64_t(1000000));
     return {micros / g, std::int64_t(1000000) / g};
+}
+
+namespace {
+
+bool ApplyOne(Options* o, DemoBase& demo, const std::string& label, const std::string& key, const std::string& value,
+              std::string* error) {
+    std::string reason, note;
+    const bool ok = key == "dt" ? ApplyStepSetting(demo, label, value, &o->step, &reason, &note)
+                                : demo.Parameters().Set(key, value, &reason, &note);
+    if (!ok) {
+        *error = label + ": " + reason;
+        return false;
+    }
+    if (!note.empty()) std::fprintf(stderr, "physics-sandbox: %s\n", note.c_str());
+    return true;
+}
+
+}  // namespace
+
+bool ApplySetList(Options* o, DemoBase& demo, std::string* error) {
+    const bool dtGiven = std::find(o->flagsGiven.begin(), o->flagsGiven.end(), "--dt") != o->flagsGiven.end();
+    if (dtGiven) {
+        const std::string exact = RationalText(o->step);
+        if (!ApplyOne(o, demo, "--dt " + exact, "dt", exact, error)) return false;
+    }
+    const std::vector<std::pair<std::string, std::string>> sets = o->sets;
+    for (const auto& [key, value] : sets) {
+        if (!ApplyOne(o, demo, "--set " + key + "=" + value, key, value, error)) return false;
+    }
+    return true;
 }

@@ -6,6 +6,7 @@
 
 #include <string>
 
+#include "Application/CommandLine.h"
 #include "Application/FrameClock.h"
 #include "Demos/DemoBase.h"
 
@@ -22,3 +23,9 @@ bool ApplyStepSetting(DemoBase& demo, const std::string& label, const std::strin
 /// The step the host runs: the demo's physics step when it asks for one (to the microsecond; exactly hostStep
 /// when that is the value the demo holds, so `--dt 1/60` stays 1/60), else hostStep.
 Rational HostStepOf(const Rational& hostStep, const DemoBase& demo);
+
+/// `--dt` (when given: the first "dt" setting, as RationalText of o->step; its rounding note was printed by the
+/// parser), then every `--set` in order: "dt" by ApplyStepSetting into the demo's table and o->step, the rest into
+/// the demo's table. Notes go to stderr as they come. False at the first refusal, *error "LABEL: reason" (LABEL
+/// "--dt S" or "--set KEY=VALUE").
+bool ApplySetList(Options* o, DemoBase& demo, std::string* error);

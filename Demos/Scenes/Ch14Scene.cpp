@@ -86,7 +86,8 @@ void Ch14Scene::AddParameters(ParameterSet* set) {
     for (Integrator i : kAllIntegrators) ids.push_back(ToString(i));
     set->AddChoice("integrator", &integratorIndex, ids, "particle integrator (book: euler)",
                    [this] { SetIntegrator(kAllIntegrators[integratorIndex]); });
-    set->AddFloat("dt", &stepDt, 0.0f, kMaxSceneDt, "physics step in s; 0 = the host's fixed step (book: 0.03)").Step();
+    // Up to 1 s, --dt's range: here --dt and --set dt= are one setting (docs/app.md, "Steps").
+    set->AddFloat("dt", &stepDt, 0.0f, 1.0f, "physics step in s; 0 = the host's fixed step (book: 0.03)").Step();
     AddParticleContactParameter(set, &contactIndex, [this] { SetParticleContact(ParticleContactAt(contactIndex)); });
     set->AddInt("seed", &panelSeed, 0, 2147483647, "MSVC rand() seed of the spawns (book: 1); on reset", resetIfFresh);
 }
