@@ -380,6 +380,18 @@ bool CheckCombinations(const Options& o, std::string* error) {
 
 }  // namespace
 
+bool ParseHostStep(const std::string& text, Rational* step, std::string* error, std::string* note) {
+    const Flag& dt = *FindFlag("--dt");
+    FlagValue v;
+    if (!ParseStep(dt, text, &v)) {
+        *error = Expected(dt);
+        return false;
+    }
+    *step = v.rational;
+    *note = v.text.empty() ? "" : StepRoundedNote(text, std::llround(v.rational.ToDouble() * 1e6));
+    return true;
+}
+
 ParseStatus ParseCommandLine(int argc, const char* const* argv, Options* o, std::string* error) {
     for (int i = 1; i < argc; ++i) {
         std::string name = argv[i], text;

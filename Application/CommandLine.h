@@ -70,5 +70,9 @@ enum class ParseStatus { Ok, Error };
 /// Parses argv[1..]. On error returns ParseStatus::Error and sets *error to a one-line message that names
 /// the flag, the bad value and what was expected (the flag's range). Does not touch the file system.
 ParseStatus ParseCommandLine(int argc, const char* const* argv, Options* options, std::string* error);
+/// The one rule for a physics step (docs/app.md, "Steps"), as `--dt` reads it: exact as n/d when it can be
+/// (n, d <= 10^6), else rounded to whole microseconds with *note ("S s rounded to ..."; "" when exact); in
+/// `--dt`'s range. False with *error ("expected a step in seconds ...") otherwise.
+bool ParseHostStep(const std::string& text, Rational* step, std::string* error, std::string* note);
 /// The --help text, generated from the flag table.
 std::string UsageText();

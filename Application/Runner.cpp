@@ -21,6 +21,7 @@
 #include "Application/ProgressLine.h"
 #include "Application/RunOutputs.h"
 #include "Application/StateCsv.h"
+#include "Application/StepSetting.h"
 #if PSB_HAVE_WINDOW
 #include "Application/WindowedRunner.h"
 #endif
@@ -133,19 +134,13 @@ int StartSession(const Options& o, const SceneDescription* scene, Session* s, Ru
     return StartDemo(o, scene, s, true);
 }
 
-// --set in order (exit 2 naming the key and listing the table).
-int ApplySets(const Options& o, DemoBase& demo) {
+// --dt and --set in order (ApplySetList); exit 2 naming the value and listing the table.
+int ApplySets(Options& o, DemoBase& demo) {
     std::string error;
-    for (const auto& [key, value] : o.sets) {
-        std::string note;
-        if (!demo.Parameters().Set(key, value, &error, &note)) {
-            std::fprintf(stderr, "physics-sandbox: --set %s=%s: %s\nparameters of %s:\n%s", key.c_str(), value.c_str(),
-                         error.c_str(), o.demo.c_str(), demo.Parameters().Describe().c_str());
-            return kExitUsage;
-        }
-        if (!note.empty()) std::fprintf(stderr, "physics-sandbox: %s\n", note.c_str());
-    }
-    return kExitOk;
+    if (ApplySetList(&o, demo, &error)) return kExitOk;
+    std::fprintf(stderr, "physics-sandbox: %s\nparameters of %s:\n%s", error.c_str(), o.demo.c_str(),
+                 demo.Parameters().Describe().c_str());
+    return kExitUsage;
 }
 
 // --params: prints the table (the values in effect) and ends the run.
@@ -155,7 +150,7 @@ int ShowParameters(const Options& o, const DemoBase& demo) {
 }
 
 // --set, then --params (prints and ends the run).
-int ApplyParameters(const Options& o, DemoBase& demo) {
+int ApplyParameters(Options& o, DemoBase& demo) {
     if (const int code = ApplySets(o, demo); code != kExitOk || !o.showParams) return code;
     return ShowParameters(o, demo);
 }
@@ -179,16 +174,10 @@ float ApplyCamera(const Options& o, DemoBase& demo) {
 
 // ---- The run loop.
 
-/// The host's fixed step: the demo's physics step when it asks for one (DemoBase::PhysicsStep, e.g. --set
-/// dt=0.01), else --dt. Whole physics steps run inside host time, so simulated time follows it at any step.
-Rational HostStep(const Options& o, const DemoBase& demo) {
-    const double demoStep = double(demo.PhysicsStep());
-    if (!(demoStep > 0.0) || !std::isfinite(demoStep)) return o.step;
-    const std::int64_t micros = std::llround(demoStep * 1e6);  // exact to 1 us; 0.03f -> 3/100 as --dt 0.03
-    if (micros <= 0) return o.step;
-    const std::int64_t g = std::gcd(micros, std::int64_t(1000000));
-    return {micros / g, std::int64_t(1000000) / g};
-}
+/// The host's fixed step (HostStepOf): the demo's physics step when it asks for one (e.g. --set dt=0.01 on
+/// springs), else the host's (--dt or --set dt=). Whole physics steps run inside host time, so simulated time
+/// follows it at any step.
+Rational HostStep(const Options& o, const DemoBase& demo) { return HostStepOf(o.step, demo); }
 
 /// Everything the frame loop carries from one frame to the next.
 struct RunLoop {
@@ -439,7 +428,8 @@ int LoadScene(Options* o, SceneDescription* scene) {
 
 /// --export-scene: the demo (built without a GL context, --set applied) described as a scene file, written whole.
 /// Exit 2 for a demo whose motion is scripted; each thing the format cannot express is listed on stderr.
-int ExportScene(const Options& o) {
+int ExportScene(const Options& given) {
+    Options o = given;  // --set dt= may set its step
     if (const int code = CheckDemoId(o.demo); code != kExitOk) return code;
     std::string error;
     if (!CheckWritableTarget(o.exportScene, &error)) {  // as --state and --video: a link or device is never replaced
@@ -458,7 +448,9 @@ int ExportScene(const Options& o) {
     }
     std::vector<std::string> notes;
     SceneDescription description = DescribeWorld(*world, info->title, &notes);
-    description.world.step = demo->PhysicsStep();
+    // The demo's own step, else the host's when --set dt= gave one (a demo without its own dt).
+    const bool stepSet = o.step.num != given.step.num || o.step.den != given.step.den;
+    description.world.step = demo->PhysicsStep() > 0.0f || !stepSet ? demo->PhysicsStep() : float(o.step.ToDouble());
     // The demo's own view (set by its constructor) with the run's camera flags, as a run would start.
     ApplyCamera(o, *demo);
     description.camera.target = demo->camera.GetTarget();
@@ -555,10 +547,12 @@ static int RunWindow(const Options& o) {
     WindowedOptions w;
     w.demo = o.demo;
     w.sets = o.sets;
+    if (std::find(o.flagsGiven.begin(), o.flagsGiven.end(), "--dt") != o.flagsGiven.end())
+        w.sets.insert(w.sets.begin(), {"dt", RationalText(o.step)});  // one setting with --set dt=
     w.frames = o.framesGiven ? o.frames : 0;
     w.width = o.width;
     w.height = o.height;
-    w.step = o.step.ToDouble();
+    w.step = o.step;
     w.noUi = o.noUi;
     w.quiet = o.quiet;
     return RunWindowed(w);

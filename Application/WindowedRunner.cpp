@@ -15,6 +15,7 @@
 
 #include "Application/AutoModelHost.h"
 #include "Application/Runner.h"
+#include "Application/StepSetting.h"
 #include "Demos/DemoBase.h"
 #include "Platform/DesktopWindow.h"
 #include "Windows/BookImGuiStyle.h"
@@ -67,7 +68,7 @@ struct ImGuiSession {
     }
 };
 
-bool StartFirstDemo(const WindowedOptions& o, DemoWindow& window) {
+bool StartFirstDemo(WindowedOptions& o, DemoWindow& window) {
     if (o.demo.empty()) return true;
     if (!window.StartDemo(o.demo)) {
         std::fprintf(stderr, "physics-sandbox: demo '%s' failed to start\n", o.demo.c_str());
@@ -77,7 +78,9 @@ bool StartFirstDemo(const WindowedOptions& o, DemoWindow& window) {
     std::string error;
     for (const auto& [key, value] : o.sets) {
         std::string note;
-        if (!demo.Parameters().Set(key, value, &error, &note)) {
+        const bool ok = key == "dt" ? ApplyStepSetting(demo, "--set dt=" + value, value, &o.step, &error, &note)
+                                    : demo.Parameters().Set(key, value, &error, &note);
+        if (!ok) {
             std::fprintf(stderr, "physics-sandbox: --set %s=%s: %s\n", key.c_str(), value.c_str(), error.c_str());
             return false;
         }
@@ -87,7 +90,7 @@ bool StartFirstDemo(const WindowedOptions& o, DemoWindow& window) {
     // (a window closed by hand: ChoiceSettings' default run length).
     AutoModelHost host;
     host.name = o.demo;
-    host.hostStep = o.step;
+    host.hostStep = o.step.ToDouble();
     host.runSeconds = o.frames > 0 ? o.frames / 60.0 : ChoiceSettings().runSeconds;
     host.quiet = o.quiet;
     bool explained = false;  // --explain-model is headless only
@@ -133,7 +136,8 @@ void ReportSummary(const WindowedOptions& o, DemoWindow& window, int frames, lon
 
 }  // namespace
 
-int RunWindowed(const WindowedOptions& o) {
+int RunWindowed(const WindowedOptions& options) {
+    WindowedOptions o = options;  // --set dt= sets its step
     std::string error;
     std::unique_ptr<DesktopWindow> desktop =
         DesktopWindow::Create("Physics Sandbox", o.width, o.height, o.vsync, &error);
@@ -177,9 +181,9 @@ int RunWindowed(const WindowedOptions& o) {
         if (framerate > 0.0f) window.SetNominalFrameTime(1000.0f / framerate);
         window.OnUpdate(float(deltaTime));
         // The book's accumulator (strict >), docs/book-reference.md §1.2, stepping the running demo's own
-        // physics step when it asks for one (DemoBase::PhysicsStep), else --dt.
+        // physics step when it asks for one (HostStepOf), else --dt / --set dt=.
         const DemoBase* demo = window.CurrentDemo();
-        const double step = demo != nullptr && demo->PhysicsStep() > 0.0f ? double(demo->PhysicsStep()) : o.step;
+        const double step = (demo != nullptr ? HostStepOf(o.step, *demo) : o.step).ToDouble();
         fixedElapsed += deltaTime;
         double stepped = 0.0;
         while (fixedElapsed > step) {

@@ -9,12 +9,15 @@
 #include <utility>
 #include <vector>
 
+#include "Application/FrameClock.h"
+
 struct WindowedOptions {
     std::string demo;                                       ///< first demo ("" = the book's empty start screen)
-    std::vector<std::pair<std::string, std::string>> sets;  ///< --set, applied to the first demo
+    std::vector<std::pair<std::string, std::string>> sets;  ///< --set (--dt first as dt=), to the first demo
     int frames = 0;                                         ///< close after this many frames; 0 = when closed
     int width = 800, height = 600;
-    double step = 0.03;  ///< s: the fixed step when the running demo names none (DemoBase::PhysicsStep); book 0.03
+    /// The host's step (--dt and --set dt=, one setting: Application/StepSetting.h); book 0.03 s
+    Rational step{3, 100};
     bool vsync = true;
     bool noUi = false;
     bool quiet = false;  ///< no "demo: ID" lines and no summary

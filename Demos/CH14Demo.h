@@ -23,15 +23,13 @@ public:
     /// averages these steps in ms (deterministic; the book measured wall-clock time between fixed updates).
     void Update(float dt) override;
     /// The `dt` parameter (s) if set, else 0: the host's own fixed step (book: 0.03).
-    float PhysicsStep() const override { return stepDt; }
+    float PhysicsStep() const override { return scene.PhysicsStep(); }
     /// "Chapter 14 Demo" panel drawn from the table: delta, particle count slider, Reset, Show Help.
     void ImGUI() override;
     /// One "particle" row per particle, in spawn order.
     void CollectState(std::vector<BodyState>* out) const override;
 
     const Ch14Scene& Scene() const { return scene; }
-    /// Rebuilds the scene from the current parameter values (the book's ResetDemo).
-    void ResetDemo();
 
     const PhysicsSystem* World() const override { return &scene.System(); }
     void ExportNotes(std::vector<std::string>* notes) const override {
@@ -40,10 +38,5 @@ public:
 
 private:
     Ch14Scene scene;
-    int particleCount = Ch14Params().particleCount;
-    int integratorIndex = static_cast<int>(Ch14Params().integrator);  // index into kAllIntegrators
-    int contactIndex = 0;                                             // index of the "particle-contact" choice (book)
-    float stepDt = 0.0f;                                              // 0: the host's fixed step
-    int seed = static_cast<int>(Ch14Params().seed);
     std::deque<float> deltas;  // the last 120 fixed deltas (ms), as the book's deque
 };

@@ -14,7 +14,7 @@ CH15Demo::CH15Demo() {
     scene.AddParameters(&params);
     // Not a book row: the panel shows a non-book contact solver in effect.
     params.AddPanelText(
-        [this] { return ContactSolverRow(scene.System().settings.contactSolver, scene.Params().soft); });
+        [this] { return ContactSolverRow(scene.System().settings.contactSolver, scene.Params().contact.soft); });
     AddAutoModelKeys();
 }
 

@@ -2,14 +2,12 @@
 
 #include "Demos/CH14Demo.h"
 #include "Demos/CH15Demo.h"
-#include "Demos/CH16Demo.h"
 #include "Demos/CollisionFeature.h"
 #include "Demos/ConservationOfMomentum.h"
 #include "Demos/DemoBase.h"
-#include "Demos/JointDemo.h"
 #include "Demos/LinearImpulse.h"
+#include "Demos/ParticleSceneDemo.h"
 #include "Demos/RaycastDemo.h"
-#include "Demos/SimpleSprings.h"
 // Each demo adds its include and one row below, in the book's list order.
 
 const std::vector<DemoInfo>& AllDemos() {

@@ -12,7 +12,7 @@ LinearImpulse::LinearImpulse() {
     scene.AddParameters(&params);
     // Not a book row: the panel shows a non-book contact solver in effect (--set solver=).
     params.AddPanelText(
-        [this] { return ContactSolverRow(scene.System().settings.contactSolver, scene.Params().soft); });
+        [this] { return ContactSolverRow(scene.System().settings.contactSolver, scene.Params().contact.soft); });
     AddAutoModelKeys();
 }
 

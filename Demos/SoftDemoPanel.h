@@ -1,6 +1,6 @@
 #pragma once
-// Shared by the chapter 16 demos (SimpleSprings, CH16Demo, JointDemo): the light, the panel with the book's
-// size, and the stability report in place of garbage.
+// Shared by the chapter 16 demos (Demos/ParticleSceneDemo.h: SimpleSprings, CH16Demo, JointDemo): the light, the panel
+// with the book's size, and the stability report in place of garbage.
 
 #include <vector>
 

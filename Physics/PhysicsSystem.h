@@ -10,7 +10,7 @@
 //   PhysicsSystemParticles.cpp (ch14)  particle forces, integration, constraint solving
 //   PhysicsSystemVolumes.cpp   (ch15)  broadphase + manifolds, impulses, volume integration, projection; the
 //                                      soft step's pair search (SoftSolver.h does the rest)
-//   PhysicsSystemSoft.cpp      (ch16)  spring and cloth forces, distance joints
+//   PhysicsSystemSprings.cpp   (ch16)  spring and cloth forces, distance joints
 
 #include <cstddef>
 #include <string>
@@ -147,7 +147,7 @@ private:
     /// readers are: it only turns the solver's kept contacts into the book's form.
     void FillSoftCollisions() const;
 
-    // ---- ch16: PhysicsSystemSoft.cpp
+    // ---- ch16: PhysicsSystemSprings.cpp
     /// Adds the force of every spring (system and cloth) to its particles' `forces`.
     void AccumulateSpringForces();
     void SolveJoints();

@@ -187,3 +187,23 @@ std::string LastLineOf(const std::string& outputPath) {
         if (!line.empty()) last = line;
     return last;
 }
+
+bool FfmpegChild::Wait(double stallSeconds, const std::string& output, const std::string& logPath, std::string* error) {
+    if (pid <= 0) {  // never waitpid(-1): it would reap another part's ffmpeg
+        *error = "ffmpeg is not running";
+        return false;
+    }
+    const pid_t waited = pid;
+    pid = -1;
+    return WaitForFfmpeg(waited, stallSeconds, output, logPath, error);
+}
+
+void FfmpegChild::Kill() {
+    KillChild(pid);
+    pid = -1;
+}
+
+void FfmpegChild::CloseInput() {
+    if (input >= 0) close(input);
+    input = -1;
+}

@@ -46,3 +46,21 @@ std::string LastLineOf(const std::string& outputPath);
 
 /// True if an executable named program is on PATH.
 bool ProgramOnPath(const std::string& program);
+
+/// One ffmpeg of a recording (the recorders' process wrapper): started with StartChild, its output appended to
+/// a log, waited for with WaitForFfmpeg, killed with KillChild. Not owning: a recorder hands its pid and input on
+/// (a GIF part keeps them) and kills what still runs when it aborts.
+struct FfmpegChild {
+    pid_t pid = -1;  ///< while it runs and has not been waited for
+    int input = -1;  ///< the write end of its standard input (Start with pipeIn), until closed
+    /// StartChild(args, pipeIn, logPath).
+    bool Start(const std::vector<std::string>& args, bool pipeIn, const std::string& logPath, std::string* error) {
+        return StartChild(args, pipeIn, logPath, &pid, &input, error);
+    }
+    /// WaitForFfmpeg on it (never waitpid(-1): "ffmpeg is not running" when there is none); it is gone after.
+    bool Wait(double stallSeconds, const std::string& output, const std::string& logPath, std::string* error);
+    /// KillChild; it is gone after.
+    void Kill();
+    /// Closes its standard input if open.
+    void CloseInput();
+};

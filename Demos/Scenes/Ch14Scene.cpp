@@ -1,7 +1,11 @@
 #include "Demos/Scenes/Ch14Scene.h"
 
 #include <cmath>
+#include <iterator>
+#include <string>
+#include <vector>
 
+#include "Demos/Scenes/SoftSceneCommon.h"
 #include "Math/Random.h"
 
 Ch14Scene::Ch14Scene(const Ch14Params& p) { Reset(p); }
@@ -17,6 +21,11 @@ std::array<OBB, 4> Ch14Scene::Constraints() {
 
 void Ch14Scene::Reset(const Ch14Params& p) {
     params = p;
+    panelParticles = p.particleCount;
+    for (std::size_t i = 0; i < std::size(kAllIntegrators); ++i)
+        if (kAllIntegrators[i] == p.integrator) integratorIndex = static_cast<int>(i);
+    contactIndex = p.particleContact == ParticleContact::Skin ? 1 : 0;
+    panelSeed = static_cast<int>(p.seed);
     if (params.particleCount < 1) params.particleCount = 1;
     if (!(params.dt > 0.0f) || !std::isfinite(params.dt)) params.dt = Ch14Params().dt;
     system = std::make_unique<PhysicsSystem>();
@@ -44,13 +53,43 @@ void Ch14Scene::Reset(const Ch14Params& p) {
     for (Particle& particle : bodies) system->AddRigidbody(&particle);
 }
 
-void Ch14Scene::Step(float dt) {
-    if (!(dt > 0.0f) || !std::isfinite(dt)) return;
+void Ch14Scene::Reset() {
+    Ch14Params p;
+    p.particleCount = panelParticles;
+    p.integrator = kAllIntegrators[integratorIndex];
+    p.dt = stepDt > 0.0f ? stepDt : Ch14Params().dt;
+    p.seed = static_cast<std::uint32_t>(panelSeed);
+    p.particleContact = ParticleContactAt(contactIndex);
+    Reset(p);
+}
+
+bool Ch14Scene::Step(float dt) {
+    if (!(dt > 0.0f) || !std::isfinite(dt)) return false;
     system->Update(dt);
-    for (Particle& particle : bodies) {
-        const vec3 pos = particle.GetPosition();
-        if (pos.y < kBookFloorY) particle.SetPosition(vec3(pos.x, kBookFloorY, pos.z));
-    }
+    ClampAboveFloor(&bodies, kBookFloorY);
+    return system->StopReason().empty();
+}
+
+void Ch14Scene::AddParameters(ParameterSet* set) {
+    // The panel (docs/book-reference.md §2.1) after the demo's delta row: "Particle count" with a 100 px slider,
+    // Reset; then the model's keys.
+    using Widget = ParameterSet::Widget;
+    auto resetIfFresh = [this] {
+        if (system->StepCount() == 0) Reset();
+    };
+    set->AddInt("particles", &panelParticles, 1, 300, "particle count; takes effect on reset (book)", resetIfFresh)
+        .OnPanel(Widget::Slider("##particles").Width(100.0f).Caption("Particle count"));  // erratum 5.2-26: "" clashes
+    set->AddAction(
+           "reset", [this] { Reset(); }, "respawn the particles (the panel's Reset button)")
+        .OnPanel(Widget::Button("Reset").SameLine());
+    std::vector<std::string> ids;
+    for (Integrator i : kAllIntegrators) ids.push_back(ToString(i));
+    set->AddChoice("integrator", &integratorIndex, ids, "particle integrator (book: euler)",
+                   [this] { SetIntegrator(kAllIntegrators[integratorIndex]); });
+    // Up to 1 s, --dt's range: here --dt and --set dt= are one setting (docs/app.md, "Steps").
+    set->AddFloat("dt", &stepDt, 0.0f, 1.0f, "physics step in s; 0 = the host's fixed step (book: 0.03)").Step();
+    AddParticleContactParameter(set, &contactIndex, [this] { SetParticleContact(ParticleContactAt(contactIndex)); });
+    set->AddInt("seed", &panelSeed, 0, 2147483647, "MSVC rand() seed of the spawns (book: 1); on reset", resetIfFresh);
 }
 
 void Ch14Scene::SetIntegrator(Integrator integrator) {

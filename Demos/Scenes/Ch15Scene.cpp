@@ -1,5 +1,7 @@
 #include "Demos/Scenes/Ch15Scene.h"
 
+#include <cmath>
+
 #include "Demos/Scenes/ContactSolverParameters.h"
 
 Ch15Scene::Ch15Scene(const Ch15Params& p) : params(p) { Reset(); }
@@ -38,37 +40,38 @@ void Ch15Scene::ApplySettings() {
     system->settings.solverIterations = params.iterations;
     system->settings.linearProjection = params.linearProjection;
     system->DebugRender = params.debugRender;
-    system->settings.contactSolver = ContactSolverAt(params.solver);
-    system->settings.soft = params.soft;
-    system->settings.sleep.enabled = params.sleep;
+    params.contact.ApplyTo(&system->settings);
 }
 
-void Ch15Scene::Step(float dt) {
-    ApplySettings();
+bool Ch15Scene::Step(float dt) {
+    if (!(dt > 0.0f) || !std::isfinite(dt)) return false;
     system->Update(dt);
+    return system->StopReason().empty();
 }
 
 void Ch15Scene::AddParameters(ParameterSet* set) {
-    // The panel (docs/book-reference.md §2.5): three 55 px sliders on one line, then Reset and two checkboxes.
+    // The panel (docs/book-reference.md §2.5): three 55 px sliders on one line, then Reset and two checkboxes. Each
+    // edit (panel or --set) goes into the world at once, as the book's sliders write its PhysicsSystem's fields;
+    // params keeps them for the fresh world a Reset builds.
     using Widget = ParameterSet::Widget;
     auto apply = [this] { ApplySettings(); };
     set->AddFloat("projection-fraction", &params.projectionFraction, 0.2f, 0.8f,
                   "LinearProjectionPercent: fraction of the penetration beyond the slop removed per step", apply)
         .Alias("projection")
-        .OnPanel(Widget::Slider("Porjection").Width(55.0f));
+        .OnPanel(Widget::Slider("Porjection").Width(55.0f).AppliesAtOnce());
     set->AddFloat("slop", &params.penetrationSlop, 0.01f, 0.1f, "PenetrationSlack: penetration left uncorrected (m)",
                   apply)
-        .OnPanel(Widget::Slider("Slop").Width(55.0f).SameLine());
+        .OnPanel(Widget::Slider("Slop").Width(55.0f).SameLine().AppliesAtOnce());
     set->AddInt("iterations", &params.iterations, 1, 20, "ImpulseIteration: passes over every contact per step", apply)
-        .OnPanel(Widget::Slider("Iteration").Width(55.0f).SameLine());
+        .OnPanel(Widget::Slider("Iteration").Width(55.0f).SameLine().AppliesAtOnce());
     set->AddAction(
            "reset", [this] { Reset(); }, "rebuild the scene")
         .OnPanel(Widget::Button("Reset"));
     set->AddBool("debug", &params.debugRender, "DebugRender: box edges and collision manifolds", apply)
-        .OnPanel(Widget::Checkbox("Debug Render").SameLine());
+        .OnPanel(Widget::Checkbox("Debug Render").SameLine().AppliesAtOnce());
     set->AddBool("linear-projection", &params.linearProjection, "DoLinearProjection: positional correction", apply)
-        .OnPanel(Widget::Checkbox("Linear Projection").SameLine());
-    AddContactSolverParameters(set, &params.solver, &params.soft, &params.sleep,
+        .OnPanel(Widget::Checkbox("Linear Projection").SameLine().AppliesAtOnce());
+    AddContactSolverParameters(set, &params.contact,
                                "contact solver: the book's per-contact impulses, accumulated impulses (stacks stand) "
                                "or the soft step",
                                apply);

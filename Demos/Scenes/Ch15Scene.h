@@ -5,7 +5,9 @@
 #include <memory>
 #include <vector>
 
+#include "Demos/Scenes/ContactSolverParameters.h"
 #include "Demos/Scenes/Parameters.h"
+#include "Demos/Scenes/Scene.h"
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
 
@@ -20,30 +22,28 @@ struct Ch15Params {
     int iterations = 8;             ///< WorldSettings::solverIterations (ImpulseIteration, "Iteration")
     bool linearProjection = true;   ///< positional correction on (DoLinearProjection, "Linear Projection")
     bool debugRender = false;       ///< draw box edges and manifolds (DebugRender, "Debug Render")
-    /// Not a book widget: the contact solver as an index of ContactSolverChoices() (the enum's value: 0 the
-    /// book's per-contact solver, 1 accumulated impulses, 2 the soft step; ContactSolver.h).
-    int solver = 0;
-    /// WorldSettings::soft, used when solver is soft (`--set soft-substeps=...`, ContactSolverParameters.h).
-    SoftSolverSettings soft;
-    /// Islands and sleep (WorldSettings::sleep.enabled, `--set sleep=1`); off, as in the book.
-    bool sleep = false;
+    /// Not book widgets: the contact solver, its soft settings and sleep (`--set solver=`, `soft-...`, `sleep=`).
+    ContactSolverChoice contact;
 };
 
-class Ch15Scene {
+class Ch15Scene final : public Scene {
 public:
     explicit Ch15Scene(const Ch15Params& params = {});
     /// Rebuilds the three bodies (the book's ResetDemo), volumes synced; the panel values are kept.
-    void Reset();
-    /// Copies the panel values into the system, then one physics step of dt seconds.
-    void Step(float dt);
+    void Reset() override;
+    /// One physics step of dt seconds (Scene::Step). The panel values are in the world already: every edit
+    /// applies at once, as the book's sliders do.
+    bool Step(float dt) override;
     /// Registers the panel's widgets in panel order (projection-fraction, slop, iterations, reset, debug,
     /// linear-projection), then the solver choice and the soft solver's keys (no widgets) on *set.
-    void AddParameters(ParameterSet* set);
+    void AddParameters(ParameterSet* set) override;
+    /// 0: the host's step (`--dt`, `--set dt=`).
+    float PhysicsStep() const override { return 0.0f; }
 
     Ch15Params& Params() { return params; }
     const Ch15Params& Params() const { return params; }
-    PhysicsSystem& System() { return *system; }
-    const PhysicsSystem& System() const { return *system; }
+    PhysicsSystem& System() override { return *system; }
+    const PhysicsSystem& System() const override { return *system; }
     /// [0] tilted box, [1] heavy box, [2] ground, in the order they were added.
     const std::vector<RigidbodyVolume>& Bodies() const { return bodies; }
     std::vector<RigidbodyVolume>& Bodies() { return bodies; }

@@ -47,3 +47,14 @@ std::string ContactSolverRow(ContactSolver solver, const SoftSolverSettings& sof
                   static_cast<double>(soft.contactHertz));
     return row;
 }
+
+void ContactSolverChoice::ApplyTo(WorldSettings* settings) const {
+    settings->contactSolver = ContactSolverAt(solver);
+    settings->soft = soft;
+    settings->sleep.enabled = sleep;
+}
+
+void AddContactSolverParameters(ParameterSet* set, ContactSolverChoice* choice, const std::string& solverHelp,
+                                const std::function<void()>& onChange) {
+    AddContactSolverParameters(set, &choice->solver, &choice->soft, &choice->sleep, solverHelp, onChange);
+}

@@ -9,6 +9,7 @@
 
 #include "Demos/Scenes/Parameters.h"
 #include "Physics/ContactSolver.h"
+#include "Physics/WorldSettings.h"
 
 /// Solver ids in kAllContactSolvers order ("book", "accumulated", "soft"): the "solver" choice list, so a
 /// choice index is the enum's value.
@@ -34,6 +35,25 @@ struct SoftSolverLimits {
 /// WorldSettings::sleep.enabled; docs/sleep.md). onChange runs after each successful --set.
 void AddContactSolverParameters(ParameterSet* set, int* solverIndex, SoftSolverSettings* soft, bool* sleep,
                                 const std::string& solverHelp, const std::function<void()>& onChange);
+
+/// The contact-solver choice of a rigid-volume scene (ch15, linear-impulse, momentum): the one place for the
+/// "solver" index, the soft solver's settings and sleep. Not book widgets; off (the book's) by default.
+struct ContactSolverChoice {
+    /// An index of ContactSolverChoices(), so the enum's value: 0 the book's per-contact solver, 1 accumulated
+    /// impulses, 2 the soft step (ContactSolver.h); `--set solver=`.
+    int solver = 0;
+    /// WorldSettings::soft, used when solver is soft (`--set soft-substeps=...`).
+    SoftSolverSettings soft;
+    /// Islands and sleep (WorldSettings::sleep.enabled, `--set sleep=1`; docs/sleep.md); off, as in the book.
+    bool sleep = false;
+
+    /// Puts the choice into a world's settings: contactSolver, soft and sleep.enabled.
+    void ApplyTo(WorldSettings* settings) const;
+};
+
+/// AddContactSolverParameters bound to a ContactSolverChoice.
+void AddContactSolverParameters(ParameterSet* set, ContactSolverChoice* choice, const std::string& solverHelp,
+                                const std::function<void()>& onChange);
 
 /// The panel row naming a non-book solver in effect ("Contact solver: accumulated", "Contact solver: soft, 6
 /// substeps, 90 Hz"); "" for the book's (its panels stay the book's).

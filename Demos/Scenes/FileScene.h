@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "Demos/Scenes/Parameters.h"
+#include "Demos/Scenes/Scene.h"
 #include "Demos/Scenes/SceneFile.h"
 #include "Physics/Cloth.h"
 #include "Physics/DistanceJoint.h"
@@ -22,27 +23,27 @@ struct FileSceneBody {
     std::size_t index = 0;  ///< into FileScene::Particles() or FileScene::Volumes()
 };
 
-class FileScene {
+class FileScene final : public Scene {
 public:
     explicit FileScene(const SceneDescription& description);
     /// Rebuilds the world from the description.
-    void Reset();
+    void Reset() override;
     /// One physics step of dt seconds; false (and the world frozen) once the stability monitor reports a blow-up,
     /// once the world has stopped (PhysicsSystem::StopReason: too many overlapping pairs), or for dt <= 0 or
     /// non-finite.
-    bool Step(float dt);
+    bool Step(float dt) override;
     /// Registers the model settings (integrator, solver and the soft solver's keys, iterations, slop, projection,
     /// dt) and reset on *set;
     /// a change applies to the running world at once (dt from the next host step).
-    void AddParameters(ParameterSet* set);
+    void AddParameters(ParameterSet* set) override;
     /// One line naming the model in effect: integrator, contact solver, iterations, step.
     std::string ModelSummary() const;
     /// The scene's physics step (s); 0 = the host's.
-    float PhysicsStep() const { return description.world.step; }
+    float PhysicsStep() const override { return description.world.step; }
 
     const SceneDescription& Description() const { return description; }
-    PhysicsSystem& System() { return *system; }
-    const PhysicsSystem& System() const { return *system; }
+    PhysicsSystem& System() override { return *system; }
+    const PhysicsSystem& System() const override { return *system; }
     const std::vector<Particle>& Particles() const { return particles; }
     const std::vector<RigidbodyVolume>& Volumes() const { return volumes; }
     const std::vector<DistanceJoint>& Joints() const { return joints; }

@@ -7,6 +7,7 @@
 
 #include "Demos/Scenes/BookConstants.h"
 #include "Demos/Scenes/Parameters.h"
+#include "Demos/Scenes/Scene.h"
 #include "Demos/Scenes/SoftSceneCommon.h"
 #include "Math/Random.h"
 #include "Physics/DistanceJoint.h"
@@ -22,7 +23,7 @@ struct JointParams {
     float dt = kBookStep;  ///< s: the physics step the demo asks its host for (book: 0.03, erratum 5.2-16)
 };
 
-class JointScene {
+class JointScene final : public Scene {
 public:
     /// rng is the demo's generator; it is NOT reseeded by Reset, as the book's rand() is never reseeded.
     explicit JointScene(const JointParams& params = {}, MsvcRand* rng = nullptr);
@@ -32,17 +33,19 @@ public:
     /// are created (erratum 5.2-23), so every particle has a joint; params.particleCount is left as given.
     void Reset(const JointParams& params);
     /// Rebuilds from the current (panel) values, the integrator taken from the "integrator" choice.
-    void Reset();
+    void Reset() override;
     /// One physics step of dt seconds, the y >= -5 clamp, then the stability check. False once unstable.
     /// Nothing once unstable, or for dt <= 0 or non-finite.
-    bool Step(float dt);
+    bool Step(float dt) override;
     /// Registers the panel values and the "reset" action on *set; --set resets the scene.
-    void AddParameters(ParameterSet* set);
+    void AddParameters(ParameterSet* set) override;
+    /// The `dt` parameter (s): the step the scene asks its host for.
+    float PhysicsStep() const override { return params.dt; }
 
     JointParams& Params() { return params; }
     const JointParams& Params() const { return params; }
-    PhysicsSystem& System() { return *system; }
-    const PhysicsSystem& System() const { return *system; }
+    PhysicsSystem& System() override { return *system; }
+    const PhysicsSystem& System() const override { return *system; }
     const std::vector<Particle>& Particles() const { return particles; }
     const std::vector<DistanceJoint>& Joints() const { return joints; }
     const StabilityMonitor& Monitor() const { return monitor; }

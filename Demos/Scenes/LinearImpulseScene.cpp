@@ -1,5 +1,7 @@
 #include "Demos/Scenes/LinearImpulseScene.h"
 
+#include <cmath>
+
 #include "Demos/Scenes/ContactSolverParameters.h"
 
 LinearImpulseScene::LinearImpulseScene(const LinearImpulseParams& p) : params(p) { Reset(); }
@@ -34,21 +36,19 @@ void LinearImpulseScene::Reset() {
     ApplySolverSettings();
 }
 
-void LinearImpulseScene::ApplySolverSettings() {
-    system->settings.contactSolver = ContactSolverAt(params.solver);
-    system->settings.soft = params.soft;
-    system->settings.sleep.enabled = params.sleep;
-}
+void LinearImpulseScene::ApplySolverSettings() { params.contact.ApplyTo(&system->settings); }
 
 void LinearImpulseScene::RequestSteps() { pendingSteps = params.frames; }
 
-void LinearImpulseScene::Step(float dt) {
+bool LinearImpulseScene::Step(float dt) {
+    if (!(dt > 0.0f) || !std::isfinite(dt)) return false;
     if (!params.pause) {
         system->Update(dt);
     } else if (pendingSteps > 0) {
         --pendingSteps;
         system->Update(dt);
     }
+    return system->StopReason().empty();
 }
 
 void LinearImpulseScene::AddParameters(ParameterSet* set) {
@@ -69,7 +69,7 @@ void LinearImpulseScene::AddParameters(ParameterSet* set) {
     set->AddBool("drop", &params.drop, "drop the bodies onto each other instead of throwing them (resets)",
                  [this] { Reset(); })
         .OnPanel(Widget::Checkbox("Drop").SameLine().AppliesAtOnce());
-    AddContactSolverParameters(set, &params.solver, &params.soft, &params.sleep,
+    AddContactSolverParameters(set, &params.contact,
                                "contact solver: the book's per-contact impulses, accumulated impulses or the soft step",
                                [this] { ApplySolverSettings(); });
 }

@@ -6,7 +6,9 @@
 #include <memory>
 #include <vector>
 
+#include "Demos/Scenes/ContactSolverParameters.h"
 #include "Demos/Scenes/Parameters.h"
+#include "Demos/Scenes/Scene.h"
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
 
@@ -17,31 +19,29 @@ struct LinearImpulseParams {
     bool drop = false;     ///< "Drop": stacked at rest instead of thrown
     bool pause = false;    ///< "Pause"
     int frames = 1;        ///< "Frames": steps taken by one press of "Step"
-    /// Not a book widget: the contact solver, an index of ContactSolverChoices() (0 the book's; `--set solver=`).
-    int solver = 0;
-    /// WorldSettings::soft, used when solver is soft (`--set soft-substeps=...`, ContactSolverParameters.h).
-    SoftSolverSettings soft;
-    /// Islands and sleep (WorldSettings::sleep.enabled, `--set sleep=1`); off, as in the book.
-    bool sleep = false;
+    /// Not book widgets: the contact solver, its soft settings and sleep (`--set solver=`, `soft-...`, `sleep=`).
+    ContactSolverChoice contact;
 };
 
-class LinearImpulseScene {
+class LinearImpulseScene final : public Scene {
 public:
     explicit LinearImpulseScene(const LinearImpulseParams& params = {});
     /// Rebuilds the bodies from spheres/drop (the book's ResetDemo), volumes synced (erratum 5.2-28).
-    void Reset();
+    void Reset() override;
     /// The "Step" button: queue `frames` single steps to run while paused.
     void RequestSteps();
     /// The book's Update: one physics step of dt seconds unless paused; while paused, one queued step if any.
-    void Step(float dt);
+    bool Step(float dt) override;
     /// Registers the panel's widgets (docs/book-reference.md §2.3) on *set: step, frames, reset, pause, spheres, drop;
     /// then the solver choice and the soft solver's keys (no widgets), which apply to the running world at once.
-    void AddParameters(ParameterSet* set);
+    void AddParameters(ParameterSet* set) override;
+    /// 0: the host's step (`--dt`, `--set dt=`).
+    float PhysicsStep() const override { return 0.0f; }
 
     LinearImpulseParams& Params() { return params; }
     int PendingSteps() const { return pendingSteps; }
-    PhysicsSystem& System() { return *system; }
-    const PhysicsSystem& System() const { return *system; }
+    PhysicsSystem& System() override { return *system; }
+    const PhysicsSystem& System() const override { return *system; }
     /// [0] first body (red), [1] second body (blue), [2] ground.
     const std::vector<RigidbodyVolume>& Bodies() const { return bodies; }
 

@@ -1,5 +1,7 @@
 #include "Demos/Scenes/MomentumScene.h"
 
+#include <cmath>
+
 #include "Demos/Scenes/ContactSolverParameters.h"
 
 MomentumScene::MomentumScene(const MomentumParams& p) : params(p) { Reset(); }
@@ -35,19 +37,19 @@ void MomentumScene::Reset() {
     ApplySolverSettings();
 }
 
-void MomentumScene::ApplySolverSettings() {
-    system->settings.contactSolver = ContactSolverAt(params.solver);
-    system->settings.soft = params.soft;
-    system->settings.sleep.enabled = params.sleep;
-}
+void MomentumScene::ApplySolverSettings() { params.contact.ApplyTo(&system->settings); }
 
-void MomentumScene::Step(float dt) { system->Update(dt); }
+bool MomentumScene::Step(float dt) {
+    if (!(dt > 0.0f) || !std::isfinite(dt)) return false;
+    system->Update(dt);
+    return system->StopReason().empty();
+}
 
 void MomentumScene::AddParameters(ParameterSet* set) {
     set->AddAction(
            "reset", [this] { Reset(); }, "rebuild the scene")
         .OnPanel(ParameterSet::Widget::Button("Reset"));
-    AddContactSolverParameters(set, &params.solver, &params.soft, &params.sleep,
+    AddContactSolverParameters(set, &params.contact,
                                "contact solver: the book's per-contact impulses, accumulated impulses or the soft step",
                                [this] { ApplySolverSettings(); });
 }

@@ -7,6 +7,7 @@
 
 #include "Demos/Scenes/BookConstants.h"
 #include "Demos/Scenes/Parameters.h"
+#include "Demos/Scenes/Scene.h"
 #include "Demos/Scenes/SoftSceneCommon.h"
 #include "Physics/Integrator.h"
 #include "Physics/Particle.h"
@@ -25,7 +26,7 @@ struct SpringsParams {
     float dt = kBookStep;  ///< s: the physics step the demo asks its host for (book: 0.03, erratum 5.2-16)
 };
 
-class SpringsScene {
+class SpringsScene final : public Scene {
 public:
     static constexpr float kHeavyMass = 50.0f;
     static constexpr float kLightMass = 1.0f;
@@ -34,17 +35,19 @@ public:
     /// Rebuilds the world from params (the book's ResetDemo); the step count restarts at 0.
     void Reset(const SpringsParams& params);
     /// Rebuilds from the current (panel) values, the integrator taken from the "integrator" choice.
-    void Reset();
+    void Reset() override;
     /// One physics step of dt seconds, the y >= -5 clamp, then the stability check. False once unstable.
     /// Nothing once unstable, or for dt <= 0 or non-finite.
-    bool Step(float dt);
+    bool Step(float dt) override;
     /// Registers the panel values and the "reset" action on *set; --set resets the scene.
-    void AddParameters(ParameterSet* set);
+    void AddParameters(ParameterSet* set) override;
+    /// The `dt` parameter (s): the step the scene asks its host for.
+    float PhysicsStep() const override { return params.dt; }
 
     SpringsParams& Params() { return params; }
     const SpringsParams& Params() const { return params; }
-    PhysicsSystem& System() { return *system; }
-    const PhysicsSystem& System() const { return *system; }
+    PhysicsSystem& System() override { return *system; }
+    const PhysicsSystem& System() const override { return *system; }
     const StabilityMonitor& Monitor() const { return monitor; }
     /// p0 (heavy, index 0) and p1 (light, index 1).
     const std::vector<Particle>& Particles() const { return particles; }

@@ -1,5 +1,5 @@
 // Spring (docs/book-reference.md §3.6): Hooke force with the book's sign, damping along the axis (erratum 5.2-20),
-// guard for coincident particles (erratum 5.2-6). Hand-computed cases; dynamics are in PhysicsSystemSoft_test.
+// guard for coincident particles (erratum 5.2-6). Hand-computed cases; dynamics are in PhysicsSystemSprings_test.
 #include "Physics/Spring.h"
 
 #include <gtest/gtest.h>

@@ -97,6 +97,23 @@ TEST(Ch15Scene, TwoRunsAreBitwiseIdentical) {
     }
 }
 
+// The panel values go into the world's settings when they are set (the book's sliders write its PhysicsSystem), not
+// from a copy pushed into the world before every step: a setting changed in the world stays through a step, and a
+// --set reaches the world before any step.
+TEST(Ch15Scene, AStepLeavesTheWorldsSettingsAlone) {
+    Ch15Scene scene;
+    ParameterSet set;
+    scene.AddParameters(&set);
+    scene.System().settings.solverIterations = 3;
+    scene.Step(0.03f);
+    EXPECT_EQ(scene.System().settings.solverIterations, 3);
+    std::string error;
+    ASSERT_TRUE(set.Set("iterations", "12", &error)) << error;
+    EXPECT_EQ(scene.System().settings.solverIterations, 12);
+    ASSERT_TRUE(set.Set("projection-fraction", "0.3", &error)) << error;
+    EXPECT_EQ(scene.System().settings.projectionFraction, 0.3f);
+}
+
 // The "solver" parameter switches the system's contact solver (not a book widget; --set solver=...).
 TEST(Ch15Scene, SolverParameterSelectsTheContactSolver) {
     Ch15Scene scene;
@@ -112,8 +129,8 @@ TEST(Ch15Scene, SolverParameterSelectsTheContactSolver) {
     EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Book);
 }
 
-// --set solver=soft selects the soft step, and its --set keys land in WorldSettings::soft; both survive Reset and
-// the per-step re-application of the panel values.
+// --set solver=soft selects the soft step, and its --set keys land in WorldSettings::soft; both survive steps and
+// Reset.
 TEST(Ch15Scene, SoftSolverAndItsSettingsReachTheSystem) {
     Ch15Scene scene;
     ParameterSet set;

@@ -84,8 +84,9 @@ TEST(SteadyStateAllocation, Ch15BoxesWithContacts) {
 }
 
 TEST(SteadyStateAllocation, Ch15BoxesAccumulatedSolver) {
-    Ch15Scene scene;
-    scene.Params().solver = 1;  // the scene applies its parameters every step (--set solver=accumulated)
+    Ch15Params params;
+    params.contact.solver = 1;  // --set solver=accumulated
+    Ch15Scene scene(params);
     for (int i = 0; i < kWarmup; ++i) scene.Step(0.03f);
     ASSERT_EQ(scene.System().settings.contactSolver, ContactSolver::Accumulated);
     // The arbiter's buffers must be reused, not regrown.

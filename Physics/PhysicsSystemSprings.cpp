@@ -1,4 +1,4 @@
-// Chapter 16 stages of PhysicsSystem: spring and cloth forces, distance joints.
+// Chapter 16 stages of PhysicsSystem: spring and cloth forces, distance joints ("soft" is the contact solver).
 #include "Physics/Cloth.h"
 #include "Physics/DistanceJoint.h"
 #include "Physics/PhysicsSystem.h"

@@ -158,7 +158,7 @@ EnergyRun RunEnergy(Integrator integrator, int stepsPerPeriod, int periods) {
 // velocity Verlet, 0.0022 for position Verlet, whose float velocity is rebuilt from positions). Band for semi-implicit
 // Euler: its energy error oscillates with relative amplitude about omega*dt/2 = 0.031; stated band 0.04. The
 // second-order methods: (omega*dt)^2/4 ~ 0.001; band 0.005.
-TEST(PhysicsSystemSoft, SymplecticEnergyBoundedOverThousandPeriods) {
+TEST(PhysicsSystemSprings, SymplecticEnergyBoundedOverThousandPeriods) {
     struct Case {
         Integrator integrator;
         double band;
@@ -173,7 +173,7 @@ TEST(PhysicsSystemSoft, SymplecticEnergyBoundedOverThousandPeriods) {
 
 // Explicit Euler on a harmonic oscillator multiplies the energy by exactly (1 + (omega dt)^2) per step:
 // it GAINS energy. Measured over 2 periods at 100 steps per period against that factor (1%).
-TEST(PhysicsSystemSoft, ExplicitEulerGainsEnergyAsPredicted) {
+TEST(PhysicsSystemSprings, ExplicitEulerGainsEnergyAsPredicted) {
     const int steps = 200;
     const EnergyRun run = RunEnergy(Integrator::ExplicitEuler, 100, 2);
     const double wdt = 2.0 * kPi / 100.0;
@@ -184,7 +184,7 @@ TEST(PhysicsSystemSoft, ExplicitEulerGainsEnergyAsPredicted) {
 
 // RK4 on a harmonic oscillator multiplies the energy by |R(i y)|^2 = 1 - y^6/72 + y^8/576 per step (y = omega
 // dt): it LOSES energy slowly. 20 steps per period (y = 0.314), 1,000 periods: predicted 0.768; 1%.
-TEST(PhysicsSystemSoft, Rk4LosesEnergySlowlyAsPredicted) {
+TEST(PhysicsSystemSprings, Rk4LosesEnergySlowlyAsPredicted) {
     const int perPeriod = 20, periods = 1000;
     const EnergyRun run = RunEnergy(Integrator::RK4, perPeriod, periods);
     const double y = 2.0 * kPi / perPeriod;
@@ -197,7 +197,7 @@ TEST(PhysicsSystemSoft, Rk4LosesEnergySlowlyAsPredicted) {
 
 // erratum 5.2-20: the spring is a force integrated over the step, so the velocity it gives in one step scales
 // with dt (dv = F/m dt). The book added F/m to the velocity every step whatever dt (here dv = 3 at both steps).
-TEST(PhysicsSystemSoft, Erratum5_2_20_SpringVelocityChangeScalesWithDt) {
+TEST(PhysicsSystemSprings, Erratum5_2_20_SpringVelocityChangeScalesWithDt) {
     auto oneStep = [](float dt) {
         Particle a, b;
         for (Particle* p : {&a, &b}) {
@@ -220,7 +220,7 @@ TEST(PhysicsSystemSoft, Erratum5_2_20_SpringVelocityChangeScalesWithDt) {
     EXPECT_NEAR(oneStep(0.02f), 0.06f, 1e-6f);
 }
 
-TEST(PhysicsSystemSoft, SpringsAreCopiedAndClothSpringsApplied) {
+TEST(PhysicsSystemSprings, SpringsAreCopiedAndClothSpringsApplied) {
     // System springs are copies (docs/book-reference.md §3.4): editing the original after AddSpring changes nothing.
     Particle a, b;
     for (Particle* p : {&a, &b}) {
@@ -258,7 +258,7 @@ TEST(PhysicsSystemSoft, SpringsAreCopiedAndClothSpringsApplied) {
 
 // erratum 5.2-6 through the whole step: coincident spring ends, zero rest length and zero-length joints
 // (particles inside a box, so the point-in-box path runs) stay finite with every integrator.
-TEST(PhysicsSystemSoft, Erratum5_2_6_DegenerateSpringsAndJointsStayFinite) {
+TEST(PhysicsSystemSprings, Erratum5_2_6_DegenerateSpringsAndJointsStayFinite) {
     for (Integrator integrator : kAllIntegrators) {
         Particle c1, c2, z1, z2, j1, j2;
         c1.SetPosition(vec3(3, 2, 0));
@@ -289,7 +289,7 @@ TEST(PhysicsSystemSoft, Erratum5_2_6_DegenerateSpringsAndJointsStayFinite) {
 
 // Joints run after the free particles' own constraint pass and before cloth particles (docs/book-reference.md §2.8,
 // §3.4): after a step the pair is exactly at its length unless a box pushed one end.
-TEST(PhysicsSystemSoft, JointHoldsLengthAfterStep) {
+TEST(PhysicsSystemSprings, JointHoldsLengthAfterStep) {
     Particle a, b;
     a.SetPosition(vec3(0, 5, 0));
     b.SetPosition(vec3(0.3f, 5.2f, 0.1f));
