@@ -131,11 +131,19 @@ void PhysicsSystem::StepSoftVolumes(StepContext& ctx) {
             StopAtPairLimit();
         }
     };
-    search();
-    if (sleep != nullptr)
-        while (stopReason.empty() && sleep->WakeTouched(candidatePairs.data(), candidatePairs.size()) > 0) search();
-    if (!stopReason.empty()) return;
-    softSolver.Step(volumes, candidatePairs, ctx, active);
+    // With every body asleep (or static) no pair can have an active body and nothing moves: the search and the
+    // solver's pass over every body are skipped, and the solver only forgets its (already empty) contacts, which
+    // is what its Step would leave. A settled world then costs the wake checks and the island update.
+    if (sleep != nullptr && std::find(active, active + count, 1) == active + count) {
+        candidatePairs.clear();
+        softSolver.Clear();
+    } else {
+        search();
+        if (sleep != nullptr)
+            while (stopReason.empty() && sleep->WakeTouched(candidatePairs.data(), candidatePairs.size()) > 0) search();
+        if (!stopReason.empty()) return;
+        softSolver.Step(volumes, candidatePairs, ctx, active);
+    }
     if (sleep != nullptr) {
         // Islands are linked over the same candidate pairs that wake them (grown boxes that meet), not only over
         // pairs with contact points: two islands near enough to wake each other are one island, so they fall

@@ -49,7 +49,8 @@ BulletWorld::Impl::~Impl() {
     for (auto it = bodies.rbegin(); it != bodies.rend(); ++it) world.removeRigidBody(it->get());
 }
 
-BulletWorld::BulletWorld(const std::vector<BodySpec>& specs, int iterations) : impl(std::make_unique<Impl>()) {
+BulletWorld::BulletWorld(const std::vector<BodySpec>& specs, int iterations, bool sleeping)
+    : impl(std::make_unique<Impl>()) {
     btDiscreteDynamicsWorld& world = impl->world;
     world.setGravity(ToBt(kVolumeGravity));
     btContactSolverInfo& info = world.getSolverInfo();
@@ -75,7 +76,7 @@ BulletWorld::BulletWorld(const std::vector<BodySpec>& specs, int iterations) : i
             body->setLinearVelocity(ToBt(spec.velocity));
             body->setAngularVelocity(ToBt(spec.angularVelocity));
         }
-        body->setActivationState(DISABLE_DEACTIVATION);
+        if (!sleeping) body->setActivationState(DISABLE_DEACTIVATION);  // else Bullet's default deactivation
         world.addRigidBody(body.get());
         impl->bodies.push_back(std::move(body));
     }

@@ -1,7 +1,8 @@
 #pragma once
 // A scene definition (Demos/Scenes/WorldBuilder.h, BodySpec) built in Bullet, the peer engine of psb-peer-bench
 // (docs/peers.md): a btDiscreteDynamicsWorld with the default collision configuration, dispatcher, dynamic-AABB-
-// tree broadphase and sequential-impulse solver, split impulse on, every body kept awake, no damping. Bullet
+// tree broadphase and sequential-impulse solver, split impulse on, every body kept awake (or Bullet's default
+// deactivation), no damping. Bullet
 // types stay in the .cpp.
 
 #include <cstddef>
@@ -25,9 +26,10 @@ public:
     /// One Bullet body per spec, in order: a box or sphere shape, the spec's pose and velocities, mass (0 =
     /// static), friction sqrt(mu) and restitution sqrt(e) (Bullet multiplies the two bodies' values, so a pair
     /// gets sqrt(muA muB) as this engine does; for restitution that equals min(eA, eB) only when eA = eB),
-    /// damping 0, deactivation disabled. The solver runs `iterations` passes with split impulse; gravity is
-    /// this engine's (0, -9.82, 0).
-    BulletWorld(const std::vector<BodySpec>& specs, int iterations);
+    /// damping 0, deactivation disabled unless `sleeping` (then Bullet's default deactivation: its own
+    /// thresholds and time). The solver runs `iterations` passes with split impulse; gravity is this engine's
+    /// (0, -9.82, 0).
+    BulletWorld(const std::vector<BodySpec>& specs, int iterations, bool sleeping = false);
     ~BulletWorld();
     BulletWorld(const BulletWorld&) = delete;
     BulletWorld& operator=(const BulletWorld&) = delete;

@@ -1,7 +1,9 @@
 // psb-peer-bench: one scene definition (Demos/Scenes/WorldBuilder.h, PeerBoxpile / PeerPyramid / PeerTower) built
 // in Bullet (BulletWorld.h) and in this engine (RigidWorld), run alternately in one process, timed per step, and
-// measured for quality with one engine-independent probe. Prints one line of key=value pairs. docs/peers.md has
-// the method, the scenes and the figures.
+// measured for quality with one engine-independent probe. Prints one line of key=value pairs, and with --csv writes
+// one row per engine for a docs generator. docs/peers.md has the method, the scenes and the figures.
+#include <unistd.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -10,6 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
+#include <fstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,13 +32,19 @@ constexpr int kPenetrationWindow = 60;
 
 const char kUsage[] =
     "Usage: psb-peer-bench SCENE N [--solver book|accumulated|soft] [--steps S] [--warmup W] [--repeat R]\n"
+    "                      [--sleep] [--csv FILE]\n"
     "  SCENE N      boxpile N (cubes, 1..100000), pyramid N (base, 1..300) or tower N (height, 1..1000)\n"
     "  --solver S   this engine's contact solver (default accumulated; 10 iterations for accumulated)\n"
     "  --steps S    steps per run at 1/60 s (default 600)\n"
     "  --warmup W   first steps left out of the timing median (default 60, < S)\n"
     "  --repeat R   rounds, each running both engines, Bullet first in odd rounds (default 3)\n"
+    "  --sleep      both engines sleep at their defaults (Bullet's deactivation; this engine's islands,\n"
+    "               docs/sleep.md); without it neither sleeps\n"
+    "  --csv FILE   also write FILE (replaced atomically): header scene,bodies,sleep,threads,engine,\n"
+    "               cpu_ms_per_step,ratio_to_bullet,max_displacement_m,stands and one row per engine\n"
     "Builds the scene in Bullet and in this engine from one definition and prints one line of key=value pairs:\n"
-    "scene, n, solver; bullet_ms, psb_ms, ratio (psb / bullet): medians of wall ms per step after the warm-up,\n"
+    "scene, n, solver, sleep (on|off); bullet_ms, psb_ms, ratio (psb / bullet): medians of wall ms per step after the "
+    "warm-up,\n"
     "median over rounds; bullet_cpu_ms, psb_cpu_ms, cpu_ratio: the same from this thread's CPU time; each\n"
     "engine's quality: pen (deepest penetration over the last 60 steps, m, measured with this engine's box\n"
     "manifolds on both engines' poses), and ke (final kinetic energy, J) and below (bodies with centre below\n"
@@ -49,6 +58,8 @@ struct Options {
     int steps = 600;
     int warmup = 60;
     int repeat = 3;
+    bool sleep = false;  // both engines at their default sleeping (--sleep)
+    std::string csv;     // --csv FILE, empty: none
 };
 
 /// Quality figures of one run, computed the same way for both engines (Probe).
@@ -124,14 +135,15 @@ private:
 };
 
 /// This engine with the bench's settings: the chosen contact solver, 10 iterations for Accumulated (the book's
-/// 5 otherwise), sleeping off; damping off comes from the specs.
+/// 5 otherwise), sleeping off or at its defaults (docs/sleep.md); damping off comes from the specs.
 class PsbEngine {
 public:
-    PsbEngine(const std::vector<BodySpec>& specs, ContactSolver solver) : world(specs) {
+    PsbEngine(const std::vector<BodySpec>& specs, ContactSolver solver, bool sleep) : world(specs) {
         WorldSettings& s = world.system.settings;
         s.contactSolver = solver;
         if (solver == ContactSolver::Accumulated) s.solverIterations = 10;
-        s.sleep.enabled = false;
+        s.sleep = SleepSettings();
+        s.sleep.enabled = sleep;
     }
     void Step() { world.system.Update(kDt); }
     std::size_t BodyCount() const { return world.Bodies().size(); }
@@ -146,10 +158,11 @@ private:
     RigidWorld world;
 };
 
-/// Bullet with the bench's settings: 10 solver iterations, split impulse, one internal step per frame.
+/// Bullet with the bench's settings: 10 solver iterations, split impulse, one internal step per frame, bodies kept
+/// awake or Bullet's default deactivation.
 class BulletEngine {
 public:
-    explicit BulletEngine(const std::vector<BodySpec>& specs) : world(specs, 10) {}
+    BulletEngine(const std::vector<BodySpec>& specs, bool sleep) : world(specs, 10, sleep) {}
     void Step() { world.Step(kDt); }
     std::size_t BodyCount() const { return world.BodyCount(); }
     BodyState State(std::size_t i) const { return world.State(i); }
@@ -237,6 +250,10 @@ int Parse(int argc, char** argv, Options* o, bool* help) {
             positional.push_back(arg);
             continue;
         }
+        if (std::strcmp(arg, "--sleep") == 0) {
+            o->sleep = true;
+            continue;
+        }
         if (i + 1 >= argc) return Usage("missing value after", arg);
         const char* value = argv[++i];
         if (std::strcmp(arg, "--solver") == 0) {
@@ -251,6 +268,9 @@ int Parse(int argc, char** argv, Options* o, bool* help) {
         } else if (std::strcmp(arg, "--warmup") == 0) {
             if (!ParseInt(value, &o->warmup) || o->warmup < 0)
                 return Usage("--warmup must be an integer >= 0, got", value);
+        } else if (std::strcmp(arg, "--csv") == 0) {
+            if (*value == '\0') return Usage("--csv needs a file name, got", value);
+            o->csv = value;
         } else if (std::strcmp(arg, "--repeat") == 0) {
             if (!ParseInt(value, &o->repeat) || o->repeat < 1 || o->repeat > 1000)
                 return Usage("--repeat must be an integer in 1..1000, got", value);
@@ -285,6 +305,62 @@ int Parse(int argc, char** argv, Options* o, bool* help) {
     return 0;
 }
 
+/// A tower or pyramid "stands" while no cube has moved more than this from its start (a tenth of a cube's edge).
+constexpr float kStandsDisplacement = 0.1f;
+/// A boxpile "stands" (has settled in place) when no cube is below the ground and the final kinetic energy is at
+/// most this per cube (a 1 kg cube at 0.14 m/s).
+constexpr float kSettledEnergyPerBody = 0.01f;
+
+bool Stands(const Options& o, const Quality& q) {
+    if (o.scene == "boxpile") return q.below == 0 && q.kineticEnergy <= kSettledEnergyPerBody * static_cast<float>(o.n);
+    return q.displacement <= kStandsDisplacement;
+}
+
+/// --csv: the file is written to a temporary name beside it, opened before the run (a bad path fails before any
+/// time is spent), and renamed over FILE once complete, so a reader never sees half a file.
+class CsvOutput {
+public:
+    /// False (with the reason on stderr) when the temporary file cannot be created.
+    bool Open(const std::string& path) {
+        target = path;
+        temp = path + ".tmp." + std::to_string(static_cast<long>(getpid()));
+        out.open(temp, std::ios::out | std::ios::trunc);
+        if (!out) {
+            std::fprintf(stderr, "psb-peer-bench: cannot write --csv '%s': %s\n", path.c_str(), std::strerror(errno));
+            return false;
+        }
+        out << "scene,bodies,sleep,threads,engine,cpu_ms_per_step,ratio_to_bullet,max_displacement_m,stands\n";
+        return true;
+    }
+    /// One engine's row; `bodies` counts the dynamic bodies (the ground left out).
+    void Row(const Options& o, std::size_t bodies, const char* engine, double cpuMs, double ratio, const Quality& q) {
+        char line[256];
+        std::snprintf(line, sizeof line, "%s,%zu,%s,%d,%s,%.6g,%.6g,%.6g,%s\n", o.scene.c_str(), bodies,
+                      o.sleep ? "on" : "off", 1, engine, cpuMs, ratio, static_cast<double>(q.displacement),
+                      Stands(o, q) ? "yes" : "no");
+        out << line;
+    }
+    /// Renames the complete file over the target; false (the temporary removed, the reason on stderr) on failure.
+    bool Commit() {
+        out.close();
+        if (!out || std::rename(temp.c_str(), target.c_str()) != 0) {
+            std::fprintf(stderr, "psb-peer-bench: cannot write --csv '%s': %s\n", target.c_str(), std::strerror(errno));
+            std::remove(temp.c_str());
+            return false;
+        }
+        return true;
+    }
+    /// Removes the temporary file when the run fails before Commit.
+    void Abandon() {
+        out.close();
+        std::remove(temp.c_str());
+    }
+
+private:
+    std::string target, temp;
+    std::ofstream out;
+};
+
 std::vector<BodySpec> Scene(const Options& o) {
     if (o.scene == "boxpile") return PeerBoxpile(o.n);
     if (o.scene == "pyramid") return PeerPyramid(o.n);
@@ -301,6 +377,8 @@ int main(int argc, char** argv) {
         std::fputs(kUsage, stdout);
         return 0;
     }
+    CsvOutput csv;
+    if (!o.csv.empty() && !csv.Open(o.csv)) return 2;
     const std::vector<BodySpec> specs = Scene(o);
     Probe probe(specs);
     std::vector<double> bulletMs, psbMs, bulletCpuMs, psbCpuMs;
@@ -309,13 +387,14 @@ int main(int argc, char** argv) {
         // Alternate which engine goes first, so neither always runs on a warmer (or busier) machine.
         for (int k = 0; k < 2; ++k) {
             if ((k == 0) == (round % 2 == 0)) {
-                BulletEngine engine(specs);
+                BulletEngine engine(specs, o.sleep);
                 bullet = Run(engine, probe, o);
                 bulletMs.push_back(bullet.msPerStep);
                 bulletCpuMs.push_back(bullet.cpuMsPerStep);
             } else {
-                PsbEngine engine(specs, o.solver);
+                PsbEngine engine(specs, o.solver, o.sleep);
                 if (!engine.Error().empty()) {
+                    if (!o.csv.empty()) csv.Abandon();
                     std::fprintf(stderr, "psb-peer-bench: the scene was refused: %s\n", engine.Error().c_str());
                     return 1;
                 }
@@ -326,9 +405,15 @@ int main(int argc, char** argv) {
         }
     }
     const double bMs = Median(bulletMs), pMs = Median(psbMs);
-    std::printf("scene=%s n=%d solver=%s bullet_ms=%.4g psb_ms=%.4g ratio=%.3f", o.scene.c_str(), o.n,
-                ToString(o.solver), bMs, pMs, bMs > 0.0 ? pMs / bMs : 0.0);
     const double bCpu = Median(bulletCpuMs), pCpu = Median(psbCpuMs);
+    if (!o.csv.empty()) {
+        const std::string engine = std::string("psb-") + ToString(o.solver);
+        csv.Row(o, specs.size() - 1, engine.c_str(), pCpu, bCpu > 0.0 ? pCpu / bCpu : 0.0, psb.quality);
+        csv.Row(o, specs.size() - 1, "bullet", bCpu, 1.0, bullet.quality);
+        if (!csv.Commit()) return 1;
+    }
+    std::printf("scene=%s n=%d solver=%s sleep=%s bullet_ms=%.4g psb_ms=%.4g ratio=%.3f", o.scene.c_str(), o.n,
+                ToString(o.solver), o.sleep ? "on" : "off", bMs, pMs, bMs > 0.0 ? pMs / bMs : 0.0);
     std::printf(" bullet_cpu_ms=%.4g psb_cpu_ms=%.4g cpu_ratio=%.3f", bCpu, pCpu, bCpu > 0.0 ? pCpu / bCpu : 0.0);
     const Quality& b = bullet.quality;
     const Quality& p = psb.quality;

@@ -5,8 +5,8 @@
 set -eu
 bench=$1
 fail() { echo "peers.smoke: FAIL: $*" >&2; exit 1; }
-out=$(mktemp) err=$(mktemp)
-trap 'rm -f "$out" "$err"' EXIT
+out=$(mktemp) err=$(mktemp) dir=$(mktemp -d)
+trap 'rm -f "$out" "$err"; rm -rf "$dir"' EXIT
 
 # value KEY: the value of KEY in the line in $out (empty if absent).
 value() { tr ' ' '\n' <"$out" | awk -F= -v k="$1" '$1 == k { print $2 }'; }
@@ -30,7 +30,7 @@ holds() {
       exit 1
     }' || fail "expected $1 in: $(cat "$out")"
 }
-common="scene n solver bullet_ms psb_ms ratio bullet_cpu_ms psb_cpu_ms cpu_ratio bullet_pen psb_pen steps warmup repeat"
+common="scene n solver sleep bullet_ms psb_ms ratio bullet_cpu_ms psb_cpu_ms cpu_ratio bullet_pen psb_pen steps warmup repeat"
 
 # --- help and bad usage
 "$bench" --help >"$out" || fail "--help exited $?"
@@ -57,6 +57,8 @@ refused "--warmup 10 must be smaller than --steps 10" tower 5 --steps 10 --warmu
 refused "'0'" tower 5 --repeat 0
 refused "'-3'" tower 5 --steps -3
 refused "missing value after '--steps'" tower 5 --steps
+refused "'$dir/none/x.csv'" tower 5 --csv "$dir/none/x.csv"
+[ -z "$(ls "$dir")" ] || fail "a refused --csv left files behind: $(ls "$dir")"
 
 # --- tower 5, accumulated: stands in both engines
 "$bench" tower 5 --solver accumulated --steps 120 --warmup 10 --repeat 1 >"$out" 2>"$err" || fail "tower 5 exited $?"
@@ -105,4 +107,21 @@ holds "psb_pen < 0.01"
 holds "psb_below == 0"
 holds "psb_pen < 0.05"
 holds "psb_ke < 10"
+# --- --sleep and --csv: both engines sleep; one CSV row per engine, with the header a docs generator reads
+"$bench" tower 5 --solver soft --sleep --steps 200 --warmup 10 --repeat 1 --csv "$dir/t.csv" >"$out" 2>"$err" ||
+  fail "tower 5 --sleep --csv exited $?"
+[ "$(value sleep)" = on ] || fail "sleep not echoed as on: $(cat "$out")"
+holds "psb_disp < 0.05"
+[ "$(ls "$dir")" = t.csv ] || fail "--csv left other files: $(ls "$dir")"
+[ "$(sed -n 1p "$dir/t.csv")" = "scene,bodies,sleep,threads,engine,cpu_ms_per_step,ratio_to_bullet,max_displacement_m,stands" ] ||
+  fail "CSV header: $(sed -n 1p "$dir/t.csv")"
+[ "$(wc -l <"$dir/t.csv")" -eq 3 ] || fail "CSV has $(wc -l <"$dir/t.csv") lines, expected 3"
+awk -F, 'NR == 2 && !($1 == "tower" && $2 == 5 && $3 == "on" && $4 == 1 && $5 == "psb-soft" && $6 > 0 && $7 > 0 && $9 == "yes") { exit 1 }
+         NR == 3 && !($5 == "bullet" && $7 == 1) { exit 1 }' "$dir/t.csv" || fail "CSV rows: $(cat "$dir/t.csv")"
+cpu=$(tr ' ' '\n' <"$out" | awk -F= '$1 == "psb_cpu_ms" { print $2 }')
+awk -F, -v c="$cpu" 'NR == 2 { exit !($6 + 0 > 0.999 * c && $6 + 0 < 1.001 * c) }' "$dir/t.csv" ||
+  fail "CSV psb time $(sed -n 2p "$dir/t.csv") is not the line's psb_cpu_ms=$cpu"
+"$bench" tower 5 --solver soft --steps 30 --warmup 5 --repeat 1 --csv "$dir/t.csv" >"$out" 2>"$err" || fail "second --csv run"
+[ "$(value sleep)" = off ] || fail "sleep not echoed as off: $(cat "$out")"
+[ "$(awk -F, 'NR == 2 { print $3 }' "$dir/t.csv")" = off ] || fail "CSV not replaced: $(cat "$dir/t.csv")"
 echo "peers.smoke: ok"
