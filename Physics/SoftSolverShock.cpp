@@ -44,6 +44,8 @@ void SoftContactSolver::BuildShock(const StepContext& ctx) {
     shockBlockStart.clear();
     const float ratio = ctx.settings.soft.shockMassRatio;
     if (!(ratio > 0.0f) || pairs.empty()) return;
+    const std::vector<Block>& blocks = graph.Blocks();
+    const std::vector<int>& blockBodies = graph.BlockBodies();
     // Which blocks reach the ratio (largest over smallest dynamic mass), and each moving body's block.
     const std::size_t n = state.size();
     bodyBlock.assign(n, -1);
@@ -166,9 +168,10 @@ void SoftContactSolver::BuildShockPoints() {
         if (k == 0 || shockPoints[k].upper != shockPoints[k - 1].upper ||
             shockPoints[k].lower != shockPoints[k - 1].lower)
             ++shockDown[static_cast<std::size_t>(shockPoints[k].upper)];
-    shockBlockStart.assign(blocks.size() + 1, 0);
+    const std::size_t blockCount = graph.Blocks().size();
+    shockBlockStart.assign(blockCount + 1, 0);
     for (const ShockPoint& p : shockPoints) ++shockBlockStart[p.block + 1];
-    for (std::size_t b = 0; b < blocks.size(); ++b) shockBlockStart[b + 1] += shockBlockStart[b];
+    for (std::size_t b = 0; b < blockCount; ++b) shockBlockStart[b + 1] += shockBlockStart[b];
 }
 
 std::size_t SoftContactSolver::ShockGroupEnd(std::size_t first, std::size_t end) const {
