@@ -187,6 +187,11 @@ inline float Max(float a, float b) { return a < b ? b : a; }
 inline float Min(float a, float b) { return b < a ? b : a; }
 inline Float4 Max(Float4 a, Float4 b) { return a < b ? b : a; }
 inline Float4 Min(Float4 a, Float4 b) { return b < a ? b : a; }
+/// Both masks, lane by lane; whether any lane of a mask is set.
+inline bool And(bool a, bool b) { return a && b; }
+inline Mask4 And(Mask4 a, Mask4 b) { return a & b; }
+inline bool Any(bool a) { return a; }
+inline bool Any(Mask4 a) { return (a[0] | a[1] | a[2] | a[3]) != 0; }
 /// mask ? a : b lane by lane.
 inline float Select(bool mask, float a, float b) { return mask ? a : b; }
 inline Float4 Select(Mask4 mask, Float4 a, Float4 b) { return mask ? a : b; }

@@ -97,6 +97,23 @@ inline void MakeRow(const Vec4x3& rA, const Vec4x3& rB, const Vec4x3& d, Float4 
     row->mass = Select(valid & (k > zero), Wide(1.0f) / k, zero);
 }
 
+/// (rA x u) . IA^-1 (rA x u) + (rB x u) . IB^-1 (rB x u) for the slip u = t1 s1 + t2 s2, from the two friction rows
+/// (rows are linear in their direction): the angular part of the inverse mass along u, times |u|^2.
+inline float SlipAngularInvMass(const Row& r1, const Row& r2, float s1, float s2) {
+    const V4 a = Load(r1.rAxD) * Splat(s1) + Load(r2.rAxD) * Splat(s2);
+    const V4 ia = Load(r1.iArAxD) * Splat(s1) + Load(r2.iArAxD) * Splat(s2);
+    const V4 b = Load(r1.rBxD) * Splat(s1) + Load(r2.rBxD) * Splat(s2);
+    const V4 ib = Load(r1.iBrBxD) * Splat(s1) + Load(r2.iBrBxD) * Splat(s2);
+    return Dot(a, ia) + Dot(b, ib);
+}
+inline Float4 SlipAngularInvMass(const WideRow& r1, const WideRow& r2, Float4 s1, Float4 s2) {
+    const Vec4x3 a = Add(Scale(r1.rAxD, s1), Scale(r2.rAxD, s2));
+    const Vec4x3 ia = Add(Scale(r1.iArAxD, s1), Scale(r2.iArAxD, s2));
+    const Vec4x3 b = Add(Scale(r1.rBxD, s1), Scale(r2.rBxD, s2));
+    const Vec4x3 ib = Add(Scale(r1.iBrBxD, s1), Scale(r2.iBrBxD, s2));
+    return Dot(a, ia) + Dot(b, ib);
+}
+
 /// The factor that brings a friction impulse of squared length sq back onto the cone of radius limit: 1 inside it.
 inline float ConeScale(float sq, float limit) {
     if (!(sq > limit * limit)) return 1.0f;
@@ -123,7 +140,11 @@ inline void WarmStartPoint(B& x, R invA, R invB, const D& n, const D& t1, const 
 }
 
 /// Friction (relax pass only): the TOTAL stays inside the Coulomb cone mu jn (book §15, Coulomb clamp), jn from the
-/// last pass without bias (P::support; docs/ch15.md, "Convergence of the contact solvers").
+/// last pass without bias (P::support; docs/ch15.md, "Convergence of the contact solvers"). A sticking contact is two
+/// rows, t1 and t2, each with its own effective mass. A sliding one (the two rows would leave the cone) is one row
+/// along its slip, so its impulse opposes the slip: the two rows' masses differ wherever the contact is off the
+/// body's axes, and their clamped sum pushed a box sliding at a yaw sideways (3.3 cm off the Coulomb stop at every
+/// step; ContactSolver.ABoxSlidingAtAYawStopsWhereCoulombSays). The accumulated solver does the same.
 template <class B, class R, class D, class P>
 inline void SolveFriction(B& x, R invA, R invB, const D& t1, const D& t2, R friction, P& c) {
     const R limit = friction * c.support;
@@ -131,6 +152,16 @@ inline void SolveFriction(B& x, R invA, R invB, const D& t1, const D& t2, R fric
     RowSpeeds(x, t1, c.tangent1, t2, c.tangent2, &speed1, &speed2);
     R j1 = c.tangent1.impulse - c.tangent1.mass * speed1;
     R j2 = c.tangent2.impulse - c.tangent2.mass * speed2;
+    const R zero = Fill<R>(0.0f);
+    const R slipSq = speed1 * speed1 + speed2 * speed2;
+    const auto slides = And(j1 * j1 + j2 * j2 > limit * limit, slipSq > zero);
+    if (Any(slides)) {
+        // Effective mass along the slip u = t1 s1 + t2 s2: |u|^2 / (u . K u), K the contact's inverse mass matrix.
+        const R k = (invA + invB) * slipSq + SlipAngularInvMass(c.tangent1, c.tangent2, speed1, speed2);
+        const R mass = Select(k > zero, slipSq / k, zero);
+        j1 = Select(slides, c.tangent1.impulse - mass * speed1, j1);
+        j2 = Select(slides, c.tangent2.impulse - mass * speed2, j2);
+    }
     // Outside the cone: scaled back onto it (a scale of 1 leaves the others unchanged, bit for bit).
     const R scale = ConeScale(j1 * j1 + j2 * j2, limit);
     j1 = j1 * scale;

@@ -137,7 +137,7 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
                 Solve(block, ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, true);
             if (!shockPoints.empty())
                 ShockPass(static_cast<std::size_t>(&block - blocks.data()), ctx.invH, staticSoftness.biasRate,
-                          soft.maxPushoutSpeed, soft.linearSlop);
+                          soft.maxPushoutSpeed, soft.linearSlop, false);
             IntegratePositions(ctx, block);
             // The first relax pass brings each pair's separations up to date as it reaches the pair (the same
             // values UpdateSeparations gives: poses do not change during a pass); without one, UpdateSeparations
@@ -147,7 +147,8 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
                 Solve(block, ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, false, k == 0);
             // Again after the relax pass, without push-out: the velocities the next substep starts from.
             if (!shockPoints.empty())
-                ShockPass(static_cast<std::size_t>(&block - blocks.data()), ctx.invH, 0.0f, 0.0f, soft.linearSlop);
+                ShockPass(static_cast<std::size_t>(&block - blocks.data()), ctx.invH, 0.0f, 0.0f, soft.linearSlop,
+                          true);
         }
     }
     StoreBatchImpulses();  // the batches' impulses back to the contacts (none without colouring)

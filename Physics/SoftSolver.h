@@ -184,15 +184,21 @@ public:
     /// upper; anchors from the bodies' centres at the start of the step.
     struct ShockPoint {
         vec3 n, rU, rL;
-        vec3 rUxN, iUrUxN;                    // rU x n and its image under upper's world inverse inertia
-        float mass = 0.0f;                    // 1 / (upper's inverse mass + rUxN . iUrUxN), kg
-        float base = 0.0f;                    // separation at the step's start minus n . (rU - rL), m
-        vec3 t1, t2;                          // the pair's tangents
-        vec3 rUxT1, iUrUxT1, rUxT2, iUrUxT2;  // rU x t and their images under upper's world inverse inertia
-        float massT1 = 0.0f, massT2 = 0.0f;   // upper's effective masses along t1, t2, kg
-        float friction = 0.0f;                // the pair's mu
-        vec3 rLxN, rLxT1, rLxT2;              // rL x n, rL x t1, rL x t2 (lower's rows)
-        std::size_t sequence = 0;             // order of creation (pair order): the sort's last key
+        vec3 rUxN, iUrUxN;      // rU x n and its image under upper's world inverse inertia
+        vec3 rLxN;              // rL x n (lower's row)
+        float mass = 0.0f;      // 1 / (upper's inverse mass + rUxN . iUrUxN), kg
+        float base = 0.0f;      // separation at the step's start minus n . (rU - rL), m
+        float friction = 0.0f;  // the pair's mu
+        float load = 0.0f;      // normal impulse the shock passes gave at the point this substep, N s
+        vec3 t1, t2;            // the pair's tangents, signed as the solve's tangent impulses push upper
+        vec3 given;             // (a pair's first point) friction impulse the sweeps gave upper this substep, N s
+        struct Slots {
+            float* support = nullptr;   // the solve's normal impulse of its last pass without bias at the point
+            float* tangent1 = nullptr;  // its tangent impulses this substep
+            float* tangent2 = nullptr;
+        } rows;
+        bool rolls = false;        // a sphere in the pair: friction works at the points, turns included
+        std::size_t sequence = 0;  // order of creation (pair order): the sort's last key
         int upper = -1, lower = -1;
         int layer = 0;  // lower's distance from a static body, in pairs
         std::size_t block = 0;
@@ -240,10 +246,21 @@ private:
     // Shock propagation (SoftSolverShock.cpp): built once per step after BuildBlocks for the blocks whose mass
     // ratio reaches soft.shockMassRatio; run after each substep's biased passes.
     void BuildShock(const StepContext& ctx);
+    void BuildShockLayers();
+    void BuildShockPoints();
     /// Bottom up, each point's upper body is given the normal speed the biased pass asks of the contact against a
     /// lower body held still: approach no faster than the gap closes, push out of penetration at the static
-    /// softness' bias rate.
-    void ShockPass(std::size_t block, float invH, float biasRate, float maxPushout, float slop);
+    /// softness' bias rate. Then (`relax`: after the relax pass) the friction sweep.
+    void ShockPass(std::size_t block, float invH, float biasRate, float maxPushout, float slop, bool relax);
+    /// End of the points of the pair that starts at `first` (same upper and lower body).
+    std::size_t ShockGroupEnd(std::size_t first, std::size_t end) const;
+    void ShockNormals(std::size_t first, std::size_t last, float invH, float biasRate, float maxPushout, float slop,
+                      bool relax);
+    /// The normal impulse through a pair this substep, N s: its points' shock and solve impulses and the upper
+    /// body's share of what leans on it.
+    float PairLoad(std::size_t first, std::size_t last) const;
+    /// The upper body given the lower one's sideways velocity, within the cone of the pair's load.
+    void ShockFriction(std::size_t first, std::size_t last);
     void StoreBodies(const std::vector<RigidbodyVolume*>& volumes);
 
     std::vector<BodyState> state;
@@ -258,6 +275,9 @@ private:
     std::vector<std::size_t> shockBlockStart;  // per block: its first shock point (one more entry at the end)
     std::vector<int> bodyLayer, bodyBlock, layerQueue, adjacencyStart, adjacency;  // BuildShock's scratch
     std::vector<unsigned char> blockShocks;
+    std::vector<ShockPoint::Slots> rowSlots;  // per contact: where the solve keeps its impulses (or batch lanes)
+    std::vector<float> carried;               // per body: the load leaning on it this substep (ShockPass), N s
+    std::vector<int> shockDown;               // per body: the shock pairs it rests on
     std::size_t warmStarted = 0;
     float inheritedNormal = 0.0f;
     long long lastStep = -2;
