@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "Demos/Scenes/Parameters.h"
-#include "Physics/ModelChoice.h"
+#include "Physics/ModelChoice/ModelChoice.h"
 
 class PhysicsSystem;
 

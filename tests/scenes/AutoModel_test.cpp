@@ -15,7 +15,7 @@
 
 #include "Demos/Scenes/FileScene.h"
 #include "Demos/Scenes/SceneFile.h"
-#include "Physics/ModelChoice.h"
+#include "Physics/ModelChoice/ModelChoice.h"
 #include "Physics/PhysicsSystem.h"
 
 namespace {

@@ -1,13 +1,13 @@
-#include "Physics/ModelChoice.h"
+#include "Physics/ModelChoice/ModelChoice.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 
-#include "Physics/ModelChoiceDetail.h"
+#include "Physics/ModelChoice/Internals.h"
 
-using namespace model_choice;  // NOLINT: this file's own internals (Physics/ModelChoiceDetail.h)
+using namespace model_choice;  // NOLINT: this file's own internals (Physics/ModelChoice/Internals.h)
 
 namespace {
 

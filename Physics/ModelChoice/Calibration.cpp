@@ -4,7 +4,7 @@
 #include <cmath>
 #include <memory>
 
-#include "Physics/ModelChoiceDetail.h"
+#include "Physics/ModelChoice/Internals.h"
 #include "Physics/PhysicsSystem.h"
 
 namespace model_choice {

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "Physics/ModelChoice.h"
-#include "Physics/ModelChoiceDetail.h"
+#include "Physics/ModelChoice/ModelChoice.h"
+#include "Physics/ModelChoice/Internals.h"
 
-using namespace model_choice;  // NOLINT: the estimator's internals (Physics/ModelChoiceDetail.h)
+using namespace model_choice;  // NOLINT: the estimator's internals (Physics/ModelChoice/Internals.h)
 
 ModelWatch::ModelWatch(const CandidateSpace& s, const ErrorBudget& b, const ChoiceSettings& c,
                        const CandidateEstimate& chosen)

@@ -1,6 +1,6 @@
 #pragma once
-// The estimator's internals shared by Physics/ModelChoice.cpp (the choice), Physics/ModelWatch.cpp (the live watch)
-// and Physics/ModelWindow.cpp (one window of probes): docs/model-choice.md. Not for use outside those files.
+// The estimator's internals shared by Physics/ModelChoice/Choose.cpp (the choice), Physics/ModelChoice/Watch.cpp (the live watch)
+// and Physics/ModelChoice/Calibration.cpp (one window of probes): docs/model-choice.md. Not for use outside those files.
 
 #include <time.h>
 
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "Physics/ModelChoice.h"
+#include "Physics/ModelChoice/ModelChoice.h"
 
 namespace model_choice {
 
@@ -126,7 +126,7 @@ struct WindowOptions {
 };
 
 /// One window: the candidate and (unless the quantity is observed directly) its refinement run from the same state
-/// for `window` seconds (Physics/ModelWindow.cpp says how).
+/// for `window` seconds (Physics/ModelChoice/Calibration.cpp says how).
 WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
                        const ErrorBudget& budget, double window, const WindowOptions& o);
 

@@ -6,7 +6,7 @@
 
 #include "Physics/Cloth.h"
 #include "Physics/DistanceJoint.h"
-#include "Physics/ModelChoice.h"
+#include "Physics/ModelChoice/ModelChoice.h"
 #include "Physics/Particle.h"
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
