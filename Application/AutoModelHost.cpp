@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "Application/Runner.h"
+#include "Application/ExitCodes.h"
 #include "Demos/DemoBase.h"
 
 int ChooseAutoModel(DemoBase& demo, const AutoModelHost& host, bool* explained) {

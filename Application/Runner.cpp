@@ -21,9 +21,6 @@
 #include "Application/ProgressLine.h"
 #include "Application/RunOutputs.h"
 #include "Application/StateCsv.h"
-#if PSB_HAVE_WINDOW
-#include "Application/WindowedRunner.h"
-#endif
 #include "Demos/DemoBase.h"
 #include "Demos/DemoRegistry.h"
 #include "Demos/SceneFileDemo.h"
@@ -74,15 +71,6 @@ struct Session {
 };
 
 // ---- Before the run: exit 2 on any bad argument, with nothing written.
-
-int CheckDemoId(const std::string& id) {
-    if (FindDemo(id)) return kExitOk;
-    std::string ids;
-    for (const DemoInfo& d : AllDemos()) ids += (ids.empty() ? "" : ", ") + d.id;
-    std::fprintf(stderr, "physics-sandbox: unknown demo '%s'; valid ids: %s\n", id.c_str(),
-                 ids.empty() ? "(none registered)" : ids.c_str());
-    return kExitUsage;
-}
 
 // The window and the demo, with the context current when drawing. Exit 3 when the demo cannot start.
 int StartDemo(const Options& o, const SceneDescription* scene, Session* s, bool drawing) {
@@ -526,10 +514,13 @@ int RunUnguarded(const Options& given, RunStats* stats) {
 
 }  // namespace
 
-int FinishStdout() {
-    if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return kExitOk;
-    std::fprintf(stderr, "physics-sandbox: cannot write to standard output: %s\n", std::strerror(errno));
-    return kExitFailure;
+int CheckDemoId(const std::string& id) {
+    if (FindDemo(id)) return kExitOk;
+    std::string ids;
+    for (const DemoInfo& d : AllDemos()) ids += (ids.empty() ? "" : ", ") + d.id;
+    std::fprintf(stderr, "physics-sandbox: unknown demo '%s'; valid ids: %s\n", id.c_str(),
+                 ids.empty() ? "(none registered)" : ids.c_str());
+    return kExitUsage;
 }
 
 int RunSandbox(const Options& options, RunStats* stats) {
@@ -545,48 +536,4 @@ int RunSandbox(const Options& options, RunStats* stats) {
         std::fprintf(stderr, "physics-sandbox: the run stopped: %s\n", e.what());
     }
     return kExitFailure;
-}
-
-static int RunWindow(const Options& o) {
-#if PSB_HAVE_WINDOW
-    if (!o.demo.empty()) {
-        if (const int code = CheckDemoId(o.demo); code != kExitOk) return code;
-    }
-    WindowedOptions w;
-    w.demo = o.demo;
-    w.sets = o.sets;
-    w.frames = o.framesGiven ? o.frames : 0;
-    w.width = o.width;
-    w.height = o.height;
-    w.step = o.step.ToDouble();
-    w.noUi = o.noUi;
-    w.quiet = o.quiet;
-    return RunWindowed(w);
-#else
-    (void)o;
-    std::fprintf(stderr, "physics-sandbox: --window: this build has no window (CMake PSB_WITH_WINDOW, libglfw3-dev)\n");
-    return kExitUsage;
-#endif
-}
-
-int RunCommandLine(int argc, const char* const* argv) {
-    InstallTemporaryCleanupOnSignals("physics-sandbox");
-    Options options;
-    std::string error;
-    if (ParseCommandLine(argc, argv, &options, &error) != ParseStatus::Ok) {
-        std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
-        return kExitUsage;
-    }
-    for (const std::string& note : options.notes) std::fprintf(stderr, "physics-sandbox: %s\n", note.c_str());
-    if (options.mode == Options::Mode::Help) {
-        std::fputs(UsageText().c_str(), stdout);
-        return FinishStdout();
-    }
-    if (options.mode == Options::Mode::List) {
-        for (const DemoInfo& d : AllDemos()) std::printf("%s\t%s\n", d.id.c_str(), d.title.c_str());
-        return FinishStdout();
-    }
-    if (options.window) return RunWindow(options);
-    RunStats stats;
-    return RunSandbox(options, &stats);
 }

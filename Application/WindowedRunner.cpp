@@ -14,7 +14,7 @@
 #include <thread>
 
 #include "Application/AutoModelHost.h"
-#include "Application/Runner.h"
+#include "Application/ExitCodes.h"
 #include "Demos/DemoBase.h"
 #include "Platform/DesktopWindow.h"
 #include "Windows/BookImGuiStyle.h"
