@@ -386,7 +386,7 @@ int ReportMissedBudget(const RunLoop& r, int code) {
     std::fprintf(stderr,
                  "physics-sandbox: %s: ran, but missed its error budget: the running estimate %.3g went over the "
                  "budget %.3g at frame %d and no finer model brought it back (outputs written; exit 4)\n",
-                 r.o.demo.c_str(), model.RunningEstimate(), double(model.Request().tolerance), r.missedAt);
+                 r.o.demo.c_str(), model.RunningEstimate(), double(model.Request().bound), r.missedAt);
     return code == kExitOk ? kExitMissedBudget : code;
 }
 

@@ -72,7 +72,7 @@ public:
     virtual const PhysicsSystem* World() const { return nullptr; }
     /// Appends what the demo does beyond its world that a scene file cannot express (for --export-scene).
     virtual void ExportNotes(std::vector<std::string>* /*notes*/) const {}
-    /// The demo's error-budget request (the `--set` keys model, tolerance, budget: docs/model-choice.md), or
+    /// The demo's error-budget request (the `--set` keys model, error-budget, budget: docs/model-choice.md), or
     /// nullptr for a demo without them (a scripted one). The host chooses the model when it is auto.
     AutoModelRequest* AutoModelRequestOf() { return hasAutoModelKeys ? &autoModelRequest : nullptr; }
     const AutoModelRequest* AutoModelRequestOf() const { return hasAutoModelKeys ? &autoModelRequest : nullptr; }
@@ -85,7 +85,7 @@ protected:
     void DrawPanel(const char* title, float height, PanelScrollbar scrollbar = PanelScrollbar::Hidden) const;
     /// Appends the book's panel-only "Show Help" button (on the line of the widget before it) to the table.
     void AddShowHelpButton();
-    /// Appends the error-budget keys model, tolerance and budget (AddAutoModelParameters, bound to
+    /// Appends the error-budget keys model, error-budget and budget (AddAutoModelParameters, bound to
     /// autoModelRequest) and a panel row with the auto model's summary, drawn only while the auto model is active
     /// (so a fixed model's panel is unchanged). Called last in the constructor, so `--params` only gains lines.
     void AddAutoModelKeys();

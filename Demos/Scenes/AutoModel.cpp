@@ -97,24 +97,6 @@ std::string Number(double v) {
 
 }  // namespace
 
-ErrorBudget AutoModelRequest::Budget() const {
-    ErrorBudget b;
-    b.quantity = static_cast<BudgetQuantity>(std::clamp(quantity, 0, 2));
-    b.bound = tolerance;
-    return b;
-}
-
-void AddAutoModelParameters(ParameterSet* set, AutoModelRequest* request) {
-    set->AddChoice("model", &request->model, {"fixed", "auto"},
-                   "fixed: the scene's own settings; auto: the cheapest model whose estimated error meets the "
-                   "budget (docs/model-choice.md)");
-    set->AddFloat("tolerance", &request->tolerance, 1e-9f, 1e6f,
-                  "auto model: the error budget's bound, in the budget quantity's unit (m or relative)");
-    set->AddChoice("budget", &request->quantity, {"position", "energy", "constraint"},
-                   "auto model: what the budget bounds: position error of any body at the end (m), relative "
-                   "energy drift, or joint constraint error (m)");
-}
-
 CandidateSpace AutoModel::SpaceOf(const ParameterSet& params, const PhysicsSystem& world, double hostStep) {
     CandidateSpace space;
     for (const Cloth* cloth : world.Cloths()) {

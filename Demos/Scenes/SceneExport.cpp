@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "Math/matrices.h"
+#include "Physics/ModelChoice/ModelChoice.h"
 #include "Physics/Cloth.h"
 #include "Physics/DistanceJoint.h"
 #include "Physics/Particle.h"
@@ -232,7 +233,7 @@ std::string WriteSceneText(const SceneDescription& d) {
     if (d.autoModel.Auto()) {  // a fixed model writes neither key, so exports without auto stay as they were
         root["model"] = "auto";
         root["budget"] = {{"quantity", ToString(static_cast<BudgetQuantity>(d.autoModel.quantity))},
-                          {"bound", J(d.autoModel.tolerance)}};
+                          {"bound", J(d.autoModel.bound)}};
     }
     const SceneWorld& w = d.world;
     Json world = {{"gravity", J(w.gravity)},

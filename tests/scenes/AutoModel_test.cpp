@@ -123,7 +123,7 @@ double OscillatorError(const FileScene& scene, double t) {
 AutoModelRequest Budget(double bound, int quantity = 0) {
     AutoModelRequest r;
     r.model = 1;
-    r.tolerance = static_cast<float>(bound);
+    r.bound = static_cast<float>(bound);
     r.quantity = quantity;
     return r;
 }
