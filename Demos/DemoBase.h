@@ -8,9 +8,11 @@
 
 #include "Application/View/Camera.h"
 #include "Demos/ParameterPanel.h"
-#include "Demos/Scenes/AutoModel.h"
+#include "Demos/Scenes/ModelRequest.h"
 #include "Demos/Scenes/Parameters.h"
 #include "Physics/PhysicsSystem.h"
+
+class AutoModel;  // Demos/Scenes/AutoModel.h, owned by the host
 
 /// One row of the --state CSV.
 struct BodyState {
@@ -76,9 +78,10 @@ public:
     /// nullptr for a demo without them (a scripted one). The host chooses the model when it is auto.
     AutoModelRequest* AutoModelRequestOf() { return hasAutoModelKeys ? &autoModelRequest : nullptr; }
     const AutoModelRequest* AutoModelRequestOf() const { return hasAutoModelKeys ? &autoModelRequest : nullptr; }
-    /// The run's auto model: chosen and watched by the host (Application/Runner.cpp); inactive unless auto.
-    AutoModel& AutoModelOf() { return autoModel; }
-    const AutoModel& AutoModelOf() const { return autoModel; }
+    /// The run's auto model, owned by the host (Application/AutoModelHost.h), shown in this demo's panel row while
+    /// active; nullptr: none.
+    void ShowAutoModel(const AutoModel* model) { shownModel = model; }
+    const AutoModel* ShownAutoModel() const { return shownModel; }
 
 protected:
     /// The demo's panel: BeginDemoPanel, the parameter table's widgets (DrawParameterPanel), End.
@@ -117,5 +120,5 @@ protected:
 
 private:
     bool hasAutoModelKeys = false;
-    AutoModel autoModel;
+    const AutoModel* shownModel = nullptr;
 };
