@@ -2,10 +2,11 @@
 
 #include <cstdio>
 
-#include "Application/Runner.h"
+#include "Application/ExitCodes.h"
 #include "Demos/DemoBase.h"
+#include "Demos/Scenes/AutoModel.h"
 
-int ChooseAutoModel(DemoBase& demo, const AutoModelHost& host, bool* explained) {
+int ChooseAutoModel(DemoBase& demo, AutoModel& model, const AutoModelHost& host, bool* explained) {
     const AutoModelRequest* request = demo.AutoModelRequestOf();
     if (request == nullptr || !request->Auto() || demo.World() == nullptr) {
         if (!host.explain) return kExitOk;
@@ -15,7 +16,7 @@ int ChooseAutoModel(DemoBase& demo, const AutoModelHost& host, bool* explained) 
                      host.name.c_str());
         return kExitUsage;
     }
-    AutoModel& model = demo.AutoModelOf();
+    demo.ShowAutoModel(&model);  // its panel row, once the model is active
     std::string error;
     // Never silent for more than a second while choosing (docs/model-choice.md, "The cost of choosing").
     ChoiceSettings tuning;
@@ -43,8 +44,7 @@ int ChooseAutoModel(DemoBase& demo, const AutoModelHost& host, bool* explained) 
     return kExitOk;
 }
 
-std::vector<std::string> WatchAutoModel(DemoBase& demo, double time, std::size_t* printed) {
-    AutoModel& model = demo.AutoModelOf();
+std::vector<std::string> WatchAutoModel(DemoBase& demo, AutoModel& model, double time, std::size_t* printed) {
     if (!model.Active() || demo.World() == nullptr) return {};
     model.AfterFrame(&demo.Parameters(), *demo.World(), time);
     const std::vector<std::string>& log = model.Log();

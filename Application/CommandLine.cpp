@@ -444,11 +444,12 @@ std::string UsageText() {
     }
     text +=
         "\nError budget (docs/model-choice.md): the demos ch14, ch15, springs, ch16, joints, linear-impulse and\n"
-        "momentum, and every scene file, take --set model=fixed|auto, --set tolerance=T (the bound, > 0; not the\n"
-        "--tolerance of the golden comparison) and --set budget=position|energy|constraint (m, relative, m; default\n"
-        "position). With model=auto the run first estimates candidate models (integrator, dt, iterations, contact\n"
-        "solver) on the scene itself and runs the cheapest whose estimated error at the end of the run is within T,\n"
-        "re-estimating as it goes; a budget no candidate meets is refused (exit 2) with the best estimate reached.\n"
+        "momentum, and every scene file, take --set model=fixed|auto, --set error-budget=T (the bound, > 0;\n"
+        "tolerance=T, its deprecated spelling, is still taken) and --set budget=position|energy|constraint\n"
+        "(m, relative, m; default position). With model=auto the run first estimates candidate models\n"
+        "(integrator, dt, iterations, contact solver) on the scene itself and runs the cheapest whose estimated\n"
+        "error at the end of the run is within T, re-estimating as it goes; a budget no candidate meets is refused\n"
+        "(exit 2) with the best estimate reached.\n"
         "--state then gets an error_estimate column, the summary and the panel name the model. A scene file says\n"
         "\"model\": \"auto\", \"budget\": {\"quantity\": \"position\", \"bound\": 0.01} (docs/scenes.md).\n"
         "\nExit codes: 0 success, 1 golden mismatch, 2 bad usage (nothing written), 3 failure while running\n"

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "Application/Runner.h"
+#include "Application/ExitCodes.h"
 #include "Application/StateCsv.h"
 #include "Platform/HeadlessContext.h"
 

@@ -22,12 +22,10 @@
 #include "Application/RunOutputs.h"
 #include "Application/StateCsv.h"
 #include "Application/StepSetting.h"
-#if PSB_HAVE_WINDOW
-#include "Application/WindowedRunner.h"
-#endif
 #include "Demos/DemoBase.h"
 #include "Demos/DemoRegistry.h"
 #include "Demos/SceneFileDemo.h"
+#include "Demos/Scenes/AutoModel.h"
 #include "Demos/Scenes/SceneExport.h"
 #include "Demos/Scenes/SceneFile.h"
 #include "Platform/Files/AtomicFile.h"
@@ -61,6 +59,7 @@ void ReadFrame(int width, int height, std::vector<std::uint8_t>* scratch, Image*
 
 // Owns the GL-side lifetime: ImGui back end, window, context, in reverse order of creation.
 struct Session {
+    AutoModel autoModel;  ///< the run's model choice (docs/model-choice.md), owned here; the demo's panel shows it
     std::unique_ptr<HeadlessContext> context;
     std::unique_ptr<DemoWindow> window;
     bool imgui = false;
@@ -75,15 +74,6 @@ struct Session {
 };
 
 // ---- Before the run: exit 2 on any bad argument, with nothing written.
-
-int CheckDemoId(const std::string& id) {
-    if (FindDemo(id)) return kExitOk;
-    std::string ids;
-    for (const DemoInfo& d : AllDemos()) ids += (ids.empty() ? "" : ", ") + d.id;
-    std::fprintf(stderr, "physics-sandbox: unknown demo '%s'; valid ids: %s\n", id.c_str(),
-                 ids.empty() ? "(none registered)" : ids.c_str());
-    return kExitUsage;
-}
 
 // The window and the demo, with the context current when drawing. Exit 3 when the demo cannot start.
 int StartDemo(const Options& o, const SceneDescription* scene, Session* s, bool drawing) {
@@ -188,7 +178,7 @@ struct RunLoop {
     RunStats* stats;
     Rational step;  ///< the host's fixed step (HostStep); an auto model's switch may change it
     FrameClock clock;
-    AutoModel* autoModel = nullptr;   ///< the demo's, while active (docs/model-choice.md)
+    AutoModel* autoModel = nullptr;   ///< the run's, while active (docs/model-choice.md)
     std::size_t autoModelLogged = 0;  ///< lines of its Log() already printed
     float baseYaw = 0.0f;
     ProgressLine progress;
@@ -199,7 +189,7 @@ struct RunLoop {
     int missedAt = -1;      ///< the frame from which an auto model's running estimate stayed over its budget
     double queueCpu = 0.0;  // main-thread CPU spent inside Push (serial mode: the encode itself)
 
-    RunLoop(const Options& options, DemoWindow& w, DemoBase& d, RunOutputs& out, RunStats* s, float yaw)
+    RunLoop(const Options& options, DemoWindow& w, DemoBase& d, AutoModel& m, RunOutputs& out, RunStats* s, float yaw)
         : o(options),
           window(w),
           demo(d),
@@ -209,7 +199,7 @@ struct RunLoop {
           clock(o.frameTime, step),
           baseYaw(yaw),
           progress(o) {
-        if (d.AutoModelOf().Active()) autoModel = &d.AutoModelOf();
+        if (m.Active()) autoModel = &m;
     }
 };
 
@@ -242,7 +232,7 @@ void SimulateFrame(RunLoop& r, int frame) {
 // After the frame's fixed steps: the auto model's live watch; a switch is printed as it happens, and a new step
 // (dt refined) takes effect from the next frame on, the clock keeping its accumulated time.
 void WatchModel(RunLoop& r, double time) {
-    for (const std::string& line : WatchAutoModel(r.demo, time, &r.autoModelLogged))
+    for (const std::string& line : WatchAutoModel(r.demo, *r.autoModel, time, &r.autoModelLogged))
         r.progress.Note(r.o.demo + ": model auto: " + line);
     const Rational step = HostStep(r.o, r.demo);
     if (step.num != r.step.num || step.den != r.step.den) {
@@ -387,11 +377,11 @@ int ReportMissedBudget(const RunLoop& r, int code) {
     std::fprintf(stderr,
                  "physics-sandbox: %s: ran, but missed its error budget: the running estimate %.3g went over the "
                  "budget %.3g at frame %d and no finer model brought it back (outputs written; exit 4)\n",
-                 r.o.demo.c_str(), model.RunningEstimate(), double(model.Request().tolerance), r.missedAt);
+                 r.o.demo.c_str(), model.RunningEstimate(), double(model.Request().bound), r.missedAt);
     return code == kExitOk ? kExitMissedBudget : code;
 }
 
-void PrintSummary(const Options& o, const RunStats& s, const std::string& frameDir, const DemoBase& demo) {
+void PrintSummary(const Options& o, const RunStats& s, const std::string& frameDir, const AutoModel& model) {
     const double frames = std::max(1, s.frames);
     std::fprintf(stderr,
                  "physics-sandbox: %s: %d frames, %.3f simulated s, %lld steps, wall %.2f s, %.1f fps "
@@ -400,8 +390,7 @@ void PrintSummary(const Options& o, const RunStats& s, const std::string& frameD
                  s.wallSeconds > 0 ? s.frames / s.wallSeconds : 0.0, 1000.0 * s.renderSeconds / frames,
                  1000.0 * s.readbackSeconds / frames, 1000.0 * s.encodeSeconds / frames, s.renderer.c_str(),
                  frameDir.empty() ? "" : "; frames in ", frameDir.c_str());
-    if (demo.AutoModelOf().Active())
-        std::fprintf(stderr, "physics-sandbox: %s: %s\n", o.demo.c_str(), demo.AutoModelOf().Summary().c_str());
+    if (model.Active()) std::fprintf(stderr, "physics-sandbox: %s: %s\n", o.demo.c_str(), model.Summary().c_str());
 }
 
 /// --scene: loads the file into *scene (exit 2 listing every problem, before anything is written), names the run
@@ -494,7 +483,7 @@ int RunUnguarded(const Options& given, RunStats* stats) {
     host.explain = o.explainModel;
     host.quiet = o.quiet;
     bool explained = false;
-    if ((code = ChooseAutoModel(demo, host, &explained)) != kExitOk || explained) return code;
+    if ((code = ChooseAutoModel(demo, session.autoModel, host, &explained)) != kExitOk || explained) return code;
     if (o.showParams) return ShowParameters(o, demo);
     const float baseYaw = ApplyCamera(o, demo);
 
@@ -502,26 +491,29 @@ int RunUnguarded(const Options& given, RunStats* stats) {
     RunOutputs outputs(o);
     outputs.renderer = stats->glStrings;
     std::string error;
-    if (!outputs.Open(&error, demo.AutoModelOf().Active())) {
+    if (!outputs.Open(&error, session.autoModel.Active())) {
         std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
         return kExitFailure;
     }
-    RunLoop loop(o, *session.window, demo, outputs, stats, baseYaw);
+    RunLoop loop(o, *session.window, demo, session.autoModel, outputs, stats, baseYaw);
     code = RunFrames(loop, wallStart);
     code = outputs.Finish(code);
     FillStats(loop, wallStart, processCpuStart, stats);
     if (code == kExitOk || code == kExitMismatch) code = outputs.ReportComparisons(code);
-    if (!o.quiet && code != kExitFailure) PrintSummary(o, *stats, outputs.FrameDir(), demo);
+    if (!o.quiet && code != kExitFailure) PrintSummary(o, *stats, outputs.FrameDir(), session.autoModel);
     if ((code == kExitOk || code == kExitMismatch) && loop.missedAt >= 0) return ReportMissedBudget(loop, code);
     return code;
 }
 
 }  // namespace
 
-int FinishStdout() {
-    if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return kExitOk;
-    std::fprintf(stderr, "physics-sandbox: cannot write to standard output: %s\n", std::strerror(errno));
-    return kExitFailure;
+int CheckDemoId(const std::string& id) {
+    if (FindDemo(id)) return kExitOk;
+    std::string ids;
+    for (const DemoInfo& d : AllDemos()) ids += (ids.empty() ? "" : ", ") + d.id;
+    std::fprintf(stderr, "physics-sandbox: unknown demo '%s'; valid ids: %s\n", id.c_str(),
+                 ids.empty() ? "(none registered)" : ids.c_str());
+    return kExitUsage;
 }
 
 int RunSandbox(const Options& options, RunStats* stats) {
@@ -537,50 +529,4 @@ int RunSandbox(const Options& options, RunStats* stats) {
         std::fprintf(stderr, "physics-sandbox: the run stopped: %s\n", e.what());
     }
     return kExitFailure;
-}
-
-static int RunWindow(const Options& o) {
-#if PSB_HAVE_WINDOW
-    if (!o.demo.empty()) {
-        if (const int code = CheckDemoId(o.demo); code != kExitOk) return code;
-    }
-    WindowedOptions w;
-    w.demo = o.demo;
-    w.sets = o.sets;
-    if (std::find(o.flagsGiven.begin(), o.flagsGiven.end(), "--dt") != o.flagsGiven.end())
-        w.sets.insert(w.sets.begin(), {"dt", RationalText(o.step)});  // one setting with --set dt=
-    w.frames = o.framesGiven ? o.frames : 0;
-    w.width = o.width;
-    w.height = o.height;
-    w.step = o.step;
-    w.noUi = o.noUi;
-    w.quiet = o.quiet;
-    return RunWindowed(w);
-#else
-    (void)o;
-    std::fprintf(stderr, "physics-sandbox: --window: this build has no window (CMake PSB_WITH_WINDOW, libglfw3-dev)\n");
-    return kExitUsage;
-#endif
-}
-
-int RunCommandLine(int argc, const char* const* argv) {
-    InstallTemporaryCleanupOnSignals("physics-sandbox");
-    Options options;
-    std::string error;
-    if (ParseCommandLine(argc, argv, &options, &error) != ParseStatus::Ok) {
-        std::fprintf(stderr, "physics-sandbox: %s\n", error.c_str());
-        return kExitUsage;
-    }
-    for (const std::string& note : options.notes) std::fprintf(stderr, "physics-sandbox: %s\n", note.c_str());
-    if (options.mode == Options::Mode::Help) {
-        std::fputs(UsageText().c_str(), stdout);
-        return FinishStdout();
-    }
-    if (options.mode == Options::Mode::List) {
-        for (const DemoInfo& d : AllDemos()) std::printf("%s\t%s\n", d.id.c_str(), d.title.c_str());
-        return FinishStdout();
-    }
-    if (options.window) return RunWindow(options);
-    RunStats stats;
-    return RunSandbox(options, &stats);
 }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "Application/CommandLine.h"
+#include "Application/ExitCodes.h"
 
 /// Timings of one run (steady clock, seconds). They go to the console and the benchmark, never into a frame.
 struct RunStats {
@@ -29,16 +30,8 @@ struct RunStats {
     std::string glStrings;
 };
 
-/// Exit codes of physics-sandbox.
-/// Exit codes of physics-sandbox (docs/app.md "Exit codes"). kExitMissedBudget: the run finished and wrote its
-/// outputs, but an auto model's running estimate ended over its budget.
-enum ExitCode { kExitOk = 0, kExitMismatch = 1, kExitUsage = 2, kExitFailure = 3, kExitMissedBudget = 4 };
-
 /// Runs one parsed command line (Mode::Run). Returns an ExitCode; messages go to stderr. Out of memory is
 /// exit 3 with a message, the run's partial output removed.
 int RunSandbox(const Options& options, RunStats* stats);
-/// Flushes stdout after --help, --list or --params: kExitOk, or kExitFailure with a message when the output
-/// could not be written (a full disk, a closed pipe).
-int FinishStdout();
-/// The whole program: installs the signal policy (Platform/Files/TempRegistry.h), parses, --help, --list, run.
-int RunCommandLine(int argc, const char* const* argv);
+/// --demo ID names a registered demo: kExitOk, else kExitUsage with the valid ids on stderr.
+int CheckDemoId(const std::string& id);

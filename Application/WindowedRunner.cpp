@@ -14,9 +14,10 @@
 #include <thread>
 
 #include "Application/AutoModelHost.h"
-#include "Application/Runner.h"
+#include "Application/ExitCodes.h"
 #include "Application/StepSetting.h"
 #include "Demos/DemoBase.h"
+#include "Demos/Scenes/AutoModel.h"
 #include "Platform/DesktopWindow.h"
 #include "Windows/BookImGuiStyle.h"
 #include "Windows/DemoWindow.h"
@@ -68,7 +69,7 @@ struct ImGuiSession {
     }
 };
 
-bool StartFirstDemo(WindowedOptions& o, DemoWindow& window) {
+bool StartFirstDemo(WindowedOptions& o, DemoWindow& window, AutoModel& model) {
     if (o.demo.empty()) return true;
     if (!window.StartDemo(o.demo)) {
         std::fprintf(stderr, "physics-sandbox: demo '%s' failed to start\n", o.demo.c_str());
@@ -94,20 +95,21 @@ bool StartFirstDemo(WindowedOptions& o, DemoWindow& window) {
     host.runSeconds = o.frames > 0 ? o.frames / 60.0 : ChoiceSettings().runSeconds;
     host.quiet = o.quiet;
     bool explained = false;  // --explain-model is headless only
-    return ChooseAutoModel(demo, host, &explained) == kExitOk;
+    return ChooseAutoModel(demo, model, host, &explained) == kExitOk;
 }
 
 /// The live watch of the first demo's auto model (while it runs): after each frame's fixed steps, with the
 /// simulated time since it started; switches are printed as they happen.
 struct AutoModelWatch {
-    DemoBase* demo = nullptr;  ///< the demo whose model was chosen; nullptr without auto
-    double simulated = 0.0;    ///< s since it started
+    DemoBase* demo = nullptr;    ///< the demo whose model was chosen; nullptr without auto
+    AutoModel* model = nullptr;  ///< the run's (RunWindowed owns it)
+    double simulated = 0.0;      ///< s since it started
     std::size_t logged = 0;
 
     void AfterFrame(const WindowedOptions& o, DemoWindow& window, double seconds) {
-        if (demo == nullptr || window.CurrentDemo() != demo) return;
+        if (demo == nullptr || window.CurrentDemo() != demo || demo->ShownAutoModel() != model) return;
         simulated += seconds;
-        for (const std::string& line : WatchAutoModel(*demo, simulated, &logged))
+        for (const std::string& line : WatchAutoModel(*demo, *model, simulated, &logged))
             if (!o.quiet) std::fprintf(stderr, "physics-sandbox: %s: model auto: %s\n", o.demo.c_str(), line.c_str());
     }
 };
@@ -118,7 +120,7 @@ void ReportDemo(const WindowedOptions& o, const std::string& id) {
     std::fflush(stdout);
 }
 
-void ReportSummary(const WindowedOptions& o, DemoWindow& window, int frames, long long steps) {
+void ReportSummary(const WindowedOptions& o, DemoWindow& window, int frames, long long steps, const AutoModel& model) {
     if (o.quiet) return;
     std::printf("window: %d frames, %lld fixed steps, demo %s", frames, steps,
                 window.CurrentDemoId().empty() ? "none" : window.CurrentDemoId().c_str());
@@ -129,8 +131,8 @@ void ReportSummary(const WindowedOptions& o, DemoWindow& window, int frames, lon
                     double(demo->camera.GetZoom()), double(t.x), double(t.y), double(t.z));
     }
     std::printf("\n");
-    if (DemoBase* demo = window.CurrentDemo(); demo != nullptr && demo->AutoModelOf().Active())
-        std::printf("%s\n", demo->AutoModelOf().Summary().c_str());
+    if (DemoBase* demo = window.CurrentDemo(); demo != nullptr && demo->ShownAutoModel() == &model && model.Active())
+        std::printf("%s\n", model.Summary().c_str());
     std::fflush(stdout);
 }
 
@@ -145,6 +147,7 @@ int RunWindowed(const WindowedOptions& options) {
         std::fprintf(stderr, "physics-sandbox: --window: %s\n", error.c_str());
         return kExitFailure;
     }
+    AutoModel model;  // the first demo's `model: auto` (docs/model-choice.md), owned by this host
     DemoWindow window("Physics Sandbox", o.width, o.height);
     InputBridge input(&window);
     desktop->SetInput(&input);
@@ -153,10 +156,12 @@ int RunWindowed(const WindowedOptions& options) {
     window.OnInitialize();
     window.OnResize(o.width, o.height);
     window.SetUIVisible(!o.noUi);
-    if (!StartFirstDemo(o, window)) return kExitUsage;
+    if (!StartFirstDemo(o, window, model)) return kExitUsage;
     AutoModelWatch watch;
-    if (window.CurrentDemo() != nullptr && window.CurrentDemo()->AutoModelOf().Active())
+    if (window.CurrentDemo() != nullptr && model.Active()) {
         watch.demo = window.CurrentDemo();
+        watch.model = &model;
+    }
     std::string shownDemo = window.CurrentDemoId();
     ReportDemo(o, shownDemo);
 
@@ -205,7 +210,7 @@ int RunWindowed(const WindowedOptions& options) {
         }
         std::this_thread::sleep_until(frameStart + frameBudget);
     }
-    ReportSummary(o, window, frames, steps);
+    ReportSummary(o, window, frames, steps, model);
     window.OnShutdown();
     return FinishStdout();  // the demo lines and the summary must have reached stdout (exit 3 if not)
 }

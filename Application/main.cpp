@@ -1,4 +1,4 @@
 // physics-sandbox: renders the book's demos headless to PNG frames (docs/app.md).
-#include "Application/Runner.h"
+#include "Application/Program.h"
 
 int main(int argc, char** argv) { return RunCommandLine(argc, argv); }

@@ -9,6 +9,7 @@
 
 #include "Application/Render/FixedFunctionPrimitives.h"
 #include "Demos/ParameterPanel.h"
+#include "Demos/Scenes/AutoModel.h"
 
 DemoBase::DemoBase() = default;
 
@@ -66,9 +67,9 @@ void DemoBase::AddAutoModelKeys() {
 }
 
 std::string DemoBase::AutoModelPanelText() const {
-    if (!autoModel.Active()) return std::string();
+    if (shownModel == nullptr || !shownModel->Active()) return std::string();
     // Deterministic rows (no measured times), so frames with the panel repeat exactly.
-    return autoModel.PanelText();
+    return shownModel->PanelText();
 }
 
 float DemoBase::AutoModelRowHeight() const {

@@ -8,9 +8,11 @@
 
 #include "Application/View/Camera.h"
 #include "Demos/ParameterPanel.h"
-#include "Demos/Scenes/AutoModel.h"
+#include "Demos/Scenes/ModelRequest.h"
 #include "Demos/Scenes/Parameters.h"
 #include "Physics/PhysicsSystem.h"
+
+class AutoModel;  // Demos/Scenes/AutoModel.h, owned by the host
 
 /// One row of the --state CSV.
 struct BodyState {
@@ -72,20 +74,21 @@ public:
     virtual const PhysicsSystem* World() const { return nullptr; }
     /// Appends what the demo does beyond its world that a scene file cannot express (for --export-scene).
     virtual void ExportNotes(std::vector<std::string>* /*notes*/) const {}
-    /// The demo's error-budget request (the `--set` keys model, tolerance, budget: docs/model-choice.md), or
+    /// The demo's error-budget request (the `--set` keys model, error-budget, budget: docs/model-choice.md), or
     /// nullptr for a demo without them (a scripted one). The host chooses the model when it is auto.
     AutoModelRequest* AutoModelRequestOf() { return hasAutoModelKeys ? &autoModelRequest : nullptr; }
     const AutoModelRequest* AutoModelRequestOf() const { return hasAutoModelKeys ? &autoModelRequest : nullptr; }
-    /// The run's auto model: chosen and watched by the host (Application/Runner.cpp); inactive unless auto.
-    AutoModel& AutoModelOf() { return autoModel; }
-    const AutoModel& AutoModelOf() const { return autoModel; }
+    /// The run's auto model, owned by the host (Application/AutoModelHost.h), shown in this demo's panel row while
+    /// active; nullptr: none.
+    void ShowAutoModel(const AutoModel* model) { shownModel = model; }
+    const AutoModel* ShownAutoModel() const { return shownModel; }
 
 protected:
     /// The demo's panel: BeginDemoPanel, the parameter table's widgets (DrawParameterPanel), End.
     void DrawPanel(const char* title, float height, PanelScrollbar scrollbar = PanelScrollbar::Hidden) const;
     /// Appends the book's panel-only "Show Help" button (on the line of the widget before it) to the table.
     void AddShowHelpButton();
-    /// Appends the error-budget keys model, tolerance and budget (AddAutoModelParameters, bound to
+    /// Appends the error-budget keys model, error-budget and budget (AddAutoModelParameters, bound to
     /// autoModelRequest) and a panel row with the auto model's summary, drawn only while the auto model is active
     /// (so a fixed model's panel is unchanged). Called last in the constructor, so `--params` only gains lines.
     void AddAutoModelKeys();
@@ -117,5 +120,5 @@ protected:
 
 private:
     bool hasAutoModelKeys = false;
-    AutoModel autoModel;
+    const AutoModel* shownModel = nullptr;
 };

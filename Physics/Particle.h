@@ -85,6 +85,7 @@ protected:
     friend class PhysicsSystem;
     friend void IntegrateParticleStates(Integrator, Particle* const*, std::size_t, IntegratorScratch*, float, float,
                                         ForceEvaluator, void*);
+    friend struct ParticleIntegrators;  // IntegrateParticleStates' one function per method (Physics/Integrator.cpp)
     vec3 position;
     vec3 oldPosition;
     vec3 velocity;

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "Platform/HeadlessContext.h"
+#include "Platform/GlContext.h"
 
 /// Where an EGL context was made, for the run summary.
 struct EglDeviceChoice {

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "Platform/HeadlessContext.h"
+#include "Platform/GlContext.h"
 
 /// An OSMesa context with its own RGBA colour buffer (rows bottom-up, as glReadPixels returns them).
 /// Returns nullptr and sets *error if OSMesa refuses the requested format or size.

@@ -97,24 +97,6 @@ std::string Number(double v) {
 
 }  // namespace
 
-ErrorBudget AutoModelRequest::Budget() const {
-    ErrorBudget b;
-    b.quantity = static_cast<BudgetQuantity>(std::clamp(quantity, 0, 2));
-    b.bound = tolerance;
-    return b;
-}
-
-void AddAutoModelParameters(ParameterSet* set, AutoModelRequest* request) {
-    set->AddChoice("model", &request->model, {"fixed", "auto"},
-                   "fixed: the scene's own settings; auto: the cheapest model whose estimated error meets the "
-                   "budget (docs/model-choice.md)");
-    set->AddFloat("tolerance", &request->tolerance, 1e-9f, 1e6f,
-                  "auto model: the error budget's bound, in the budget quantity's unit (m or relative)");
-    set->AddChoice("budget", &request->quantity, {"position", "energy", "constraint"},
-                   "auto model: what the budget bounds: position error of any body at the end (m), relative "
-                   "energy drift, or joint constraint error (m)");
-}
-
 CandidateSpace AutoModel::SpaceOf(const ParameterSet& params, const PhysicsSystem& world, double hostStep) {
     CandidateSpace space;
     for (const Cloth* cloth : world.Cloths()) {
@@ -247,7 +229,7 @@ std::string RefusalText(const ModelChoiceResult& choice, const CandidateSpace& s
                           choice.cpuLimit, choice.calibrationCpuSeconds));
     } else if (choice.evaluatedShare >= settings.maxEvaluations) {
         add(std::snprintf(text, sizeof text,
-                          "; the evaluation limit of %d candidates' windows was reached, so finer candidates were not "
+                          "; the evaluation limit of %d candidates' spans was reached, so finer candidates were not "
                           "tried",
                           settings.maxEvaluations));
     }
@@ -322,10 +304,10 @@ std::string AutoModel::Explain() const {
     std::ostringstream out;
     char line[512];
     std::snprintf(line, sizeof line,
-                  "auto model: %s error budget %g %s, safety factor %g; calibration window %g s of a %g s run; %d "
-                  "of %zu candidates estimated (%.3g candidates' worth of windows; limit %d) in %.3g s CPU\n",
+                  "auto model: %s error budget %g %s, safety factor %g; calibration span %g s of a %g s run; %d "
+                  "of %zu candidates estimated (%.3g candidates' worth of spans; limit %d) in %.3g s CPU\n",
                   ToString(budget.quantity), budget.bound, BudgetUnit(budget.quantity), settings.safety,
-                  choice.windowSeconds, settings.runSeconds, choice.evaluatedCount, choice.candidates.size(),
+                  choice.spanSeconds, settings.runSeconds, choice.evaluatedCount, choice.candidates.size(),
                   choice.evaluatedShare, settings.maxEvaluations, choice.calibrationCpuSeconds);
     out << line;
     std::snprintf(line, sizeof line, "  %-6s %-44s %-12s %-12s %-12s %s\n", "chosen", "candidate", "estimate",

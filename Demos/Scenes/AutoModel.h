@@ -9,23 +9,11 @@
 #include <utility>
 #include <vector>
 
+#include "Demos/Scenes/ModelRequest.h"
 #include "Demos/Scenes/Parameters.h"
-#include "Physics/ModelChoice.h"
+#include "Physics/ModelChoice/ModelChoice.h"
 
 class PhysicsSystem;
-
-/// The request, bound to the `--set` keys `model`, `tolerance` and `budget` (AddAutoModelParameters) or read from
-/// a scene file's "model" and "budget".
-struct AutoModelRequest {
-    int model = 0;            ///< 0 "fixed" (the scene's own settings, as before), 1 "auto"
-    float tolerance = 0.01f;  ///< the budget's bound, in the quantity's unit
-    int quantity = 0;         ///< BudgetQuantity as int: 0 position (m), 1 energy (relative), 2 constraint (m)
-    bool Auto() const { return model == 1; }
-    ErrorBudget Budget() const;
-};
-
-/// Registers `model` (fixed|auto), `tolerance` (> 0) and `budget` (position|energy|constraint) on *set; no widgets.
-void AddAutoModelParameters(ParameterSet* set, AutoModelRequest* request);
 
 /// The auto model of one run: choice at the start, the live watch during it, and the reports.
 class AutoModel {
@@ -47,7 +35,7 @@ public:
     void AfterFrame(ParameterSet* params, const PhysicsSystem& world, double time);
 
     bool Active() const { return active; }
-    /// The budget asked for (its bound is `tolerance`, in the quantity's unit).
+    /// The budget asked for (its bound is `error-budget`, in the quantity's unit).
     const AutoModelRequest& Request() const { return request; }
     const ModelChoiceResult& Choice() const { return choice; }
     const ModelCandidate& Current() const;

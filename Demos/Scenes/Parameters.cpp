@@ -1,5 +1,6 @@
 #include "Demos/Scenes/Parameters.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -133,6 +134,10 @@ ParameterSet::Entry& ParameterSet::Entry::Alias(const std::string& alias) {
     aliases.push_back(alias);
     return *this;
 }
+ParameterSet::Entry& ParameterSet::Entry::DeprecatedAlias(const std::string& alias) {
+    deprecated.push_back(alias);
+    return *this;
+}
 ParameterSet::Entry& ParameterSet::Entry::OnPanel(const Widget& w) {
     widget = w;
     return *this;
@@ -197,6 +202,8 @@ const ParameterSet::Entry* ParameterSet::Find(const std::string& key) const {
     for (const Entry& e : entries) {
         if (e.key == key) return &e;
         for (const std::string& alias : e.aliases)
+            if (alias == key) return &e;
+        for (const std::string& alias : e.deprecated)
             if (alias == key) return &e;
     }
     return nullptr;
@@ -266,6 +273,10 @@ bool ParameterSet::Set(const std::string& key, const std::string& value, std::st
         }
         case Kind::Text:
             return bad();
+    }
+    if (note != nullptr && key != e->key &&
+        std::find(e->deprecated.begin(), e->deprecated.end(), key) != e->deprecated.end()) {
+        *note = "--set " + key + "=" + value + ": '" + key + "' is deprecated; use '" + e->key + "'";
     }
     if (e->onChange) e->onChange();
     return true;

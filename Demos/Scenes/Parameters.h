@@ -40,8 +40,9 @@ public:
     };
 
     struct Entry {
-        std::string key;                   ///< the `--set` key; "" for a panel-only entry
-        std::vector<std::string> aliases;  ///< other keys `--set` accepts for it (the book's or older names)
+        std::string key;                      ///< the `--set` key; "" for a panel-only entry
+        std::vector<std::string> aliases;     ///< other keys `--set` accepts for it (the book's or older names)
+        std::vector<std::string> deprecated;  ///< older keys still accepted, each with a note that it is deprecated
         Kind kind = Kind::Int;
         std::string help;
         int* intValue = nullptr;      // Int, and Choice (index into choices)
@@ -59,6 +60,8 @@ public:
 
         /// Adds a key `--set` also accepts; `--params` lists it after the help.
         Entry& Alias(const std::string& key);
+        /// An older key `--set` still accepts; Set's note then says it is deprecated and names this entry's key.
+        Entry& DeprecatedAlias(const std::string& key);
         /// Puts the entry on the panel as `w`.
         Entry& OnPanel(const Widget& w);
         /// Marks a Float entry as a physics step (`step` above).

@@ -9,6 +9,7 @@
 #include "Math/matrices.h"
 #include "Physics/Cloth.h"
 #include "Physics/DistanceJoint.h"
+#include "Physics/ModelChoice/ModelChoice.h"
 #include "Physics/Particle.h"
 #include "Physics/RigidbodyVolume.h"
 #include "Physics/Spring.h"
@@ -71,157 +72,185 @@ bool SameMatrix(const mat3& a, const mat3& b) {
     return true;
 }
 
-}  // namespace
-
-SceneDescription DescribeWorld(const PhysicsSystem& system, const std::string& name, std::vector<std::string>* notes) {
+/// What DescribeWorld builds, piece by piece: the description, its notes, the one world gravity and the particles'
+/// indices (for the springs' and joints' ends).
+struct Describer {
     SceneDescription d;
-    d.name = name;
-    const WorldSettings& s = system.settings;
-    d.world.integrator = s.integrator;
-    d.world.particleContact = s.particleContact;
-    d.world.contactSolver = s.contactSolver;
-    d.world.iterations = s.solverIterations;
-    d.world.penetrationSlop = s.penetrationSlop;
-    d.world.linearProjection = s.linearProjection;
-    d.world.projectionFraction = s.projectionFraction;
-    d.world.maxSubsteps = s.maxVolumeSubsteps;
-    d.world.warmStartFactor = s.accumulated.warmStartFactor;
-    d.world.baumgarte = s.accumulated.baumgarte;
-    d.world.restitutionThreshold = s.accumulated.restitutionThreshold;
-    d.world.soft = s.soft;
-    d.world.sleep = s.sleep;
-
+    std::vector<std::string>* notes;
     bool haveGravity = false;
-    auto gravityOf = [&](const vec3& g, const std::string& what) {
+    std::map<const Particle*, std::size_t> particleIds;
+
+    void Settings(const WorldSettings& s) {
+        d.world.integrator = s.integrator;
+        d.world.particleContact = s.particleContact;
+        d.world.contactSolver = s.contactSolver;
+        d.world.iterations = s.solverIterations;
+        d.world.penetrationSlop = s.penetrationSlop;
+        d.world.linearProjection = s.linearProjection;
+        d.world.projectionFraction = s.projectionFraction;
+        d.world.maxSubsteps = s.maxVolumeSubsteps;
+        d.world.warmStartFactor = s.accumulated.warmStartFactor;
+        d.world.baumgarte = s.accumulated.baumgarte;
+        d.world.restitutionThreshold = s.accumulated.restitutionThreshold;
+        d.world.soft = s.soft;
+        d.world.sleep = s.sleep;
+    }
+    void Gravity(const vec3& g, const std::string& what) {
         if (!haveGravity) {
             d.world.gravity = g;
             haveGravity = true;
         } else if (g.x != d.world.gravity.x || g.y != d.world.gravity.y || g.z != d.world.gravity.z) {
             notes->push_back(what + ": its own gravity is not expressible (the file has one world gravity)");
         }
-    };
-    std::map<const Particle*, std::size_t> particleIds;
-    for (const Rigidbody* body : system.Bodies()) {
-        SceneBody b;
-        b.id = "b" + std::to_string(d.bodies.size());
-        const std::string what = "body " + b.id;
-        if (body->type == RigidbodyType::Particle) {
-            const auto& p = static_cast<const Particle&>(*body);
-            b.kind = SceneBodyKind::Particle;
-            b.position = p.GetPosition();
-            b.velocity = p.GetVelocity();
-            b.mass = p.GetMass();
-            b.restitution = p.GetBounce();
-            b.velocityRetention = p.GetVelocityRetention();
-            if (p.GetOldPosition().x != b.position.x || p.GetOldPosition().y != b.position.y ||
-                p.GetOldPosition().z != b.position.z) {
-                notes->push_back(what + ": its previous position (Verlet state) is not expressible");
+    }
+    void ParticleBody(const Particle& p, const std::string& what, SceneBody* b) {
+        b->kind = SceneBodyKind::Particle;
+        b->position = p.GetPosition();
+        b->velocity = p.GetVelocity();
+        b->mass = p.GetMass();
+        b->restitution = p.GetBounce();
+        b->velocityRetention = p.GetVelocityRetention();
+        if (p.GetOldPosition().x != b->position.x || p.GetOldPosition().y != b->position.y ||
+            p.GetOldPosition().z != b->position.z) {
+            notes->push_back(what + ": its previous position (Verlet state) is not expressible");
+        }
+        Gravity(p.GetGravity(), what);
+        particleIds[&p] = d.bodies.size();
+    }
+    void VolumeBody(const RigidbodyVolume& v, const std::string& what, SceneBody* b) {
+        b->kind = v.type == RigidbodyType::Sphere ? SceneBodyKind::Sphere : SceneBodyKind::Box;
+        b->position = v.position;
+        b->halfExtents = v.box.size;
+        b->radius = v.sphere.radius;
+        b->hasQuaternion = true;
+        b->orientation = v.orientation;
+        b->velocity = v.velocity;
+        b->angularVelocity = v.angVel;
+        b->mass = v.mass;
+        b->restitution = v.cor;
+        b->friction = v.friction;
+        b->velocityRetention = v.velocityRetention;
+        b->velocityEpsilon = v.velocityEpsilon;
+        Gravity(v.gravity, what);
+    }
+    void Bodies(const PhysicsSystem& system) {
+        for (const Rigidbody* body : system.Bodies()) {
+            SceneBody b;
+            b.id = "b" + std::to_string(d.bodies.size());
+            const std::string what = "body " + b.id;
+            if (body->type == RigidbodyType::Particle) {
+                ParticleBody(static_cast<const Particle&>(*body), what, &b);
+            } else if (body->type == RigidbodyType::Sphere || body->type == RigidbodyType::Box) {
+                VolumeBody(static_cast<const RigidbodyVolume&>(*body), what, &b);
+            } else {
+                continue;  // joints below; other kinds have no place in the format
             }
-            gravityOf(p.GetGravity(), what);
-            particleIds[&p] = d.bodies.size();
-        } else if (body->type == RigidbodyType::Sphere || body->type == RigidbodyType::Box) {
-            const auto& v = static_cast<const RigidbodyVolume&>(*body);
-            b.kind = v.type == RigidbodyType::Sphere ? SceneBodyKind::Sphere : SceneBodyKind::Box;
-            b.position = v.position;
-            b.halfExtents = v.box.size;
-            b.radius = v.sphere.radius;
-            b.hasQuaternion = true;
-            b.orientation = v.orientation;
-            b.velocity = v.velocity;
-            b.angularVelocity = v.angVel;
-            b.mass = v.mass;
-            b.restitution = v.cor;
-            b.friction = v.friction;
-            b.velocityRetention = v.velocityRetention;
-            b.velocityEpsilon = v.velocityEpsilon;
-            gravityOf(v.gravity, what);
-        } else {
-            continue;  // joints below; other kinds have no place in the format
+            d.bodies.push_back(b);
         }
-        d.bodies.push_back(b);
     }
-    for (std::size_t i = 0; i < system.Constraints().size(); ++i) {
-        const OBB& obb = system.Constraints()[i];
-        SceneConstraint c;
-        c.position = obb.position;
-        c.halfExtents = obb.size;
-        c.eulerDegrees = Decompose(obb.orientation);
-        const vec3& e = c.eulerDegrees;
-        if (!SameMatrix(Rotation3x3(e.x, e.y, e.z), obb.orientation)) {
-            notes->push_back("constraints[" + std::to_string(i) +
-                             "]: orientation written as Euler degrees that rebuild it only approximately");
+    void Constraints(const PhysicsSystem& system) {
+        for (std::size_t i = 0; i < system.Constraints().size(); ++i) {
+            const OBB& obb = system.Constraints()[i];
+            SceneConstraint c;
+            c.position = obb.position;
+            c.halfExtents = obb.size;
+            c.eulerDegrees = Decompose(obb.orientation);
+            const vec3& e = c.eulerDegrees;
+            if (!SameMatrix(Rotation3x3(e.x, e.y, e.z), obb.orientation)) {
+                notes->push_back("constraints[" + std::to_string(i) +
+                                 "]: orientation written as Euler degrees that rebuild it only approximately");
+            }
+            d.constraints.push_back(c);
         }
-        d.constraints.push_back(c);
     }
-    auto idOf = [&](const Particle* p, std::size_t* out) {
+    bool IdOf(const Particle* p, std::size_t* out) const {
         auto it = particleIds.find(p);
         if (it == particleIds.end()) return false;
         *out = it->second;
         return true;
-    };
-    for (std::size_t i = 0; i < system.Springs().size(); ++i) {
-        const Spring& spring = system.Springs()[i];
-        SceneSpring s2;
-        if (!idOf(spring.GetP1(), &s2.a) || !idOf(spring.GetP2(), &s2.b)) {
-            notes->push_back("spring " + std::to_string(i) + ": an end is not a free particle; left out");
-            continue;
-        }
-        s2.stiffness = -spring.k;
-        s2.damping = spring.b;
-        s2.restLength = spring.restingLength;
-        d.springs.push_back(s2);
     }
-    for (std::size_t i = 0; i < system.Joints().size(); ++i) {
-        const DistanceJoint& joint = *system.Joints()[i];
-        SceneJoint j;
-        if (!idOf(joint.p1, &j.a) || !idOf(joint.p2, &j.b)) {
-            notes->push_back("joint " + std::to_string(i) + ": an end is not a free particle; left out");
-            continue;
+    void Links(const PhysicsSystem& system) {
+        for (std::size_t i = 0; i < system.Springs().size(); ++i) {
+            const Spring& spring = system.Springs()[i];
+            SceneSpring s2;
+            if (!IdOf(spring.GetP1(), &s2.a) || !IdOf(spring.GetP2(), &s2.b)) {
+                notes->push_back("spring " + std::to_string(i) + ": an end is not a free particle; left out");
+                continue;
+            }
+            s2.stiffness = -spring.k;
+            s2.damping = spring.b;
+            s2.restLength = spring.restingLength;
+            d.springs.push_back(s2);
         }
-        j.length = joint.length;
-        d.joints.push_back(j);
+        for (std::size_t i = 0; i < system.Joints().size(); ++i) {
+            const DistanceJoint& joint = *system.Joints()[i];
+            SceneJoint j;
+            if (!IdOf(joint.p1, &j.a) || !IdOf(joint.p2, &j.b)) {
+                notes->push_back("joint " + std::to_string(i) + ": an end is not a free particle; left out");
+                continue;
+            }
+            j.length = joint.length;
+            d.joints.push_back(j);
+        }
     }
-    for (std::size_t i = 0; i < system.Cloths().size(); ++i) {
-        const Cloth& cloth = *system.Cloths()[i];
-        const int n = cloth.GridSize();
-        const std::vector<Particle>& v = cloth.verts;
-        SceneCloth c;
-        c.gridSize = n;
-        c.spacing = v[1].GetPosition().x - v[0].GetPosition().x;
-        c.position = (v.front().GetPosition() + v.back().GetPosition()) * 0.5f;
-        c.particleMass = v[0].GetMass();
-        c.velocityRetention = v[0].GetVelocityRetention();
-        if (!cloth.structural.empty())
-            c.structuralStiffness = -cloth.structural[0].k, c.structuralDamping = cloth.structural[0].b;
-        if (!cloth.shear.empty()) c.shearStiffness = -cloth.shear[0].k, c.shearDamping = cloth.shear[0].b;
-        if (!cloth.bend.empty()) c.bendStiffness = -cloth.bend[0].k, c.bendDamping = cloth.bend[0].b;
-        // The spacing read from the positions may be a float or two off the one the grid was built with: the
-        // nearest that rebuilds every particle exactly is taken.
-        bool same = false;
-        float down = c.spacing, up = c.spacing;
-        for (int k = 0; k < 64 && !same; ++k) {
+    void Cloths(const PhysicsSystem& system) {
+        for (std::size_t i = 0; i < system.Cloths().size(); ++i) {
+            const Cloth& cloth = *system.Cloths()[i];
+            const std::vector<Particle>& v = cloth.verts;
+            SceneCloth c;
+            c.gridSize = cloth.GridSize();
+            c.spacing = v[1].GetPosition().x - v[0].GetPosition().x;
+            c.position = (v.front().GetPosition() + v.back().GetPosition()) * 0.5f;
+            c.particleMass = v[0].GetMass();
+            c.velocityRetention = v[0].GetVelocityRetention();
+            if (!cloth.structural.empty())
+                c.structuralStiffness = -cloth.structural[0].k, c.structuralDamping = cloth.structural[0].b;
+            if (!cloth.shear.empty()) c.shearStiffness = -cloth.shear[0].k, c.shearDamping = cloth.shear[0].b;
+            if (!cloth.bend.empty()) c.bendStiffness = -cloth.bend[0].k, c.bendDamping = cloth.bend[0].b;
+            if (!RebuildingSpacing(v, &c))
+                notes->push_back("cloth " + std::to_string(i) + ": not the book's flat grid; written as one");
+            Gravity(v[0].GetGravity(), "cloth " + std::to_string(i));
+            d.cloths.push_back(c);
+        }
+    }
+    /// The spacing read from the positions may be a float or two off the one the grid was built with: the
+    /// nearest that rebuilds every particle exactly is taken (into c->spacing). False when none within 64 floats
+    /// of it does.
+    static bool RebuildingSpacing(const std::vector<Particle>& v, SceneCloth* c) {
+        float down = c->spacing, up = c->spacing;
+        for (int k = 0; k < 64; ++k) {
             for (float spacing : {down, up}) {
                 Cloth rebuilt;
-                rebuilt.Initialize(c.gridSize, spacing, c.position);
+                rebuilt.Initialize(c->gridSize, spacing, c->position);
                 bool match = rebuilt.verts.size() == v.size();
                 for (std::size_t m = 0; match && m < v.size(); ++m) {
                     const vec3 p = rebuilt.verts[m].GetPosition(), q = v[m].GetPosition();
                     match = p.x == q.x && p.y == q.y && p.z == q.z;
                 }
                 if (match) {
-                    c.spacing = spacing;
-                    same = true;
-                    break;
+                    c->spacing = spacing;
+                    return true;
                 }
             }
             down = std::nextafter(down, 0.0f);
             up = std::nextafter(up, 1e9f);
         }
-        if (!same) notes->push_back("cloth " + std::to_string(i) + ": not the book's flat grid; written as one");
-        gravityOf(v[0].GetGravity(), "cloth " + std::to_string(i));
-        d.cloths.push_back(c);
+        return false;
     }
-    return d;
+};
+
+}  // namespace
+
+SceneDescription DescribeWorld(const PhysicsSystem& system, const std::string& name, std::vector<std::string>* notes) {
+    Describer describer;
+    describer.notes = notes;
+    describer.d.name = name;
+    describer.Settings(system.settings);
+    describer.Bodies(system);
+    describer.Constraints(system);
+    describer.Links(system);
+    describer.Cloths(system);
+    return describer.d;
 }
 
 std::string WriteSceneText(const SceneDescription& d) {
@@ -232,7 +261,7 @@ std::string WriteSceneText(const SceneDescription& d) {
     if (d.autoModel.Auto()) {  // a fixed model writes neither key, so exports without auto stay as they were
         root["model"] = "auto";
         root["budget"] = {{"quantity", ToString(static_cast<BudgetQuantity>(d.autoModel.quantity))},
-                          {"bound", J(d.autoModel.tolerance)}};
+                          {"bound", J(d.autoModel.bound)}};
     }
     const SceneWorld& w = d.world;
     Json world = {{"gravity", J(w.gravity)},

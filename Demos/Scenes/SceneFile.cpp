@@ -13,6 +13,7 @@
 #include "Demos/Scenes/DuplicateKeys.h"
 #include "Demos/Scenes/JsonNesting.h"
 #include "Demos/Scenes/StepValue.h"
+#include "Physics/ModelChoice/ModelChoice.h"
 
 using Json = nlohmann::json;
 
@@ -430,7 +431,7 @@ void ReadCloth(const Json& j, const std::string& path, SceneCloth* c, Problems* 
     r.Finish();
 }
 
-/// "model" and "budget" (docs/scenes.md, "Error budget"). The bound is checked as `--set tolerance=` checks it
+/// "model" and "budget" (docs/scenes.md, "Error budget"). The bound is checked as `--set error-budget=` checks it
 /// (finite, > 0, within the key's range: AddAutoModelParameters), so a file and the command line take the same.
 void ReadAutoModel(const Json& root, ObjectReader* r, AutoModelRequest* request, Problems* problems) {
     std::string model;
@@ -454,13 +455,8 @@ void ReadAutoModel(const Json& root, ObjectReader* r, AutoModelRequest* request,
         problems->Add("budget.quantity", "must be position, energy or constraint", &budget->at("quantity"));
     }
     request->quantity = static_cast<int>(quantity);
-    // The range is `--set tolerance=`'s, read from its table entry (AddAutoModelParameters).
-    ParameterSet keys;
-    AutoModelRequest scratch;
-    AddAutoModelParameters(&keys, &scratch);
-    const ParameterSet::Entry* key = keys.Find("tolerance");
     if (!b.Has("bound")) problems->Add("budget.bound", "is required");
-    b.FloatIn("bound", &request->tolerance, static_cast<float>(key->min), static_cast<float>(key->max));
+    b.FloatIn("bound", &request->bound, AutoModelRequest::kMinBound, AutoModelRequest::kMaxBound);
     b.Finish();
 }
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "Demos/Scenes/AutoModel.h"
+#include "Demos/Scenes/ModelRequest.h"
 #include "Math/quaternion.h"
 #include "Math/vectors.h"
 #include "Physics/ContactSolver.h"

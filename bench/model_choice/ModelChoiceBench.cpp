@@ -494,7 +494,7 @@ int main(int argc, char** argv) {
             c.cheapest = CheapestMeeting(rows, p->sweepProblem, p->sweepParam, budget);
             AutoModelRequest request;
             request.model = 1;
-            request.tolerance = float(c.autoBound);
+            request.bound = float(c.autoBound);
             request.quantity = int(p->quantity);
             c.autoRun = RunScene(d, *p, {}, &request, minCpu, repeats, tuning);
             if (!c.autoRun.ok) {

@@ -388,7 +388,7 @@ std::vector<ReferenceProblem> Build() {
     // The CTest's small grid: cases auto meets today, across particles, springs, a pendulum, bounces, volumes and a
     // stack, so a change that stops it meeting them fails (the full bench reports the others). pendulum-small at
     // 1e-2 and bounce-particle-0.9 were above 3x their budgets before particle worlds were measured over the whole
-    // run (windows missed the period error and the bounces).
+    // run (spans missed the period error and the bounces).
     for (ReferenceProblem& p : out) {
         if (p.name.rfind("bounce", 0) == 0) p.checkSeconds = 15.0;
         p.fast = p.name == "projectile" || p.name == "spring-damped" || p.name == "spring-energy" ||

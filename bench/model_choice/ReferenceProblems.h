@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "Demos/Scenes/FileScene.h"
-#include "Physics/ModelChoice.h"
+#include "Physics/ModelChoice/ModelChoice.h"
 
 namespace modelchoice {
 

@@ -87,7 +87,7 @@ TEST(AutoModelCli, DemosRunWithTheEstimateInTheStateCsv) {
     // springs: two particles; ch15: the ground and two boxes.
     for (const auto& [demo, bodies] : std::vector<std::pair<std::string, std::size_t>>{{"springs", 2}, {"ch15", 3}}) {
         const std::string csv = dir + "/" + demo + ".csv";
-        const SandboxResult r = RunSandboxExe({"--demo", demo, "--set", "model=auto", "--set", "tolerance=0.2",
+        const SandboxResult r = RunSandboxExe({"--demo", demo, "--set", "model=auto", "--set", "error-budget=0.2",
                                                "--frames", "30", "--no-ui", "--state", csv});
         ASSERT_EQ(r.exitCode, 0) << demo << ": " << r.err;
         ExpectEstimateColumn(ReadText(csv), bodies, 30);
@@ -104,11 +104,11 @@ TEST(AutoModelCli, EverySimulatedDemoTakesTheKeysAndTheScriptedOnesDoNot) {
         ASSERT_EQ(params.exitCode, 0) << demo << ": " << params.err;
         EXPECT_EQ(ParamValue(params.out, "model"), "fixed") << demo;
         EXPECT_EQ(ParamValue(params.out, "budget"), "position") << demo;
-        EXPECT_FALSE(ParamValue(params.out, "tolerance").empty()) << demo;
+        EXPECT_FALSE(ParamValue(params.out, "error-budget").empty()) << demo;
         // A loose budget (5 m over 0.5 s) is met on each, and the run carries the estimate. (At 1 m momentum's watch
         // finds the collision's estimate over the budget at its fixed 0.03 s step: exit 4.)
         const std::string csv = dir + "/" + demo + ".csv";
-        const SandboxResult r = RunSandboxExe({"--demo", demo, "--set", "model=auto", "--set", "tolerance=5",
+        const SandboxResult r = RunSandboxExe({"--demo", demo, "--set", "model=auto", "--set", "error-budget=5",
                                                "--frames", "30", "--no-ui", "--quiet", "--state", csv});
         ASSERT_EQ(r.exitCode, 0) << demo << ": " << r.err;
         EXPECT_EQ(Lines(ReadText(csv)).front(), "frame,time,body,kind,x,y,z,vx,vy,vz,error_estimate") << demo;
@@ -120,12 +120,27 @@ TEST(AutoModelCli, EverySimulatedDemoTakesTheKeysAndTheScriptedOnesDoNot) {
     }
 }
 
+TEST(AutoModelCli, TheOldToleranceKeyStillSetsTheErrorBudgetAndSaysItIsDeprecated) {
+    // `--set tolerance=` was the error budget's key before `error-budget` (docs/model-choice.md): the same choice,
+    // the same states, and one line on stderr naming the new key.
+    const std::string dir = ScratchDir("auto_model_tolerance_alias");
+    const SandboxResult old = RunSandboxExe({"--demo", "springs", "--set", "model=auto", "--set", "tolerance=0.002",
+                                             "--frames", "30", "--no-ui", "--state", dir + "/old.csv"});
+    ASSERT_EQ(old.exitCode, 0) << old.err;
+    EXPECT_NE(old.err.find("'tolerance' is deprecated; use 'error-budget'"), std::string::npos) << old.err;
+    const SandboxResult now = RunSandboxExe({"--demo", "springs", "--set", "model=auto", "--set", "error-budget=0.002",
+                                             "--frames", "30", "--no-ui", "--state", dir + "/new.csv"});
+    ASSERT_EQ(now.exitCode, 0) << now.err;
+    EXPECT_EQ(now.err.find("deprecated"), std::string::npos) << now.err;
+    EXPECT_EQ(ReadText(dir + "/old.csv"), ReadText(dir + "/new.csv"));
+}
+
 TEST(AutoModelCli, TheChosenModelIsTheOneThatRuns) {
     // A budget the book's step does not meet: the choice differs from the defaults. --params shows the values in
     // effect after the choice; a fixed run with exactly those values gives the auto run's states.
     const std::string dir = ScratchDir("auto_model_chosen");
-    const std::vector<std::string> autoArgs = {"--demo",          "springs",  "--set", "model=auto", "--set",
-                                               "tolerance=0.002", "--frames", "30",    "--no-ui"};
+    const std::vector<std::string> autoArgs = {
+        "--demo", "springs", "--set", "model=auto", "--set", "error-budget=0.002", "--frames", "30", "--no-ui"};
     std::vector<std::string> params = autoArgs;
     params.push_back("--params");
     const SandboxResult listed = RunSandboxExe(params);
@@ -179,25 +194,25 @@ TEST(AutoModelCli, BadTolerancesExitTwoNamingTheValueWithNothingWritten) {
     const std::string dir = ScratchDir("auto_model_bad_tolerance");
     for (const char* value : {"0", "nan", "-1", "inf"}) {
         const SandboxResult r =
-            RunSandboxExe({"--demo", "springs", "--set", "model=auto", "--set", std::string("tolerance=") + value,
+            RunSandboxExe({"--demo", "springs", "--set", "model=auto", "--set", std::string("error-budget=") + value,
                            "--frames", "30", "--out", dir + "/frames", "--state", dir + "/s.csv"});
         EXPECT_EQ(r.exitCode, 2) << value << ": " << r.err;
-        EXPECT_NE(r.err.find(std::string("tolerance=") + value), std::string::npos) << r.err;
+        EXPECT_NE(r.err.find(std::string("error-budget=") + value), std::string::npos) << r.err;
         EXPECT_TRUE(FilesIn(dir).empty()) << value;
     }
 }
 
 TEST(AutoModelCli, AnImpossibleBudgetIsRefusedUpFront) {
     const std::string dir = ScratchDir("auto_model_impossible");
-    const SandboxResult r = RunSandboxExe({"--demo", "springs", "--set", "model=auto", "--set", "tolerance=1e-9",
+    const SandboxResult r = RunSandboxExe({"--demo", "springs", "--set", "model=auto", "--set", "error-budget=1e-9",
                                            "--frames", "30", "--out", dir + "/frames", "--state", dir + "/s.csv"});
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_NE(r.err.find("1e-09"), std::string::npos) << "the message names the budget: " << r.err;
     EXPECT_NE(r.err.find("the budget over the safety factor"), std::string::npos) << r.err;
     EXPECT_TRUE(FilesIn(dir).empty());
     // --explain-model refuses it the same way.
-    const SandboxResult explained = RunSandboxExe(
-        {"--demo", "springs", "--set", "model=auto", "--set", "tolerance=1e-9", "--frames", "30", "--explain-model"});
+    const SandboxResult explained = RunSandboxExe({"--demo", "springs", "--set", "model=auto", "--set",
+                                                   "error-budget=1e-9", "--frames", "30", "--explain-model"});
     EXPECT_EQ(explained.exitCode, 2) << explained.err;
     EXPECT_NE(explained.err.find("the budget over the safety factor"), std::string::npos) << explained.err;
 }
@@ -209,7 +224,7 @@ TEST(AutoModelCli, ExplainModelNeedsAnAutoModelAndRunsNothing) {
     EXPECT_NE(fixed.err.find("--set model=auto"), std::string::npos) << fixed.err;
     EXPECT_TRUE(fixed.out.empty()) << fixed.out;
     const SandboxResult explained =
-        RunSandboxExe({"--demo", "ch15", "--set", "model=auto", "--set", "tolerance=0.2", "--frames", "30",
+        RunSandboxExe({"--demo", "ch15", "--set", "model=auto", "--set", "error-budget=0.2", "--frames", "30",
                        "--explain-model", "--out", dir + "/frames", "--state", dir + "/s.csv"});
     EXPECT_EQ(explained.exitCode, 0) << explained.err;
     EXPECT_FALSE(explained.out.empty());
@@ -231,7 +246,7 @@ TEST(AutoModelCli, SceneFilesChooseTooAndExportKeepsTheBudget) {
 
     // A demo exported with model=auto writes its request, and the file runs with it.
     const std::string exported = dir + "/springs.json";
-    const SandboxResult e = RunSandboxExe({"--demo", "springs", "--set", "model=auto", "--set", "tolerance=0.03",
+    const SandboxResult e = RunSandboxExe({"--demo", "springs", "--set", "model=auto", "--set", "error-budget=0.03",
                                            "--set", "budget=energy", "--export-scene", exported});
     ASSERT_EQ(e.exitCode, 0) << e.err;
     const std::string text = ReadText(exported);
@@ -261,8 +276,8 @@ TEST(AutoModelCli, ARunThatMissesItsBudgetExitsFourWithItsOutputsWhole) {
     const std::string dir = ScratchDir("auto_model_missed");
     const std::string csv = dir + "/stack-5.csv";
     const std::string scene = std::string(PSB_SOURCE_DIR) + "/scenes/reference/stack-5.json";
-    const SandboxResult r =
-        RunSandboxExe({"--scene", scene, "--set", "model=auto", "--set", "tolerance=0.1", "--no-ui", "--state", csv});
+    const SandboxResult r = RunSandboxExe(
+        {"--scene", scene, "--set", "model=auto", "--set", "error-budget=0.1", "--no-ui", "--state", csv});
     EXPECT_EQ(r.exitCode, 4) << r.err;
     EXPECT_NE(r.err.find("missed its error budget"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("the budget 0.1 at frame "), std::string::npos) << r.err;
@@ -271,7 +286,7 @@ TEST(AutoModelCli, ARunThatMissesItsBudgetExitsFourWithItsOutputsWhole) {
     EXPECT_EQ(rows.back().rfind("599,10,", 0), 0u) << rows.back();  // the last frame, landed on 10 s
     // The same run with a budget it meets exits 0: the code follows the watch, not the scene.
     const SandboxResult met =
-        RunSandboxExe({"--scene", scene, "--set", "model=auto", "--set", "tolerance=2", "--no-ui", "--quiet"});
+        RunSandboxExe({"--scene", scene, "--set", "model=auto", "--set", "error-budget=2", "--no-ui", "--quiet"});
     EXPECT_EQ(met.exitCode, 0) << met.err;
 }
 
@@ -316,7 +331,7 @@ TEST(AutoModelCli, TheReadmesSpringsExamplesMeetTheirBudgetsAgainstAConvergedRef
          std::vector<std::pair<std::string, std::string>>{{"1e-3", "600"}, {"1e-2", "300"}}) {
         const std::string csv = dir + "/auto-" + frames + ".csv";
         const SandboxResult r =
-            RunSandboxExe({"--demo", "springs", "--set", "model=auto", "--set", "tolerance=" + tolerance, "--frames",
+            RunSandboxExe({"--demo", "springs", "--set", "model=auto", "--set", "error-budget=" + tolerance, "--frames",
                            frames, "--state", csv, "--no-ui", "--quiet"});
         ASSERT_EQ(r.exitCode, 0) << tolerance << ": " << r.err;
         std::string reference[2];

@@ -14,6 +14,7 @@
 #include "Demos/Scenes/FileScene.h"
 #include "Demos/Scenes/JsonNesting.h"
 #include "Demos/Scenes/SceneFile.h"
+#include "Physics/ModelChoice/ModelChoice.h"
 
 namespace {
 

@@ -15,7 +15,7 @@
 
 #include "Demos/Scenes/FileScene.h"
 #include "Demos/Scenes/SceneFile.h"
-#include "Physics/ModelChoice.h"
+#include "Physics/ModelChoice/ModelChoice.h"
 #include "Physics/PhysicsSystem.h"
 
 namespace {
@@ -123,7 +123,7 @@ double OscillatorError(const FileScene& scene, double t) {
 AutoModelRequest Budget(double bound, int quantity = 0) {
     AutoModelRequest r;
     r.model = 1;
-    r.tolerance = static_cast<float>(bound);
+    r.bound = static_cast<float>(bound);
     r.quantity = quantity;
     return r;
 }
@@ -197,11 +197,11 @@ TEST(AutoModel, StackDrift) {
 
 namespace {
 
-// A sphere falls freely for 2 s (a world with volumes gets no pilot, and the calibration window sees only the
+// A sphere falls freely for 2 s (a world with volumes gets no pilot, and the calibration span sees only the
 // fall), then hits the ground: the watch must see the impact when it happens and say so, refining the model or,
 // when the impact's error alone already exceeds the budget, reporting the miss. A second sphere rests far away: a
 // world of one volume is measured over the whole run, which sees the impact at calibration (and refuses this budget).
-// At 1 cm every candidate the start window meets is unreliable (the soft solver's resting contact does not converge
+// At 1 cm every candidate the start span meets is unreliable (the soft solver's resting contact does not converge
 // with its substeps: 32 substeps at 5 ms, a ratio of 1.3) and the budget is refused; 2 cm is met.
 TEST(AutoModel, WatchSeesContactBegin) {
     SceneDescription d;
@@ -288,22 +288,22 @@ Chosen ReferenceChoice(const std::string& name, double bound, const ChoiceSettin
     return Chosen(d, d.duration, Budget(bound), tuning);
 }
 
-// In a world without volumes the pilot finds the bounce the start window cannot see, and the calibration gives it
-// a window: the particle dropped from 20 m gets an event window at its first impact (t = 2.02 s). (At 1e-2 m the
+// In a world without volumes the pilot finds the bounce the start span cannot see, and the calibration gives it
+// a span: the particle dropped from 20 m gets an event span at its first impact (t = 2.02 s). (At 1e-2 m the
 // budget is refused: measured over the whole run, the bounces' timing errors are 6 mm at the finest step.)
 TEST(AutoModel, PilotFindsTheImpactOfAParticleWorld) {
     const Chosen run(DroppedParticle(), 10.0, Budget(1e-1));
     ASSERT_TRUE(run.chosen) << run.error;
     const std::vector<double>& events = run.autoModel.Choice().eventTimes;
     ASSERT_FALSE(events.empty());
-    const double window = run.autoModel.Choice().windowSeconds;
+    const double span = run.autoModel.Choice().spanSeconds;
     EXPECT_LE(events.front(), 2.02);
-    EXPECT_GE(events.front() + window, 2.02) << "the first event window covers the first impact";
+    EXPECT_GE(events.front() + span, 2.02) << "the first event span covers the first impact";
 }
 
 // A candidate of a world without volumes is measured over the whole run exactly when that run, beside its
 // refinement's and a third probe's at a quarter of the step, costs at most ChoiceSettings::wholeRunWork; the costlier
-// ones keep their windows. A bouncing particle over 100 s at a tight budget has candidates of both kinds.
+// ones keep their spans. A bouncing particle over 100 s at a tight budget has candidates of both kinds.
 TEST(AutoModel, CheapCandidatesAreMeasuredOverTheWholeRun) {
     // Refused: 1e-12 m is below any candidate, so the search goes on into the costly ones (at the end of the run,
     // where whole runs are judged, the skin contact leaves cheap candidates at rest within a micrometre).
@@ -323,7 +323,7 @@ TEST(AutoModel, CheapCandidatesAreMeasuredOverTheWholeRun) {
     EXPECT_GT(windowed, 0);
 }
 
-// After a choice measured over the whole run the watch has nothing left to check: no window runs (auto's CPU is
+// After a choice measured over the whole run the watch has nothing left to check: no span runs (auto's CPU is
 // the calibration's alone) and the running estimate stays the calibration's.
 TEST(AutoModel, AWholeRunChoiceIsNotWatched) {
     Chosen run(Oscillator(), 10.0, Budget(1e-2));
@@ -356,13 +356,13 @@ TEST(AutoModel, AWholeRunChoiceIsNotWatched) {
     }
 }
 
-// A window estimate is not trusted below what its family's whole-run measurements predict. The 1 m pendulum at 120°
+// A span estimate is not trusted below what its family's whole-run measurements predict. The 1 m pendulum at 120°
 // over 14.45 s (the validation's reference): RK4 down to 0.5 ms is cheap enough to be measured over the whole run
-// (0.80 m there); at 0.1 ms it is not, and its 0.72 s start window, extrapolated, says 1.8 mm. The joint makes the
+// (0.80 m there); at 0.1 ms it is not, and its 0.72 s start span, extrapolated, says 1.8 mm. The joint makes the
 // family first order, so 0.1 ms is taken to be at least 0.16 m. With a budget of 7.8 cm nothing then meets it, and
 // the run is refused; without the floor RK4 at 0.1 ms was chosen and ended 0.41 m off
 // (docs/model-choice-validation.md, a period error of 0.0052).
-TEST(AutoModel, AWindowEstimateIsNotTrustedBelowItsFamilysWholeRun) {
+TEST(AutoModel, ASpanEstimateIsNotTrustedBelowItsFamilysWholeRun) {
     const Chosen run = ReferenceChoice("pendulum-large", 0.0784);
     EXPECT_FALSE(run.chosen);
     const CandidateEstimate* fine = nullptr;
@@ -403,9 +403,9 @@ TEST(AutoModel, AWholeRunDifferenceIsCheckedByAFinerPair) {
 
 // A world of one volume (no stack to topple, so a whole run is a measurement, not a chaotic divergence) is measured
 // over the whole run like a particle world. The validation's sphere bouncing at e = 0.9 with a position budget of
-// 1.7 mm (1e-3 of its fifth apex): on windows, the soft solver with 2 substeps at 0.1 ms was estimated within it and
+// 1.7 mm (1e-3 of its fifth apex): on spans, the soft solver with 2 substeps at 0.1 ms was estimated within it and
 // ended 1.9 times over; measured over the whole run, the timing of its bounces is seen and the budget is refused, as
-// no sweep setting meets it either. A tower of two boxes keeps its windows.
+// no sweep setting meets it either. A tower of two boxes keeps its spans.
 TEST(AutoModel, AWorldOfOneVolumeIsMeasuredOverTheWholeRun) {
     const Chosen ball = ReferenceChoice("bounce-sphere-0.9", 1.74e-3);
     EXPECT_FALSE(ball.chosen) << ball.autoModel.Current().Describe(false, true);
@@ -418,7 +418,7 @@ TEST(AutoModel, AWorldOfOneVolumeIsMeasuredOverTheWholeRun) {
         towerEvaluated += e.evaluated;
         EXPECT_FALSE(e.evaluated && e.wholeRun) << e.model.Describe(false, true);
     }
-    EXPECT_GT(towerEvaluated, 0) << "the tower's candidates were estimated, on windows";
+    EXPECT_GT(towerEvaluated, 0) << "the tower's candidates were estimated, on spans";
 }
 
 /// The world's energy at the end of `d` run with `integrator` at `step` for whole steps up to its duration.
@@ -547,12 +547,12 @@ TEST(AutoModel, TheEvaluationLimitReachesPastTheSixtiethCandidate) {
     EXPECT_LE(run.autoModel.Choice().evaluatedShare, ChoiceSettings().maxEvaluations);
 }
 
-// A calibration window stops at the first sample whose difference alone already misses the budget: the tower of
-// five at 1 cm chooses the same model as with every window run to its end, for less work, and every candidate
+// A calibration span stops at the first sample whose difference alone already misses the budget: the tower of
+// five at 1 cm chooses the same model as with every span run to its end, for less work, and every candidate
 // stopped early did miss.
-TEST(AutoModel, AWindowStopsAtItsFirstMiss) {
+TEST(AutoModel, ASpanStopsAtItsFirstMiss) {
     ChoiceSettings whole;
-    whole.stopWindowsAtMiss = false;
+    whole.stopSpansAtMiss = false;
     const Chosen stopping = ReferenceChoice("stack-5", 0.01), full = ReferenceChoice("stack-5", 0.01, whole);
     ASSERT_TRUE(stopping.chosen) << stopping.error;
     ASSERT_TRUE(full.chosen) << full.error;
@@ -565,17 +565,17 @@ TEST(AutoModel, AWindowStopsAtItsFirstMiss) {
         ++stopped;
         EXPECT_TRUE(c.partial) << c.model.Describe();
         EXPECT_GT(c.estimate, 0.01 / ChoiceSettings().safety) << c.model.Describe();
-        EXPECT_NE(c.note.find("into window"), std::string::npos) << c.note;
+        EXPECT_NE(c.note.find("into span"), std::string::npos) << c.note;
     }
     EXPECT_GT(stopped, 0);
     // The estimates' work; the convergence checks of the candidates that met the budget are the same in both.
     EXPECT_LT(a.calibrationWork - a.checkWork, 0.5 * (b.calibrationWork - b.checkWork));
 }
 
-// The evaluation limit counts a candidate stopped early for the part of its windows that ran: the tower of ten at
+// The evaluation limit counts a candidate stopped early for the part of its spans that ran: the tower of ten at
 // 1 mm is met by the accumulated solver at 0.5 ms after more than 100 candidates, most of them stopped early; counted
 // whole, the limit refused it.
-TEST(AutoModel, TheEvaluationLimitCountsTheWindowsThatRan) {
+TEST(AutoModel, TheEvaluationLimitCountsTheSpansThatRan) {
     const Chosen run = ReferenceChoice("stack-10", 0.001);
     ASSERT_TRUE(run.chosen) << run.error;
     EXPECT_GT(run.autoModel.Choice().evaluatedCount, ChoiceSettings().maxEvaluations);
@@ -724,9 +724,9 @@ TEST(AutoModel, ConstraintBudgetBoundsTheJointError) {
         const double dt = scene.PhysicsStep();
         // The calibration's steps (the whole run; at least two): constraint error is observed, not extrapolated,
         // so the estimate is the largest violation the chosen model makes there, measured here independently.
-        const long long windowSteps =
-            std::max(2LL, std::llround((chosen.wholeRun ? 3.0 : autoModel.Choice().windowSeconds) / dt));
-        double worstInWindow = 0.0;
+        const long long spanSteps =
+            std::max(2LL, std::llround((chosen.wholeRun ? 3.0 : autoModel.Choice().spanSeconds) / dt));
+        double worstInSpan = 0.0;
         long long n = 0;
         for (double t = dt; t <= 3.0 + 1e-9; t += dt) {
             scene.Step(static_cast<float>(dt));
@@ -734,9 +734,9 @@ TEST(AutoModel, ConstraintBudgetBoundsTheJointError) {
             const double violation =
                 std::fabs(std::sqrt(double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z) - 1.0);
             worst = std::max(worst, violation);
-            if (++n <= windowSteps) worstInWindow = worstInWindow > violation ? worstInWindow : violation;
+            if (++n <= spanSteps) worstInSpan = worstInSpan > violation ? worstInSpan : violation;
         }
-        EXPECT_NEAR(estimate, worstInWindow, 1e-6 * worstInWindow) << autoModel.Current().Describe(true, false);
+        EXPECT_NEAR(estimate, worstInSpan, 1e-6 * worstInSpan) << autoModel.Current().Describe(true, false);
         EXPECT_LE(worst, bound) << autoModel.Current().Describe(true, false);
     }
 }

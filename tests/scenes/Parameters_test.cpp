@@ -179,6 +179,23 @@ TEST(ParameterSet, IntRangeIsInclusive) {
     EXPECT_FALSE(set.Set("count", "31", &error));
 }
 
+TEST(ParameterSet, ADeprecatedKeySetsTheSameValueAndItsNoteNamesTheNewKey) {
+    float bound = 0.0f;
+    ParameterSet set;
+    set.AddFloat("error-budget", &bound, 0.0f, 1.0f, "").DeprecatedAlias("tolerance");
+    std::string error, note;
+    ASSERT_TRUE(set.Set("tolerance", "0.25", &error, &note)) << error;
+    EXPECT_EQ(bound, 0.25f);
+    EXPECT_NE(note.find("'tolerance' is deprecated; use 'error-budget'"), std::string::npos) << note;
+    note.clear();
+    ASSERT_TRUE(set.Set("error-budget", "0.5", &error, &note)) << error;
+    EXPECT_EQ(bound, 0.5f);
+    EXPECT_EQ(note, "");
+    EXPECT_FALSE(set.Set("tolerance", "2", &error, &note));  // the old key keeps the new key's range
+    EXPECT_NE(error.find("'tolerance'"), std::string::npos) << error;
+    EXPECT_EQ(set.Describe().find("tolerance"), std::string::npos) << set.Describe();  // not listed as a key
+}
+
 TEST(ParameterSet, AliasesSetTheSameValueAndAreListed) {
     float value = 0.0f;
     ParameterSet set;

@@ -12,7 +12,10 @@
 #include <vector>
 
 #include "Demos/Scenes/FileScene.h"
+#include "Demos/Scenes/ModelRequest.h"
+#include "Demos/Scenes/Parameters.h"
 #include "Demos/Scenes/SceneExport.h"
+#include "Physics/ModelChoice/ModelChoice.h"
 #include "tests/support/Approx.h"
 
 namespace {
@@ -667,18 +670,18 @@ TEST(SceneFile, ReadsTheErrorBudget) {
         Problems(File(kBox, R"("model": "auto", "budget": {"quantity": "energy", "bound": 0.05})"), &d).empty());
     EXPECT_TRUE(d.autoModel.Auto());
     EXPECT_EQ(d.autoModel.quantity, static_cast<int>(BudgetQuantity::Energy));
-    EXPECT_EQ(d.autoModel.tolerance, 0.05f);
+    EXPECT_EQ(d.autoModel.bound, 0.05f);
     EXPECT_EQ(d.autoModel.Budget().quantity, BudgetQuantity::Energy);
 
     // The quantity defaults to position; "fixed" may keep a budget (for `--set model=auto`).
     ASSERT_TRUE(Problems(File(kBox, R"("model": "auto", "budget": {"bound": 0.002})"), &d).empty());
     EXPECT_EQ(d.autoModel.quantity, static_cast<int>(BudgetQuantity::Position));
-    EXPECT_EQ(d.autoModel.tolerance, 0.002f);
+    EXPECT_EQ(d.autoModel.bound, 0.002f);
     ASSERT_TRUE(
         Problems(File(kBox, R"("model": "fixed", "budget": {"quantity": "constraint", "bound": 0.1})"), &d).empty());
     EXPECT_FALSE(d.autoModel.Auto());
     EXPECT_EQ(d.autoModel.quantity, static_cast<int>(BudgetQuantity::Constraint));
-    EXPECT_EQ(d.autoModel.tolerance, 0.1f);
+    EXPECT_EQ(d.autoModel.bound, 0.1f);
 }
 
 TEST(SceneFile, RefusesABadErrorBudgetWithThePathAndValue) {
@@ -701,11 +704,11 @@ TEST(SceneFile, RefusesABadErrorBudgetWithThePathAndValue) {
                            {"budget.safety: unknown key"}));
     EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("model": "auto", "budget": 0.01)")),
                            {"budget: must be an object", "(got 0.01)"}));
-    // A file and `--set tolerance=` take the same bounds.
+    // A file and `--set error-budget=` take the same bounds.
     ParameterSet keys;
     AutoModelRequest request;
     AddAutoModelParameters(&keys, &request);
-    const ParameterSet::Entry* tolerance = keys.Find("tolerance");
+    const ParameterSet::Entry* tolerance = keys.Find("error-budget");
     ASSERT_NE(tolerance, nullptr);
     if (tolerance->max * 10.0 < 3e38) {  // a finite float above the key's range
         const std::string above = std::to_string(tolerance->max * 10.0);
@@ -728,5 +731,5 @@ TEST(SceneExport, WritesTheErrorBudgetOnlyForAnAutoModel) {
     ASSERT_TRUE(ParseSceneText(text, "export.json", &read, &errors)) << errors.front() << "\n" << text;
     EXPECT_TRUE(read.autoModel.Auto());
     EXPECT_EQ(read.autoModel.quantity, static_cast<int>(BudgetQuantity::Energy));
-    EXPECT_EQ(read.autoModel.tolerance, 0.05f);
+    EXPECT_EQ(read.autoModel.bound, 0.05f);
 }

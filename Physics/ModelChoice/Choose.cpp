@@ -1,42 +1,41 @@
-#include "Physics/ModelChoice.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 
-#include "Physics/ModelChoiceDetail.h"
+#include "Physics/ModelChoice/Internals.h"
+#include "Physics/ModelChoice/ModelChoice.h"
 
-using namespace model_choice;  // NOLINT: this file's own internals (Physics/ModelChoiceDetail.h)
+using namespace model_choice;  // NOLINT: this file's own internals (Physics/ModelChoice/Internals.h)
 
 namespace {
 
-/// A window, from `factory`'s state at `start` s: the calibration's at the start, or the watch's around an event.
-struct PlannedWindow {
+/// A span, from `factory`'s state at `start` s: the calibration's at the start, or the watch's around an event.
+struct PlannedSpan {
     enum class Kind { Start, Event };
     Kind kind = Kind::Start;
     ProbeFactory factory;
     double start = 0.0;
-    double span = 0.0;  ///< s of the run that follows the window's start
+    double rest = 0.0;  ///< s of the run that follows the span's start
     int warmSteps = 0;
 };
 
-/// The calibration's windows: one at the start and, for a world without volumes, up to settings.eventWindows around
-/// events the start window cannot see (a bounce, a cloth reaching an obstacle), from snapshots of a pilot run of the
+/// The calibration's spans: one at the start and, for a world without volumes, up to settings.eventSpans around
+/// events the start span cannot see (a bounce, a cloth reaching an obstacle), from snapshots of a pilot run of the
 /// scene's own model over the whole run. Particles restart exactly from a snapshot; volumes would lose their contact
 /// history (and the scene's own model may let a stack fall), so their events are left to the live watch. Each
 /// step's irregularity is the largest change of any point's acceleration times the step (m/s: what an impulse does,
-/// and what gravity or a smooth spring hardly does); the run is cut into intervals of half a window, and an interval
-/// ten times more irregular than any the start window covers gets a window from the snapshot of the interval before.
-std::vector<PlannedWindow> PlanWindows(const ProbeFactory& factory, const CandidateSpace& space,
-                                       const ChoiceSettings& settings, double window, ModelChoiceResult* result,
-                                       ChoiceClock* clock) {
-    using Kind = PlannedWindow::Kind;
+/// and what gravity or a smooth spring hardly does); the run is cut into intervals of half a span, and an interval
+/// ten times more irregular than any the start span covers gets a span from the snapshot of the interval before.
+std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateSpace& space,
+                                   const ChoiceSettings& settings, double span, ModelChoiceResult* result,
+                                   ChoiceClock* clock) {
+    using Kind = PlannedSpan::Kind;
     const double T = settings.runSeconds;
-    std::vector<PlannedWindow> plan{{Kind::Start, factory, 0.0, T, 0}};
-    const double interval = window / 2.0;
+    std::vector<PlannedSpan> plan{{Kind::Start, factory, 0.0, T, 0}};
+    const double interval = span / 2.0;
     const int intervals = static_cast<int>(std::ceil(T / interval - 1e-9));
-    if (settings.eventWindows <= 0 || space.hasVolumes || intervals < 4) return plan;
+    if (settings.eventSpans <= 0 || space.hasVolumes || intervals < 4) return plan;
     const double start = ThreadCpuSeconds();
     clock->StartPiece();
     clock->Candidate(0.0, "the pilot run of the scene's own model");
@@ -48,8 +47,8 @@ std::vector<PlannedWindow> PlanWindows(const ProbeFactory& factory, const Candid
     std::vector<double> x0, x1, x2, a1;  // positions two steps back, one back, now; the last acceleration
     long long n = 0;
     bool haveA = false;
-    // The pilot covers at most 50 windows (all of a run up to 10 s at the 0.2 s floor; the first 100 s of a long one).
-    const double pilotEnd = std::min(T, 50.0 * window);
+    // The pilot covers at most 50 spans (all of a run up to 10 s at the 0.2 s floor; the first 100 s of a long one).
+    const double pilotEnd = std::min(T, 50.0 * span);
     while ((n + 1) * h <= pilotEnd * (1.0 + 1e-12)) {
         if (!pilot->AdvanceTo((n + 1) * h)) break;  // the scene's own model blew up: plan from what came before
         ++n;
@@ -76,12 +75,12 @@ std::vector<PlannedWindow> PlanWindows(const ProbeFactory& factory, const Candid
             snapshots.push_back(pilot->Snapshot());
         }
     }
-    const double seen = std::max(jump[0], jump[1]);  // what the start window covers
+    const double seen = std::max(jump[0], jump[1]);  // what the start span covers
     std::vector<int> picked;
-    for (int e = 0; e < settings.eventWindows; ++e) {
+    for (int e = 0; e < settings.eventSpans; ++e) {
         int best = -1;
         for (int k = 2; k < intervals; ++k) {
-            bool near = false;  // picked windows cover two intervals each, never twice
+            bool near = false;  // picked spans cover two intervals each, never twice
             for (int p : picked) near = near || std::abs(p - k) < 2;
             if (near || k - 1 >= static_cast<int>(snapshots.size())) continue;
             if (jump[k] > 10.0 * seen && jump[k] > 1e-6 && (best < 0 || jump[k] > jump[best])) best = k;
@@ -102,12 +101,12 @@ std::vector<PlannedWindow> PlanWindows(const ProbeFactory& factory, const Candid
     return plan;
 }
 
-/// What one window adds to a candidate's estimate: its difference extrapolated over the run after its start with
+/// What one span adds to a candidate's estimate: its difference extrapolated over the run after its start with
 /// its fitted growth (a bounce at another time leaves a drift behind, growth near 1; a transient that settled, near
 /// 0). Constraint error is observed, not extrapolated.
-double Contribution(const PlannedWindow& p, const WindowResult& w, const ErrorBudget& budget) {
+double Contribution(const PlannedSpan& p, const SpanResult& w, const ErrorBudget& budget) {
     if (budget.quantity == BudgetQuantity::Constraint) return w.observed;
-    return w.factor * w.observed * std::pow(std::max(p.span / w.length, 1.0), w.growth);
+    return w.factor * w.observed * std::pow(std::max(p.rest / w.length, 1.0), w.growth);
 }
 
 /// The convergence check (ChoiceSettings::orderBand): a candidate's error must shrink with its step at the order
@@ -131,11 +130,11 @@ void CheckOrder(double pair, double finer, double noise, const CandidateSpace& s
     e->note = text;
 }
 
-/// A candidate's estimate: the sum of its windows' contributions (constraint error: the largest). Stops as soon as
+/// A candidate's estimate: the sum of its spans' contributions (constraint error: the largest). Stops as soon as
 /// it misses `bound` (the rest can only add), marking the estimate partial (a lower bound).
-void Evaluate(const std::vector<PlannedWindow>& plan, double window, const CandidateSpace& space,
-              const ErrorBudget& budget, const ChoiceSettings& settings, double bound, CandidateEstimate* e,
-              double* cpuSeconds, double* work, ChoiceClock* clock) {
+void Evaluate(const std::vector<PlannedSpan>& plan, double span, const CandidateSpace& space, const ErrorBudget& budget,
+              const ChoiceSettings& settings, double bound, CandidateEstimate* e, double* cpuSeconds, double* work,
+              ChoiceClock* clock) {
     e->estimate = 0.0;
     e->share = 0.0;
     e->segments.clear();
@@ -145,8 +144,8 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
     // the start, and the largest difference sampled over it, with the Richardson factor, is the estimate
     // (constraint error: the largest seen on the candidate alone). Not the position difference at the end: there a
     // bounce that died down leaves both at rest on the ground, and a spring is back near a turning point. Energy
-    // is bounded at the end and is measured there. The third probe checks either (RunWindow).
-    // The start window then spans the whole run: its contribution is its difference, nothing extrapolated.
+    // is bounded at the end and is measured there. The third probe checks either (RunSpan).
+    // The start span then spans the whole run: its contribution is its difference, nothing extrapolated.
     const bool refined = budget.quantity != BudgetQuantity::Constraint;
     const ModelCandidate fine = Refine(e->model, space);
     e->wholeRun = (!space.hasVolumes || space.volumeCount <= 1.0) && settings.wholeRunWork > 0.0 &&
@@ -155,22 +154,22 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
                            (refined ? PredictedWork(fine, space) + PredictedWork(Refine(fine, space), space) : 0.0)) <=
                       settings.wholeRunWork;
     double raisedFrom = -1.0;  // the pair's own estimate, when the third probe raised it
-    WindowResult first;        // the start window (the whole run's convergence figures)
-    const std::vector<PlannedWindow> whole{plan[0]};
-    const std::vector<PlannedWindow>& windows = e->wholeRun ? whole : plan;
-    const double length = e->wholeRun ? settings.runSeconds : window;
-    for (std::size_t k = 0; k < windows.size(); ++k) {
-        // A window stops as soon as its own difference misses (RunWindow); a whole run does not, as its estimate
+    SpanResult first;          // the start span (the whole run's convergence figures)
+    const std::vector<PlannedSpan> whole{plan[0]};
+    const std::vector<PlannedSpan>& spans = e->wholeRun ? whole : plan;
+    const double length = e->wholeRun ? settings.runSeconds : span;
+    for (std::size_t k = 0; k < spans.size(); ++k) {
+        // A span stops as soon as its own difference misses (RunSpan); a whole run does not, as its estimate
         // is what a finer rung of its family is floored by (RaiseToFamilyFloor), and a lower bound is not.
-        WindowOptions o;
-        o.warmSteps = windows[k].warmSteps;
+        SpanOptions o;
+        o.warmSteps = spans[k].warmSteps;
         o.wholeRun = e->wholeRun;
-        o.missBound = e->wholeRun || !settings.stopWindowsAtMiss ? -1.0 : bound;
+        o.missBound = e->wholeRun || !settings.stopSpansAtMiss ? -1.0 : bound;
         o.clock = clock;
-        const WindowResult w = RunWindow(windows[k].factory, e->model, space, budget, length, o);
+        const SpanResult w = RunSpan(spans[k].factory, e->model, space, budget, length, o);
         *cpuSeconds += w.probeCpuSeconds;
         *work += w.work;
-        e->share += w.share / static_cast<double>(windows.size());
+        e->share += w.share / static_cast<double>(spans.size());
         cpu += w.cpuSeconds;
         simulated += w.simulated;
         if (k == 0) first = w;
@@ -189,18 +188,17 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
         }
         if (k == 0) e->growth = w.growth;
         if (w.pairObserved >= 0.0) raisedFrom = w.factor * w.pairObserved;
-        const double c = Contribution(windows[k], w, budget);
+        const double c = Contribution(spans[k], w, budget);
         e->segments.push_back(c);
         e->estimate = budget.quantity == BudgetQuantity::Constraint ? std::max(e->estimate, c) : e->estimate + c;
-        // Missed already, within this window or after it: the rest can only add (a lower bound).
-        if (w.missedAt >= 0.0 || (e->estimate > bound && k + 1 < windows.size())) {
+        // Missed already, within this span or after it: the rest can only add (a lower bound).
+        if (w.missedAt >= 0.0 || (e->estimate > bound && k + 1 < spans.size())) {
             e->partial = true;
             char text[96];
             if (w.missedAt >= 0.0) {
-                std::snprintf(text, sizeof text, "missed %.3g s into window %zu of %zu", w.missedAt, k + 1,
-                              windows.size());
+                std::snprintf(text, sizeof text, "missed %.3g s into span %zu of %zu", w.missedAt, k + 1, spans.size());
             } else {
-                std::snprintf(text, sizeof text, "missed after %zu of %zu windows", k + 1, windows.size());
+                std::snprintf(text, sizeof text, "missed after %zu of %zu spans", k + 1, spans.size());
             }
             e->note = text;
             break;
@@ -224,13 +222,13 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
     e->cpuPerSimSecond = simulated > 0.0 ? cpu / simulated : 0.0;
 }
 
-/// The convergence checks of a candidate that meets the budget (CheckOrder). Estimated on windows: its start window
-/// again with the refinement's refinement beside the pair (seven of its windows; event windows are not repeated).
+/// The convergence checks of a candidate that meets the budget (CheckOrder). Estimated on spans: its start span
+/// again with the refinement's refinement beside the pair (seven of its spans; event spans are not repeated).
 /// Measured over the whole run, the pair was checked there (Evaluate). Where the refinement is not half the step (the
 /// soft solver on a world of volumes doubles its substeps), the error must also shrink with the step itself: the
 /// candidate, half its step and a quarter, same substeps, over the same span. A check cut short by the choice's CPU
 /// limit leaves the candidate unchecked, so it is not chosen.
-void VerifyOrder(const PlannedWindow& start, double window, const CandidateSpace& space, const ErrorBudget& budget,
+void VerifyOrder(const PlannedSpan& start, double span, const CandidateSpace& space, const ErrorBudget& budget,
                  const ChoiceSettings& settings, CandidateEstimate* e, double* cpuSeconds, double* work,
                  ChoiceClock* clock) {
     if (budget.quantity == BudgetQuantity::Constraint) return;
@@ -238,14 +236,14 @@ void VerifyOrder(const PlannedWindow& start, double window, const CandidateSpace
     for (int pass = 0; pass < 2 && !e->unreliable; ++pass) {
         const bool byStep = pass == 1;
         if ((pass == 0 && e->wholeRun) || (byStep && !alongSubsteps)) continue;
-        WindowOptions o;
+        SpanOptions o;
         o.warmSteps = start.warmSteps;
         o.wholeRun = e->wholeRun;
         o.third = true;
         o.clock = clock;
         o.byStep = byStep;
-        const WindowResult w =
-            RunWindow(start.factory, e->model, space, budget, e->wholeRun ? settings.runSeconds : window, o);
+        const SpanResult w =
+            RunSpan(start.factory, e->model, space, budget, e->wholeRun ? settings.runSeconds : span, o);
         *cpuSeconds += w.probeCpuSeconds;
         *work += w.work;
         if (w.stopped) {
@@ -256,28 +254,27 @@ void VerifyOrder(const PlannedWindow& start, double window, const CandidateSpace
         }
         const bool ok = w.stable && std::isfinite(w.observed) && w.pair >= 0.0;
         const char* over =
-            byStep ? (e->wholeRun ? "over the whole run, halving its step" : "over the start window, halving its step")
-                   : (alongSubsteps ? "over the start window, doubling its substeps" : "over the start window");
+            byStep ? (e->wholeRun ? "over the whole run, halving its step" : "over the start span, halving its step")
+                   : (alongSubsteps ? "over the start span, doubling its substeps" : "over the start span");
         const double before = e->estimate;
         CheckOrder(ok ? w.pair : kInf, ok ? w.finer : kInf, w.noise, space, settings, over, e);
         // Along the step, the pair's difference is the step's part of the error, which doubling the substeps did
-        // not see: the estimate is at least that part with its Richardson factor (over a window, extrapolated as
-        // the start window was).
-        const double stepPart = e->wholeRun
-                                    ? w.factor * w.pair
-                                    : w.factor * w.pair * std::pow(std::max(start.span / window, 1.0), e->growth);
+        // not see: the estimate is at least that part with its Richardson factor (over a span, extrapolated as
+        // the start span was).
+        const double stepPart =
+            e->wholeRun ? w.factor * w.pair : w.factor * w.pair * std::pow(std::max(start.rest / span, 1.0), e->growth);
         if (byStep && !e->unreliable && stepPart > before) {
             char text[200];
             std::snprintf(text, sizeof text, "raised from %.3g: half its step differs by %.3g (%s)", before, w.pair,
-                          e->wholeRun ? "over the whole run" : "over the start window");
+                          e->wholeRun ? "over the whole run" : "over the start span");
             e->estimate = stepPart;
             e->note = text;
         }
     }
 }
 
-/// A window estimate can miss what a whole run sees (a period error that grows past the window, an impact a
-/// cloth's windows fall short of). When coarser steps of the candidate's family, with the same passes, were measured
+/// A span estimate can miss what a whole run sees (a period error that grows past the span, an impact a
+/// cloth's spans fall short of). When coarser steps of the candidate's family, with the same passes, were measured
 /// over the whole run, the candidate's error is taken to be at least what the nearest of them predicts. The order
 /// of that prediction is the one the family showed between its two nearest such rungs, kept between 1 and the
 /// formal order (a joint's projection makes RK4 first order; one rung alone, or errors that did not shrink, give
@@ -316,7 +313,7 @@ void RaiseToFamilyFloor(const std::vector<CandidateEstimate>& candidates, const 
     e->note = text;
 }
 
-/// The candidate a refusal names: the smallest complete and reliable estimate; one that is a lower bound (a window
+/// The candidate a refusal names: the smallest complete and reliable estimate; one that is a lower bound (a span
 /// stopped at a miss or at the CPU limit) or unreliable only while there is none.
 void KeepBest(ModelChoiceResult* result, int index) {
     const CandidateEstimate& e = result->candidates[static_cast<std::size_t>(index)];
@@ -347,11 +344,11 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
         const double wa = result.candidates[a].predictedWork, wb = result.candidates[b].predictedWork;
         return wa < wb || (wa == wb && a < b);
     });
-    const double window = WindowFor(settings);
-    result.windowSeconds = window;
+    const double span = SpanFor(settings);
+    result.spanSeconds = span;
     const double bound = budget.bound / settings.safety;
     ChoiceClock clock(settings);
-    const std::vector<PlannedWindow> plan = PlanWindows(factory, space, settings, window, &result, &clock);
+    const std::vector<PlannedSpan> plan = PlanSpans(factory, space, settings, span, &result, &clock);
     for (std::size_t k = 0; k < order.size(); ++k) {
         CandidateEstimate& e = result.candidates[order[k]];
         if (result.chosen >= 0) {
@@ -415,13 +412,13 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
         ++result.evaluatedCount;
         e.evaluated = true;
         clock.Candidate(e.predictedWork * settings.runSeconds, e.model.Describe(space.hasParticles, space.hasVolumes));
-        Evaluate(plan, window, space, budget, settings, bound, &e, &result.calibrationCpuSeconds,
-                 &result.calibrationWork, &clock);
+        Evaluate(plan, span, space, budget, settings, bound, &e, &result.calibrationCpuSeconds, &result.calibrationWork,
+                 &clock);
         result.evaluatedShare += e.share;
         RaiseToFamilyFloor(result.candidates, order, k, space, &e);
         if (e.stable && !e.partial && !e.unreliable && e.estimate <= bound) {
             const double before = result.calibrationWork;
-            VerifyOrder(plan[0], window, space, budget, settings, &e, &result.calibrationCpuSeconds,
+            VerifyOrder(plan[0], span, space, budget, settings, &e, &result.calibrationCpuSeconds,
                         &result.calibrationWork, &clock);
             result.checkWork += result.calibrationWork - before;
         }

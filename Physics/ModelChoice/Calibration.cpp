@@ -1,10 +1,10 @@
-// One window of probes (docs/model-choice.md, "What is estimated"): the candidate, its refinement and, over a whole
+// One span of probes (docs/model-choice.md, "What is estimated"): the candidate, its refinement and, over a whole
 // run or for the convergence check, the refinement's refinement, run side by side from one state.
 #include <cfloat>
 #include <cmath>
 #include <memory>
 
-#include "Physics/ModelChoiceDetail.h"
+#include "Physics/ModelChoice/Internals.h"
 #include "Physics/PhysicsSystem.h"
 
 namespace model_choice {
@@ -39,7 +39,7 @@ double RichardsonFactor(int order) { return 1.0 / (1.0 - std::pow(0.5, order)); 
 /// constraint error, which is observed, not estimated).
 struct QuantityProbe {
     BudgetQuantity quantity;
-    double energyScale = 1.0;  // J: |E0| of the window's start (floored)
+    double energyScale = 1.0;  // J: |E0| of the span's start (floored)
     std::vector<double> a, b;
     // The difference at the end of a warm-up, taken off every later one (Rebase).
     bool based = false;
@@ -92,7 +92,7 @@ double ConvergenceNoise(BudgetQuantity quantity, const std::vector<double>& posi
     return 32.0 * FLT_EPSILON * scale;
 }
 
-/// The refinement a window uses: Refine, or half the step (`byStep`: the convergence check along the step).
+/// The refinement a span uses: Refine, or half the step (`byStep`: the convergence check along the step).
 ModelCandidate RefineFor(const ModelCandidate& c, const CandidateSpace& space, bool byStep) {
     if (!byStep) return Refine(c, space);
     ModelCandidate r = c;
@@ -100,8 +100,8 @@ ModelCandidate RefineFor(const ModelCandidate& c, const CandidateSpace& space, b
     return r;
 }
 
-/// One window: the candidate and (unless the quantity is observed directly) its refinement run from the same
-/// state for `window` seconds, sampled at up to 256 whole-step times (an oscillation must not hide between
+/// One span: the candidate and (unless the quantity is observed directly) its refinement run from the same
+/// state for `span` seconds, sampled at up to 256 whole-step times (an oscillation must not hide between
 /// samples). `warmSteps` steps of the candidate first run unmeasured, and the difference at their end is taken off
 /// the later ones: probes built from a mid-run state of a world with volumes lack its contact history (no warm
 /// start), so they first settle.
@@ -112,16 +112,16 @@ ModelCandidate RefineFor(const ModelCandidate& c, const CandidateSpace& space, b
 /// the same place within both steps), so the finer pair's difference at the end, times 2^p (what it predicts for the
 /// coarser pair when the error has order p), is taken when it is larger, and the convergence check (CheckOrder)
 /// compares the two pairs.
-/// A window with `missBound` > 0 stops at the first sample whose difference, with the Richardson factor, already
-/// exceeds it: the window's contribution can only be larger (its growth is at least 0), so the candidate misses,
-/// and what is left of the window would only say by how much. Its result is then that lower bound (`missedAt`).
-WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
-                       const ErrorBudget& budget, double window, const WindowOptions& o) {
+/// A span with `missBound` > 0 stops at the first sample whose difference, with the Richardson factor, already
+/// exceeds it: the span's contribution can only be larger (its growth is at least 0), so the candidate misses,
+/// and what is left of the span would only say by how much. Its result is then that lower bound (`missedAt`).
+SpanResult RunSpan(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
+                   const ErrorBudget& budget, double span, const SpanOptions& o) {
     const int warmSteps = o.warmSteps;
     const double fixedGrowth = o.fixedGrowth, missBound = o.missBound;
     const bool wholeRun = o.wholeRun;
     ChoiceClock* clock = o.clock;
-    WindowResult r;
+    SpanResult r;
     const double start = ThreadCpuSeconds();
     if (clock) clock->StartPiece();
     std::unique_ptr<ModelProbe> coarse = factory();
@@ -147,7 +147,7 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     }
     QuantityProbe q2 = q;  // the refinement against the third probe
     const long long warm = observed ? 0 : warmSteps;
-    const long long measured = std::max(2LL, std::llround(window / candidate.step));
+    const long long measured = std::max(2LL, std::llround(span / candidate.step));
     const int samples = static_cast<int>(std::min<long long>(256, measured));
     double half = 0.0, full = 0.0;  // running maximum at the measured part's middle and end
     double finer = 0.0;             // the third probe's: the largest over the run of the finer pair's difference
@@ -200,7 +200,7 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
     r.simulated = candidate.step * static_cast<double>(reached);
     r.share = static_cast<double>(reached) / static_cast<double>(warm + measured);
     r.work = r.simulated * perSecond;
-    // The candidate's part of the window's CPU, by predicted work: the thread's CPU clock is a system call (about
+    // The candidate's part of the span's CPU, by predicted work: the thread's CPU clock is a system call (about
     // 0.25 us), and reading it around every sample's advance was half a microsecond problem's calibration (the
     // projectile's: 69 us with it, 36 us without).
     r.cpuSeconds = r.probeCpuSeconds * own / perSecond;
@@ -237,18 +237,18 @@ WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candid
         r.pair = pair;
         r.finer = finer;
         r.observed = pair;
-        // At the end: the larger. Over a window: the finer pair only when it differs more (the error is not shrinking).
+        // At the end: the larger. Over a span: the finer pair only when it differs more (the error is not shrinking).
         if ((atEnd && predicted > pair) || (!atEnd && finer > full)) {
             r.observed = predicted;
             r.pairObserved = pair;
         }
-        r.growth = 0.0;  // nothing is extrapolated: the window is the run
+        r.growth = 0.0;  // nothing is extrapolated: the span is the run
     }
     return r;
 }
 
-double WindowFor(const ChoiceSettings& s) {
-    return std::min(s.runSeconds, std::clamp(s.windowFraction * s.runSeconds, s.minWindow, s.maxWindow));
+double SpanFor(const ChoiceSettings& s) {
+    return std::min(s.runSeconds, std::clamp(s.spanFraction * s.runSeconds, s.minSpan, s.maxSpan));
 }
 
 /// Candidates of the same family (integrator and solver) that differ only in step and passes.

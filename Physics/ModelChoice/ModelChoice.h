@@ -4,9 +4,9 @@
 //
 // A model is one candidate: integrator x step x contact-solver passes (iterations or soft substeps) x contact
 // solver. Its error is estimated by step doubling on the actual scene: the candidate and its refinement (half the
-// step, twice the passes) run side by side from the same state over a calibration window, and the difference, with
+// step, twice the passes) run side by side from the same state over a calibration span, and the difference, with
 // a Richardson factor for the candidate's order and an extrapolation in time fitted from the two halves of the
-// window, is the estimate at the end of the run. During the run the refinement runs again over short windows from
+// span, is the estimate at the end of the run. During the run the refinement runs again over short spans from
 // the live state; when the projected end-of-run error leaves the budget, the model is refined and the switch logged.
 //
 // Nothing here knows a scene: the host hands in a ProbeFactory that builds fresh copies of its world. GL-free.
@@ -111,40 +111,40 @@ double WorldConstraintError(const PhysicsSystem& world);
 /// How the estimator works; every number has its unit and the default is the documented one.
 struct ChoiceSettings {
     double runSeconds = 10.0;  ///< s: the run's simulated length (the estimate is for its end)
-    /// Fraction of the run used to calibrate, and its floor and ceiling (s); the window is whole steps of each
-    /// candidate (at least two) and never longer than the run. Every candidate tried costs about three windows of
-    /// its own run (itself and its refinement at half the step), so the window is short.
-    double windowFraction = 0.05;
-    double minWindow = 0.2;
-    double maxWindow = 2.0;
-    /// Worlds without volumes: at most this many more calibration windows, each from a snapshot of a pilot run of the
-    /// scene's own model just before an event (a bounce, an impact) the start window cannot see; 0 = none.
-    int eventWindows = 3;
-    /// The live watch also looks for events (a frame whose irregularity is ten times what the calibration window
+    /// Fraction of the run used to calibrate, and its floor and ceiling (s); the span is whole steps of each
+    /// candidate (at least two) and never longer than the run. Every candidate tried costs about three spans of
+    /// its own run (itself and its refinement at half the step), so the span is short.
+    double spanFraction = 0.05;
+    double minSpan = 0.2;
+    double maxSpan = 2.0;
+    /// Worlds without volumes: at most this many more calibration spans, each from a snapshot of a pilot run of the
+    /// scene's own model just before an event (a bounce, an impact) the start span cannot see; 0 = none.
+    int eventSpans = 3;
+    /// The live watch also looks for events (a frame whose irregularity is ten times what the calibration span
     /// saw: a bounce, an impact, a cloth reaching an obstacle; thirty times, the watch being on the host's frames) and
     /// checks the model over each, from a snapshot taken before it; at most this many event checks per run (0: none,
     /// and no snapshots are taken).
     int maxEventChecks = 6;
     /// A world without volumes or with one whose candidate, run beside its refinement and a third probe at a quarter
     /// of its step over the whole run, costs at most this many PredictedWork units is estimated over the whole run
-    /// instead of windows: the difference at the run's end, measured rather than extrapolated (a bounce's or a
-    /// period's error, which a window cannot see). About 0.13 s of CPU for a particle world; 0: never.
+    /// instead of spans: the difference at the run's end, measured rather than extrapolated (a bounce's or a
+    /// period's error, which a span cannot see). About 0.13 s of CPU for a particle world; 0: never.
     double wholeRunWork = 5e6;
-    /// A calibration window (not a whole run) stops at the first sample whose difference alone already misses the
-    /// budget: the candidate misses, and the rest of the window would only say by how much. False runs every
-    /// window to its end (the same choice at a higher cost, as a comparison).
-    bool stopWindowsAtMiss = true;
+    /// A calibration span (not a whole run) stops at the first sample whose difference alone already misses the
+    /// budget: the candidate misses, and the rest of the span would only say by how much. False runs every
+    /// span to its end (the same choice at a higher cost, as a comparison).
+    bool stopSpansAtMiss = true;
     /// A candidate meets the budget when safety * estimate <= bound.
     double safety = 2.0;
     /// Candidates estimated at most (the rest are reported as not run): a bound on the calibration of a budget
-    /// nothing meets. A candidate whose window stopped early at a miss counts for the part of its windows that
+    /// nothing meets. A candidate whose span stopped early at a miss counts for the part of its spans that
     /// ran. The validation's cases need at most 66 (the incline at 1e-3, whose whole runs never stop early; the
     /// tower of 10 at 1e-3 estimates 122 candidates for 8.4 candidates' worth, a world of volumes having up to
     /// 180); 60 whole candidates refused the incline and the tower of 10 at 1e-3, which finer candidates meet.
     int maxEvaluations = 100;
-    /// The live check: a window of this fraction of the calibration window, run every `checkEvery` seconds of
+    /// The live check: a span of this fraction of the calibration span, run every `checkEvery` seconds of
     /// simulated time (0 = a sixth of the run).
-    double checkWindowFraction = 0.3;
+    double checkSpanFraction = 0.3;
     double checkEvery = 0.0;
     /// The convergence check: a candidate's difference from its refinement over the refinement's from its own
     /// refinement must be at least 2^(p - orderBand), p the order the candidate is estimated at (the error shrinks
@@ -168,21 +168,21 @@ struct CandidateEstimate {
     ModelCandidate model;
     double estimate = 0.0;         ///< the budget's quantity at the end of the run, estimated (inf: unstable)
     double predictedWork = 0.0;    ///< PredictedWork: what "cheapest" means
-    double cpuPerSimSecond = 0.0;  ///< s CPU per simulated s: its windows' CPU x its share of their work (reported)
+    double cpuPerSimSecond = 0.0;  ///< s CPU per simulated s: its spans' CPU x its share of their work (reported)
     double growth = 0.0;           ///< the error's fitted growth exponent in time
     bool evaluated = false;        ///< false: skipped (its predicted cost was above the chosen one's)
     bool stable = true;
     bool meets = false;     ///< safety * estimate <= bound
-    bool partial = false;   ///< the estimate stopped at a window where it already missed (a lower bound)
-    bool wholeRun = false;  ///< estimated over the whole run (ChoiceSettings::wholeRunWork), not windows
-    double share = 0.0;     ///< the part of its windows that ran (below 1 when one stopped at a miss)
+    bool partial = false;   ///< the estimate stopped at a span where it already missed (a lower bound)
+    bool wholeRun = false;  ///< estimated over the whole run (ChoiceSettings::wholeRunWork), not spans
+    double share = 0.0;     ///< the part of its spans that ran (below 1 when one stopped at a miss)
     /// The convergence check (ChoiceSettings::orderBand): the candidate's largest difference from its refinement
-    /// and the refinement's from its own (over the whole run, or over the start window), when it was run (< 0: not).
+    /// and the refinement's from its own (over the whole run, or over the start span), when it was run (< 0: not).
     double pairDifference = -1.0;
     double finerDifference = -1.0;
     bool unreliable = false;       ///< its error did not shrink at its order: never chosen
     bool stoppedAtLimit = false;   ///< its estimate was cut short by the choice's CPU limit
-    std::vector<double> segments;  ///< each window's share of the estimate (start window first)
+    std::vector<double> segments;  ///< each span's share of the estimate (start span first)
     std::string note;              ///< why skipped, or why the estimate is not trusted
 };
 
@@ -196,10 +196,10 @@ struct ModelChoiceResult {
     double pilotCpuSeconds = 0.0;               ///< s of CPU of the pilot run (worlds without volumes)
     /// PredictedWork units the probes and the pilot did: the calibration's cost, deterministic (CPU time is not).
     double calibrationWork = 0.0;
-    std::vector<double> eventTimes;  ///< s: where the calibration's event windows start
+    std::vector<double> eventTimes;  ///< s: where the calibration's event spans start
     int evaluatedCount = 0;          ///< candidates estimated
-    double evaluatedShare = 0.0;     ///< their windows that ran, in candidates (ChoiceSettings::maxEvaluations)
-    double windowSeconds = 0.0;      ///< s of simulated time per calibration run
+    double evaluatedShare = 0.0;     ///< their spans that ran, in candidates (ChoiceSettings::maxEvaluations)
+    double spanSeconds = 0.0;        ///< s of simulated time per calibration run
     /// The choice stopped at its CPU limit (ChoiceSettings::cpuLimit), which was `cpuLimit` s when it stopped.
     bool stoppedAtLimit = false;
     double cpuLimit = 0.0;
@@ -214,8 +214,8 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
 
 /// The live watch: after the choice, call Check at each frame with the simulated time since the start and a
 /// factory that builds probes from the world as it is now. It runs the current model and its refinement over a
-/// short window every settings.checkEvery seconds, keeps the running estimate (the error of earlier models for their
-/// share of the run plus the current model's window extrapolated with the calibration's growth) and, when it
+/// short span every settings.checkEvery seconds, keeps the running estimate (the error of earlier models for their
+/// share of the run plus the current model's span extrapolated with the calibration's growth) and, when it
 /// exceeds the budget itself, refines the model (the next smaller step, else more passes).
 class ModelWatch {
 public:
@@ -224,12 +224,12 @@ public:
     /// True when the model changed at this call: then Current() is the new model and *log says when and why.
     /// *log is also set (and false returned) when the estimate left the budget but no finer model exists.
     bool Check(double time, const ProbeFactory& factory, std::string* log);
-    /// True when Check at `time` would run a window (so a host builds its factory only then).
+    /// True when Check at `time` would run a span (so a host builds its factory only then).
     bool Due(double time) const;
     /// After each frame, before Check: the host's world at `time` (s), for event detection.
     void Observe(double time, const PhysicsSystem& world);
     /// True when the host should hand in a snapshot of its world as it is now (TakeSnapshot), every half check
-    /// window, so an event can be checked from before it.
+    /// span, so an event can be checked from before it.
     bool WantsSnapshot(double time) const;
     void TakeSnapshot(double time, ProbeFactory snapshot);
     const ModelCandidate& Current() const { return current; }
@@ -257,7 +257,7 @@ private:
     ErrorBudget budget;
     ChoiceSettings settings;
     ModelCandidate current;
-    double CheckWindow() const;
+    double CheckSpan() const;
 
     double running = 0.0;
     double predicted = 0.0;     // the calibration's estimate for the chosen model over the whole run
@@ -278,7 +278,7 @@ private:
     bool missed = false;        // Missed
     double missedAt = 0.0;      // s
     // Events: the host's last three frames' positions and the last acceleration, the irregularity the calibration
-    // window saw, the pending event, and the two newest snapshots.
+    // span saw, the pending event, and the two newest snapshots.
     std::vector<double> x0, x1, x2, acceleration;
     double lastObserved = 0.0, lastInterval = 0.0;
     long long observed = 0;

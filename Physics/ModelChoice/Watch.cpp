@@ -3,10 +3,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "Physics/ModelChoice.h"
-#include "Physics/ModelChoiceDetail.h"
+#include "Physics/ModelChoice/Internals.h"
+#include "Physics/ModelChoice/ModelChoice.h"
 
-using namespace model_choice;  // NOLINT: the estimator's internals (Physics/ModelChoiceDetail.h)
+using namespace model_choice;  // NOLINT: the estimator's internals (Physics/ModelChoice/Internals.h)
 
 ModelWatch::ModelWatch(const CandidateSpace& s, const ErrorBudget& b, const ChoiceSettings& c,
                        const CandidateEstimate& chosen)
@@ -26,15 +26,15 @@ bool ModelWatch::Due(double time) const {
     return every > 0.0 && time >= lastCheck + every - 1e-9;
 }
 
-double ModelWatch::CheckWindow() const { return settings.checkWindowFraction * WindowFor(settings); }
+double ModelWatch::CheckSpan() const { return settings.checkSpanFraction * SpanFor(settings); }
 
 bool ModelWatch::WantsSnapshot(double time) const {
-    return !wholeRun && settings.maxEventChecks > 0 && time >= snapshotTime + 0.5 * CheckWindow() - 1e-9 &&
+    return !wholeRun && settings.maxEventChecks > 0 && time >= snapshotTime + 0.5 * CheckSpan() - 1e-9 &&
            time < settings.runSeconds - 1e-9;
 }
 
 void ModelWatch::TakeSnapshot(double time, ProbeFactory factory) {
-    // The one before the newest is kept too: an event is checked from a snapshot at least half a window before it.
+    // The one before the newest is kept too: an event is checked from a snapshot at least half a span before it.
     previousSnapshot = std::move(snapshot);
     previousSnapshotTime = snapshotTime;
     snapshot = std::move(factory);
@@ -70,8 +70,8 @@ void ModelWatch::Observe(double time, const PhysicsSystem& world) {
         acceleration[i] = a;
     }
     if (!haveAcceleration) return;
-    if (time <= WindowFor(settings) + 1e-9) {
-        baseline = std::max(baseline, jump);  // what the calibration window saw
+    if (time <= SpanFor(settings) + 1e-9) {
+        baseline = std::max(baseline, jump);  // what the calibration span saw
     } else if (jump > 30.0 * baseline && jump > 1e-6 && eventChecks < settings.maxEventChecks && !eventPending) {
         eventPending = true;
         eventTime = time;
@@ -82,43 +82,43 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
     if (!Due(time)) return false;
     const double T = settings.runSeconds;
     const bool event = eventPending && snapshot;
-    // An event is checked from the snapshot taken at least half a window before it, over the rest of the run; a
+    // An event is checked from the snapshot taken at least half a span before it, over the rest of the run; a
     // periodic check from the world as it is, for the time since the last check.
-    const ProbeFactory& from = event && previousSnapshot && snapshotTime > eventTime - 0.5 * CheckWindow()
+    const ProbeFactory& from = event && previousSnapshot && snapshotTime > eventTime - 0.5 * CheckSpan()
                                    ? previousSnapshot
                                    : (event ? snapshot : factory);
     const double from_time = event ? (&from == &previousSnapshot ? previousSnapshotTime : snapshotTime) : time;
-    // At least four steps measured, so the window's growth is fitted from more than two samples.
-    const double window = std::min(T - from_time, std::max(CheckWindow(), 4.0 * current.step));
+    // At least four steps measured, so the span's growth is fitted from more than two samples.
+    const double span = std::min(T - from_time, std::max(CheckSpan(), 4.0 * current.step));
     if (event) {
         eventPending = false;
         ++eventChecks;
     } else {
         lastCheck = time;
     }
-    if (!(window > 0.0)) return false;
+    if (!(span > 0.0)) return false;
     // Probes from a live world with volumes lack its contact history (no warm start): they settle first, unmeasured.
-    const int warm = space.hasVolumes ? std::max(3, static_cast<int>(window / 3.0 / current.step)) : 0;
-    WindowOptions o;
+    const int warm = space.hasVolumes ? std::max(3, static_cast<int>(span / 3.0 / current.step)) : 0;
+    SpanOptions o;
     o.warmSteps = warm;
     o.fixedGrowth = budget.quantity == BudgetQuantity::Position ? -1.0 : growth;
-    const WindowResult w = RunWindow(from, current, space, budget, window, o);
+    const SpanResult w = RunSpan(from, current, space, budget, span, o);
     cpuSeconds += w.probeCpuSeconds;
     work += w.work;
     ++checks;
     const bool ok = w.stable && std::isfinite(w.observed);
-    double latest = 0.0;  // what this window adds (position) or its whole-run estimate (energy, constraint)
+    double latest = 0.0;  // what this span adds (position) or its whole-run estimate (energy, constraint)
     if (budget.quantity == BudgetQuantity::Position) {
-        // A periodic window's rate stands for the time since the last check; an event's difference grows over the
+        // A periodic span's rate stands for the time since the last check; an event's difference grows over the
         // rest of the run; the calibration's estimate, scaled for refinements since, stands for the rest.
-        const double span = event ? T - from_time : time - lastCounted;
+        const double rest = event ? T - from_time : time - lastCounted;
         if (!event) lastCounted = time;
-        // Extrapolated with the window's own growth (a settled stack's jitter does not add up).
-        latest = ok ? w.factor * w.observed * std::pow(std::max(span / w.length, 1.0), w.growth) : kInf;
+        // Extrapolated with the span's own growth (a settled stack's jitter does not add up).
+        latest = ok ? w.factor * w.observed * std::pow(std::max(rest / w.length, 1.0), w.growth) : kInf;
         measured += latest;
         running = measured + predicted * scale * (T - time) / T;
     } else {
-        // Energy and constraint: the window's regime taken as the whole run's (with the calibration's growth), for
+        // Energy and constraint: the span's regime taken as the whole run's (with the calibration's growth), for
         // the current model's share of the run, plus what earlier models left.
         const double estimate = ok ? (budget.quantity == BudgetQuantity::Constraint
                                           ? w.observed
@@ -129,7 +129,7 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
         running = carried + lastEstimate * (T - modelStart) / T;
     }
     // The model was chosen with the safety factor's margin; it is changed only when the estimate says the budget
-    // itself will be missed (a margin, so a model chosen near the edge does not flip on window-to-window noise).
+    // itself will be missed (a margin, so a model chosen near the edge does not flip on span-to-span noise).
     if (running <= budget.bound) {
         missed = false;
         return false;
@@ -137,11 +137,11 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
     // Unless the model is refined below, the run misses its budget as things stand (Missed).
     if (!missed) missedAt = time;
     missed = true;
-    // What earlier windows measured (or earlier models left) is made. While it is under three times the budget,
+    // What earlier spans measured (or earlier models left) is made. While it is under three times the budget,
     // refining still keeps the end near it; beyond, no finer model can: say so once and stop refining (it would
     // only cost).
     const double made = budget.quantity == BudgetQuantity::Position ? measured : carried;
-    // A window that itself misses the budget (or blew up) is refined whatever was lost: the model is making large
+    // A span that itself misses the budget (or blew up) is refined whatever was lost: the model is making large
     // errors now, the way to a blow-up.
     if (made > 3.0 * budget.bound && latest <= budget.bound) {
         if (!lostReported) {
@@ -156,10 +156,10 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
         }
         return false;
     }
-    // A finer model changes only the current model's part of the estimate: what its latest window adds and the
-    // rest of the run it stands for. When that is less than what earlier windows and models left (which no
+    // A finer model changes only the current model's part of the estimate: what its latest span adds and the
+    // rest of the run it stands for. When that is less than what earlier spans and models left (which no
     // refinement undoes), a refinement would take off less than half of the estimate (a quarter at first order) at
-    // twice the cost: the model stays, unless its window itself misses the budget.
+    // twice the cost: the model stays, unless its span itself misses the budget.
     const double currentPart =
         budget.quantity == BudgetQuantity::Position ? latest + (running - measured) : running - carried;
     const double earlier = running - currentPart;

@@ -1,6 +1,7 @@
 #pragma once
-// The estimator's internals shared by Physics/ModelChoice.cpp (the choice), Physics/ModelWatch.cpp (the live watch)
-// and Physics/ModelWindow.cpp (one window of probes): docs/model-choice.md. Not for use outside those files.
+// The estimator's internals shared by Physics/ModelChoice/Choose.cpp (the choice), Physics/ModelChoice/Watch.cpp (the
+// live watch) and Physics/ModelChoice/Calibration.cpp (one span of probes): docs/model-choice.md. Not for use outside
+// those files.
 
 #include <time.h>
 
@@ -11,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "Physics/ModelChoice.h"
+#include "Physics/ModelChoice/ModelChoice.h"
 
 namespace model_choice {
 
@@ -29,14 +30,14 @@ double RichardsonFactor(int order);
 int Passes(const ModelCandidate& c);
 /// Candidates of the same family (integrator and solver) that differ only in step and passes.
 bool SameFamily(const ModelCandidate& a, const ModelCandidate& b);
-/// s: the calibration window of a run.
-double WindowFor(const ChoiceSettings& s);
+/// s: the calibration span of a run.
+double SpanFor(const ChoiceSettings& s);
 /// The level at which a difference is rounding (float states): relative for energy, scaled by the largest
 /// coordinate (at least 1 m) for positions and joints.
 double ConvergenceNoise(BudgetQuantity quantity, const std::vector<double>& positions);
 
-/// The choice's CPU limit and its progress lines (ChoiceSettings::cpuLimit, runShare, progress). Windows report
-/// what they cost when they end (Add, from the clock reads they make anyway); inside a window the clock is read only
+/// The choice's CPU limit and its progress lines (ChoiceSettings::cpuLimit, runShare, progress). Spans report
+/// what they cost when they end (Add, from the clock reads they make anyway); inside a span the clock is read only
 /// once enough predicted work has passed since the last read (about a millisecond), so a microsecond problem reads
 /// no clock more than before.
 class ChoiceClock {
@@ -48,7 +49,7 @@ public:
         candidateRunWork = runWork;
         doing = std::move(what);
     }
-    /// A finished piece of the choice (a window, the pilot): its CPU and predicted work.
+    /// A finished piece of the choice (a span, the pilot): its CPU and predicted work.
     void Add(double cpuSeconds, double workUnits) {
         spent += cpuSeconds;
         work += workUnits;
@@ -94,40 +95,40 @@ private:
     std::string doing;
 };
 
-/// What one window measured (RunWindow).
-struct WindowResult {
+/// What one span measured (RunSpan).
+struct SpanResult {
     bool stable = true;
     double observed = 0.0;         // the largest sampled difference (or observed value) over the measured part
     double length = 0.0;           // s: the measured part
     double factor = 1.0;           // the Richardson factor
     double growth = 1.0;           // the exponent used
-    double cpuSeconds = 0.0;       // candidate's probe only: the window's CPU apportioned by predicted work
-    double probeCpuSeconds = 0.0;  // every probe of the window, built and run
+    double cpuSeconds = 0.0;       // candidate's probe only: the span's CPU apportioned by predicted work
+    double probeCpuSeconds = 0.0;  // every probe of the span, built and run
     double simulated = 0.0;        // s the candidate's probe ran
     double work = 0.0;             // PredictedWork units both probes did (a deterministic measure of their cost)
     double pairObserved = -1.0;    // a whole run raised by its third probe: what the pair alone observed, else < 0
     double missedAt = -1.0;        // s into the measured part where it already missed `missBound`, else < 0
-    double share = 1.0;            // the part of the window that ran (1 unless it stopped early)
+    double share = 1.0;            // the part of the span that ran (1 unless it stopped early)
     // The convergence check over a whole run: the pair's difference (the largest, or at the end for energy), the
     // finer pair's on the same terms, and the rounding level below which neither says anything.
     double pair = -1.0, finer = -1.0, noise = 0.0;
     bool stopped = false;  // cut short by the choice's CPU limit
 };
 
-/// How a window runs (RunWindow).
-struct WindowOptions {
+/// How a span runs (RunSpan).
+struct SpanOptions {
     int warmSteps = 0;
-    double fixedGrowth = -1.0;  // >= 0: the growth exponent used instead of the window's own
-    bool wholeRun = false;      // the window is the whole run (a third probe runs, energy is taken at the end)
+    double fixedGrowth = -1.0;  // >= 0: the growth exponent used instead of the span's own
+    bool wholeRun = false;      // the span is the whole run (a third probe runs, energy is taken at the end)
     double missBound = -1.0;
     ChoiceClock* clock = nullptr;  // the choice's CPU limit (nullptr: none, as for the watch's checks)
-    bool third = false;            // a third probe, at the refinement's refinement, also on a window
+    bool third = false;            // a third probe, at the refinement's refinement, also on a span
     bool byStep = false;           // refine by halving the step even where Refine doubles soft substeps
 };
 
-/// One window: the candidate and (unless the quantity is observed directly) its refinement run from the same state
-/// for `window` seconds (Physics/ModelWindow.cpp says how).
-WindowResult RunWindow(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
-                       const ErrorBudget& budget, double window, const WindowOptions& o);
+/// One span: the candidate and (unless the quantity is observed directly) its refinement run from the same state
+/// for `span` seconds (Physics/ModelChoice/Calibration.cpp says how).
+SpanResult RunSpan(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
+                   const ErrorBudget& budget, double span, const SpanOptions& o);
 
 }  // namespace model_choice
