@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -238,32 +239,63 @@ TEST(ContactSolver, AccumulatedTwoRunsAreBitwiseIdentical) {
 }
 
 // A box sliding to a stop at a yaw: Coulomb friction opposes the slip, so it stops v0^2 / (2 mu g) along its launch
-// direction, whatever its yaw. The accumulated solver's two friction rows (t1, t2) have different effective masses at
-// a contact off the body's axes; clamped together they pushed the sliding box sideways, and at 65 degrees it curved
-// and stopped 6.8 cm from there at 0.5 ms and at 0.1 ms alike (docs/ch15.md, "Convergence of the contact solvers").
-// A sliding contact is now one row along its slip. Book and accumulated at 1 ms: within 5 mm. (The soft solver's
-// friction rows have the same flaw, not mended yet: 3.3 cm here; docs/ch15.md.)
-TEST(ContactSolver, ABoxSlidingAtAYawStopsWhereCoulombSays) {
+// direction, whatever its yaw. The two friction rows (t1, t2) of a contact have different effective masses off the
+// body's axes; clamped together they pushed the sliding box sideways, and at 65 degrees it curved and stopped 6.8 cm
+// from there (accumulated, at 0.5 ms and at 0.1 ms alike) and 3.3 cm (soft) (docs/ch15.md, "Convergence of the
+// contact solvers"). A sliding contact is now one row along its slip. At 1 ms: book and accumulated within 5 mm, soft
+// within 1 mm (0.2 mm), on its scalar path (one pair) and its four-wide path (two boxes side by side: one batch).
+namespace {
+
+/// The largest distance of `count` yawed boxes (1 m apart in x, each launched at v) from their exact stops, m.
+float YawSlideMiss(ContactSolver solver, int count, std::size_t* batches) {
     const float mu = 0.2566f, g = 9.82f;
     const vec3 v(1.0514f, 0.0f, -1.7360f);
     const float speed = std::sqrt(v.x * v.x + v.z * v.z);
-    for (ContactSolver solver : {ContactSolver::Book, ContactSolver::Accumulated}) {
-        BodySpec ground = UndampedSpec(GroundSpec(vec3(6.6f, 0.5f, 6.6f)));
-        ground.friction = mu;
-        ground.restitution = 0.0f;
-        BodySpec box = UndampedSpec(BoxSpec(vec3(0.0f, 0.0923f, 0.0f), vec3(0.1275f, 0.0923f, 0.1229f), 1.0f));
+    BodySpec ground = UndampedSpec(GroundSpec(vec3(6.6f, 0.5f, 6.6f)));
+    ground.friction = mu;
+    ground.restitution = 0.0f;
+    std::vector<BodySpec> specs = {ground};
+    for (int i = 0; i < count; ++i) {
+        const vec3 start(static_cast<float>(i), 0.0923f, 0.0f);
+        BodySpec box = UndampedSpec(BoxSpec(start, vec3(0.1275f, 0.0923f, 0.1229f), 1.0f));
         box.eulerRadians = vec3(0.0f, 65.2172f * 3.14159265f / 180.0f, 0.0f);
         box.velocity = v;
         box.friction = mu;
         box.restitution = 0.0f;
-        RigidWorld w({ground, box});
-        w.system.settings.contactSolver = solver;
-        for (int i = 0; i < 1200; ++i) w.system.Update(0.001f);
-        const float travel = speed * speed / (2.0f * mu * g);
-        const vec3 exact(v.x / speed * travel, 0.0f, v.z / speed * travel);
-        const vec3 p = w.Body(1).position;
-        const float off = std::sqrt((p.x - exact.x) * (p.x - exact.x) + (p.z - exact.z) * (p.z - exact.z));
+        specs.push_back(box);
+    }
+    RigidWorld w(specs);
+    w.system.settings.contactSolver = solver;
+    *batches = 0;
+    for (int step = 0; step < 1200; ++step) {
+        w.system.Update(0.001f);
+        *batches = std::max(*batches, w.system.SoftSolver().Batches().size());
+    }
+    const float travel = speed * speed / (2.0f * mu * g);
+    float worst = 0.0f;
+    for (int i = 0; i < count; ++i) {
+        const vec3 exact(static_cast<float>(i) + v.x / speed * travel, 0.0f, v.z / speed * travel);
+        const vec3 p = w.Body(static_cast<std::size_t>(i) + 1).position;
+        worst = std::max(worst, std::sqrt((p.x - exact.x) * (p.x - exact.x) + (p.z - exact.z) * (p.z - exact.z)));
+    }
+    return worst;
+}
+
+}  // namespace
+
+TEST(ContactSolver, ABoxSlidingAtAYawStopsWhereCoulombSays) {
+    std::size_t batches = 0;
+    for (ContactSolver solver : {ContactSolver::Book, ContactSolver::Accumulated}) {
+        const float off = YawSlideMiss(solver, 1, &batches);
         std::printf("%s: stopped %.4f m from the exact point\n", ToString(solver), off);
         EXPECT_LT(off, 0.005f) << ToString(solver);
     }
+    const float scalar = YawSlideMiss(ContactSolver::Soft, 1, &batches);
+    std::printf("soft, one pair (scalar path): stopped %.4f m from the exact point\n", scalar);
+    EXPECT_EQ(batches, 0u) << "one pair is solved one by one";
+    EXPECT_LT(scalar, 0.001f);
+    const float wide = YawSlideMiss(ContactSolver::Soft, 2, &batches);
+    std::printf("soft, two pairs (four-wide path): stopped %.4f m from the exact point\n", wide);
+    EXPECT_EQ(batches, 1u) << "the two boxes' ground pairs share a colour: one batch";
+    EXPECT_LT(wide, 0.001f);
 }
