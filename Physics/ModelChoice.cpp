@@ -155,14 +155,6 @@ void CheckOrder(double pair, double finer, double noise, const CandidateSpace& s
     e->note = text;
 }
 
-/// s: a candidate's window. A window of a few of its steps measures nothing but their start (a book solver at one
-/// iteration and 0.1 s differs from its refinement over the calibration's 0.2 s by two steps' worth of a slide, and
-/// was taken as converged on a run of many sliding boxes): it holds at least kWindowSteps steps, up to the run.
-double WindowOf(const ModelCandidate& c, double window, const ChoiceSettings& settings) {
-    constexpr double kWindowSteps = 8.0;
-    return std::min(settings.runSeconds, std::max(window, kWindowSteps * c.step));
-}
-
 /// A candidate's estimate: the sum of its windows' contributions (constraint error: the largest). Stops as soon as
 /// it misses `bound` (the rest can only add), marking the estimate partial (a lower bound).
 void Evaluate(const std::vector<PlannedWindow>& plan, double window, const CandidateSpace& space,
@@ -190,7 +182,7 @@ void Evaluate(const std::vector<PlannedWindow>& plan, double window, const Candi
     WindowResult first;        // the start window (the whole run's convergence figures)
     const std::vector<PlannedWindow> whole{plan[0]};
     const std::vector<PlannedWindow>& windows = e->wholeRun ? whole : plan;
-    const double length = e->wholeRun ? settings.runSeconds : WindowOf(e->model, window, settings);
+    const double length = e->wholeRun ? settings.runSeconds : window;
     for (std::size_t k = 0; k < windows.size(); ++k) {
         // A window stops as soon as its own difference misses (RunWindow); a whole run does not, as its estimate
         // is what a finer rung of its family is floored by (RaiseToFamilyFloor), and a lower bound is not.
@@ -276,8 +268,8 @@ void VerifyOrder(const PlannedWindow& start, double window, const CandidateSpace
         o.third = true;
         o.clock = clock;
         o.byStep = byStep;
-        const WindowResult w = RunWindow(start.factory, e->model, space, budget,
-                                         e->wholeRun ? settings.runSeconds : WindowOf(e->model, window, settings), o);
+        const WindowResult w =
+            RunWindow(start.factory, e->model, space, budget, e->wholeRun ? settings.runSeconds : window, o);
         *cpuSeconds += w.probeCpuSeconds;
         *work += w.work;
         if (w.stopped) {
@@ -295,10 +287,9 @@ void VerifyOrder(const PlannedWindow& start, double window, const CandidateSpace
         // Along the step, the pair's difference is the step's part of the error, which doubling the substeps did
         // not see: the estimate is at least that part with its Richardson factor (over a window, extrapolated as
         // the start window was).
-        const double stepPart =
-            e->wholeRun ? w.factor * w.pair
-                        : w.factor * w.pair *
-                              std::pow(std::max(start.span / (w.length > 0.0 ? w.length : window), 1.0), e->growth);
+        const double stepPart = e->wholeRun
+                                    ? w.factor * w.pair
+                                    : w.factor * w.pair * std::pow(std::max(start.span / window, 1.0), e->growth);
         if (byStep && !e->unreliable && stepPart > before) {
             char text[200];
             std::snprintf(text, sizeof text, "raised from %.3g: half its step differs by %.3g (%s)", before, w.pair,
