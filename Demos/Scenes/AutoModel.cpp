@@ -109,6 +109,7 @@ CandidateSpace AutoModel::SpaceOf(const ParameterSet& params, const PhysicsSyste
     space.hasParticles = space.particleCount > 0.0;
     space.hasVolumes = space.volumeCount > 0.0;
     space.hasContacts = space.hasParticles && !world.Constraints().empty();
+    space.hasJoints = !world.Joints().empty();
 
     ModelCandidate& base = space.base;
     base.integrator = world.settings.integrator;

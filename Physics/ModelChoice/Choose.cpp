@@ -20,6 +20,19 @@ struct PlannedSpan {
     int warmSteps = 0;
 };
 
+/// The run's impacts, from the pilot's irregularity per interval (`jump`: the largest change of a point's
+/// acceleration times the step in each): intervals ten times more irregular than the median interval (free flight
+/// between bounces: rounding). A run whose every interval is alike (a smooth spring) has none.
+int Impacts(std::vector<double> jump) {
+    if (jump.empty()) return 0;
+    const std::vector<double> all = jump;
+    std::nth_element(jump.begin(), jump.begin() + static_cast<std::ptrdiff_t>(jump.size() / 2), jump.end());
+    const double median = jump[jump.size() / 2];
+    int count = 0;
+    for (double j : all) count += j > 10.0 * median && j > 1e-6 ? 1 : 0;
+    return count;
+}
+
 /// The calibration's spans: one at the start and, for a world without volumes, up to settings.eventSpans around
 /// events the start span cannot see (a bounce, a cloth reaching an obstacle), from snapshots of a pilot run of the
 /// scene's own model over the whole run. Particles restart exactly from a snapshot; volumes would lose their contact
@@ -29,7 +42,7 @@ struct PlannedSpan {
 /// ten times more irregular than any the start span covers gets a span from the snapshot of the interval before.
 std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateSpace& space,
                                    const ChoiceSettings& settings, double span, ModelChoiceResult* result,
-                                   ChoiceClock* clock) {
+                                   ChoiceClock* clock, double* impactSpeed) {
     using Kind = PlannedSpan::Kind;
     const double T = settings.runSeconds;
     std::vector<PlannedSpan> plan{{Kind::Start, factory, 0.0, T, 0}};
@@ -75,6 +88,12 @@ std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateS
             snapshots.push_back(pilot->Snapshot());
         }
     }
+    double speed = 0.0;  // m/s: the fastest point at the pilot's end
+    for (std::size_t i = 0; i + 2 < x2.size() && x1.size() == x2.size(); i += 3) {
+        const double d[3] = {x2[i] - x1[i], x2[i + 1] - x1[i + 1], x2[i + 2] - x1[i + 2]};
+        speed = std::max(speed, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / h);
+    }
+    *impactSpeed = static_cast<double>(Impacts(jump)) * speed;
     const double seen = std::max(jump[0], jump[1]);  // what the start span covers
     std::vector<int> picked;
     for (int e = 0; e < settings.eventSpans; ++e) {
@@ -111,16 +130,21 @@ double Contribution(const PlannedSpan& p, const SpanResult& w, const ErrorBudget
 
 /// The convergence check (ChoiceSettings::orderBand): a candidate's error must shrink with its step at the order
 /// p its estimate assumes, so its difference from its refinement (`pair`) must be about 2^p times its refinement's
-/// from its own (`finer`), at least 2^(p - band). A finer pair within rounding (`noise`) has converged and passes. A
-/// candidate that fails is marked unreliable with the figures in its note, and is never chosen: its estimate
-/// assumed an order its error does not have.
+/// from its own (`finer`), at least 2^(p - band). A finer pair within rounding (`noise`, which grows with the steps its
+/// finest probe made) passes, marked withinRounding (RaiseToFamilyFloor then holds it to its family). A candidate that
+/// fails is marked unreliable with the figures in its note, and is never chosen: its estimate assumed an order its
+/// error does not have.
 void CheckOrder(double pair, double finer, double noise, const CandidateSpace& space, const ChoiceSettings& settings,
                 const char* over, CandidateEstimate* e) {
     e->pairDifference = pair;
     e->finerDifference = finer;
     const int p = OrderOf(e->model, space);
     const double least = std::pow(2.0, p - settings.orderBand);
-    if (std::isfinite(pair) && std::isfinite(finer) && (finer <= noise || pair >= least * finer)) return;
+    if (std::isfinite(pair) && std::isfinite(finer) && pair >= least * finer) return;
+    if (std::isfinite(pair) && std::isfinite(finer) && finer <= noise) {
+        e->withinRounding = true;
+        return;
+    }
     e->unreliable = true;
     char text[320];
     std::snprintf(text, sizeof text,
@@ -274,14 +298,15 @@ void VerifyOrder(const PlannedSpan& start, double span, const CandidateSpace& sp
 }
 
 /// A span estimate can miss what a whole run sees (a period error that grows past the span, an impact a
-/// cloth's spans fall short of). When coarser steps of the candidate's family, with the same passes, were measured
+/// cloth's spans fall short of), and a whole run whose finer pair is within rounding (withinRounding) showed no
+/// order at all. When coarser steps of the candidate's family, with the same passes, were measured
 /// over the whole run, the candidate's error is taken to be at least what the nearest of them predicts. The order
 /// of that prediction is the one the family showed between its two nearest such rungs, kept between 1 and the
 /// formal order (a joint's projection makes RK4 first order; one rung alone, or errors that did not shrink, give
 /// 1): an error shrinks no faster than that as the step does. The note says when the floor raised the estimate.
 void RaiseToFamilyFloor(const std::vector<CandidateEstimate>& candidates, const std::vector<std::size_t>& order,
                         std::size_t k, const CandidateSpace& space, CandidateEstimate* e) {
-    if (e->wholeRun || !e->stable || !std::isfinite(e->estimate)) return;
+    if ((e->wholeRun && !e->withinRounding) || !e->stable || !std::isfinite(e->estimate)) return;
     const CandidateEstimate* nearest = nullptr;  // the finest whole-run rung coarser than e
     const CandidateEstimate* next = nullptr;     // the one after it
     for (std::size_t j = 0; j < k; ++j) {
@@ -311,6 +336,26 @@ void RaiseToFamilyFloor(const std::vector<CandidateEstimate>& candidates, const 
                   e->estimate, nearest->model.step, floor, p);
     e->estimate = floor;
     e->note = text;
+}
+
+/// A particle's impact falls somewhere inside a step, and the motion after it is shifted in time by up to a step,
+/// by an amount that jumps with the impact's phase in the step, so step doubling can see two probes agree by
+/// chance. A shift of the motion by dt moves the state at the end by its speed there times dt (nothing, once the
+/// particles came to rest): the estimate is taken to be at least half of that bound per impact (the typical phase;
+/// the safety factor covers the rest), `impactSpeed` being the impacts' count times the fastest point's speed at
+/// the pilot's end. Position budgets on worlds whose particles hit constraints only.
+void RaiseToImpactTiming(double impactSpeed, const CandidateSpace& space, const ErrorBudget& budget,
+                         CandidateEstimate* e) {
+    if (!space.hasContacts || budget.quantity != BudgetQuantity::Position || !e->stable) return;
+    const double floor = 0.5 * impactSpeed * e->model.step;
+    if (!(floor > e->estimate)) return;
+    char text[192];
+    std::snprintf(
+        text, sizeof text,
+        "raised from %.3g: impacts times the speed at the end, %.3g m/s, each timed to within its step, allow %.3g",
+        e->estimate, impactSpeed, floor);
+    e->estimate = floor;
+    if (!e->unreliable) e->note = text;
 }
 
 /// The candidate a refusal names: the smallest complete and reliable estimate; one that is a lower bound (a span
@@ -348,7 +393,8 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
     result.spanSeconds = span;
     const double bound = budget.bound / settings.safety;
     ChoiceClock clock(settings);
-    const std::vector<PlannedSpan> plan = PlanSpans(factory, space, settings, span, &result, &clock);
+    double impactSpeed = 0.0;
+    const std::vector<PlannedSpan> plan = PlanSpans(factory, space, settings, span, &result, &clock, &impactSpeed);
     for (std::size_t k = 0; k < order.size(); ++k) {
         CandidateEstimate& e = result.candidates[order[k]];
         if (result.chosen >= 0) {
@@ -416,6 +462,7 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
                  &clock);
         result.evaluatedShare += e.share;
         RaiseToFamilyFloor(result.candidates, order, k, space, &e);
+        RaiseToImpactTiming(impactSpeed, space, budget, &e);
         if (e.stable && !e.partial && !e.unreliable && e.estimate <= bound) {
             const double before = result.calibrationWork;
             VerifyOrder(plan[0], span, space, budget, settings, &e, &result.calibrationCpuSeconds,

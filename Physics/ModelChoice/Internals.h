@@ -20,8 +20,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// s of CPU of the calling thread.
 double ThreadCpuSeconds();
-/// Formal order of accuracy of a candidate on a space: contact (volumes or particles bouncing off constraints) is
-/// non-smooth, so first order; otherwise the integrator's.
+/// Formal order of accuracy of a candidate on a space: contact (volumes or particles bouncing off constraints) and
+/// joints' projections make it first order; otherwise the integrator's.
 int OrderOf(const ModelCandidate& c, const CandidateSpace& space);
 /// Richardson factor: with the refinement's error 2^-p of the candidate's, the candidate's error is the
 /// difference times 1 / (1 - 2^-p).
@@ -32,9 +32,9 @@ int Passes(const ModelCandidate& c);
 bool SameFamily(const ModelCandidate& a, const ModelCandidate& b);
 /// s: the calibration span of a run.
 double SpanFor(const ChoiceSettings& s);
-/// The level at which a difference is rounding (float states): relative for energy, scaled by the largest
-/// coordinate (at least 1 m) for positions and joints.
-double ConvergenceNoise(BudgetQuantity quantity, const std::vector<double>& positions);
+/// The level at which a difference is rounding (float states) after `steps` steps: relative for energy, scaled by
+/// the largest coordinate (at least 1 m) for positions and joints.
+double ConvergenceNoise(BudgetQuantity quantity, const std::vector<double>& positions, double steps);
 
 /// The choice's CPU limit and its progress lines (ChoiceSettings::cpuLimit, runShare, progress). Spans report
 /// what they cost when they end (Add, from the clock reads they make anyway); inside a span the clock is read only

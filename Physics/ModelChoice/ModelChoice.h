@@ -64,6 +64,9 @@ struct CandidateSpace {
     bool hasParticles = false;      ///< the world has particles (free, cloth or jointed): the integrator matters
     bool hasVolumes = false;        ///< the world has rigid volumes: the contact solver matters
     bool hasContacts = false;       ///< particles can hit constraints (non-smooth: first order at best)
+    /// Particles on distance joints: each step projects their positions back onto the joint and drops the velocity
+    /// along it, a first-order splitting whatever the integrator (docs/model-choice.md, "The candidates").
+    bool hasJoints = false;
     // Counts for the work model (PredictedWork).
     double particleCount = 0.0;  ///< free and cloth particles
     double springCount = 0.0;    ///< springs, cloth springs included, and joints
@@ -180,7 +183,10 @@ struct CandidateEstimate {
     /// and the refinement's from its own (over the whole run, or over the start span), when it was run (< 0: not).
     double pairDifference = -1.0;
     double finerDifference = -1.0;
-    bool unreliable = false;       ///< its error did not shrink at its order: never chosen
+    bool unreliable = false;  ///< its error did not shrink at its order: never chosen
+    /// The check passed only because the finer pair's difference is within the rounding its many steps can make:
+    /// it says nothing of the order, so the estimate is also held to what its family's coarser steps predict.
+    bool withinRounding = false;
     bool stoppedAtLimit = false;   ///< its estimate was cut short by the choice's CPU limit
     std::vector<double> segments;  ///< each span's share of the estimate (start span first)
     std::string note;              ///< why skipped, or why the estimate is not trusted
