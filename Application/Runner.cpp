@@ -29,6 +29,7 @@
 #include "Demos/SceneFileDemo.h"
 #include "Demos/Scenes/SceneExport.h"
 #include "Demos/Scenes/SceneFile.h"
+#include "Physics/JobPool.h"
 #include "Platform/Files/AtomicFile.h"
 #include "Platform/Files/TempRegistry.h"
 #include "Platform/HeadlessContext.h"
@@ -578,6 +579,7 @@ int RunCommandLine(int argc, const char* const* argv) {
         return kExitUsage;
     }
     for (const std::string& note : options.notes) std::fprintf(stderr, "physics-sandbox: %s\n", note.c_str());
+    SetDefaultThreadCount(options.threads);  // before any world steps; 0 keeps the hardware's concurrency
     if (options.mode == Options::Mode::Help) {
         std::fputs(UsageText().c_str(), stdout);
         return FinishStdout();

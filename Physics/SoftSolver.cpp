@@ -9,12 +9,17 @@
 #endif
 
 #include "Physics/Geometry/ContactManifold.h"
+#include "Physics/JobPool.h"
 #include "Physics/RigidbodyVolume.h"
 #include "Physics/WorldSettings.h"
 
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
+/// Items per job of the per-body loops and of the manifolds: fixed, never derived from the thread count
+/// (docs/threads.md).
+constexpr std::size_t kBodyChunk = 512;
+constexpr std::size_t kCandidateChunk = 128;
 
 /// v M in the row-vector convention (MultiplyVector), inline for the solver's inner loops.
 inline vec3 Mul(const vec3& v, const mat3& m) {
@@ -285,7 +290,7 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
     }
     StoreBatchImpulses();  // the batches' impulses back to the contacts (none without colouring)
     ApplyRestitution(soft.restitutionThreshold);
-    StoreBodies(volumes);
+    StoreBodies(volumes, ctx.jobs);
 }
 
 void SoftContactSolver::LoadBodies(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx,
@@ -295,12 +300,17 @@ void SoftContactSolver::LoadBodies(const std::vector<RigidbodyVolume*>& volumes,
         state.resize(n);
         sim.resize(n);
     }
-    for (std::size_t i = 0; i < n; ++i) {
-        const RigidbodyVolume& body = *volumes[i];
+    ForEachChunk(ctx.jobs, n, kBodyChunk, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) LoadBody(*volumes[i], ctx, active == nullptr || active[i] != 0, i);
+    });
+}
+
+void SoftContactSolver::LoadBody(const RigidbodyVolume& body, const StepContext& ctx, bool awake, std::size_t i) {
+    {
         BodyState& st = state[i];
         BodySim& bs = sim[i];
         // A sleeping body (active[i] == 0) is held like a static one and StoreBodies leaves it untouched.
-        bs.dynamic = body.HasVolume() && body.mass > 0.0f && (active == nullptr || active[i] != 0);
+        bs.dynamic = body.HasVolume() && body.mass > 0.0f && awake;
         bs.p = body.position;
         bs.q = body.orientation;
         bs.q0 = body.orientation;
@@ -316,7 +326,7 @@ void SoftContactSolver::LoadBodies(const std::vector<RigidbodyVolume*>& volumes,
             bs.angularAccel = vec3();
             bs.retention = 1.0f;
             bs.epsilon = 0.0f;
-            continue;
+            return;
         }
         st.v = body.velocity;
         st.w = body.angVel;
@@ -352,16 +362,28 @@ void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
     inheritedNormal = 0.0f;
     const SoftSolverSettings& soft = ctx.settings.soft;
     std::size_t cursor = 0;  // previousPairs is in the same increasing (a, b) order as the candidates
-    ContactManifold manifold;
-    for (const std::pair<int, int>& candidate : candidates) {
+    // Every candidate's manifold first, each into its own slot, in fixed chunks on the step's threads; then the
+    // pairs and contacts from them in candidate order, as one loop over the candidates would make them.
+    manifolds.resize(candidates.size());
+    ForEachChunk(ctx.jobs, candidates.size(), kCandidateChunk, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+            const std::pair<int, int>& candidate = candidates[k];
+            const RigidbodyVolume& A = *volumes[candidate.first];
+            const RigidbodyVolume& B = *volumes[candidate.second];
+            manifolds[k].pointCount = 0;
+            if (!CanInteract(A, B)) continue;
+            // Speculative margin plus the distance the pair can close this step, so a fast body meets the surface
+            // in the substep it reaches it instead of being pushed out from inside.
+            const float closing = std::sqrt(MagnitudeSq(state[candidate.second].v - state[candidate.first].v));
+            CollideVolumes(A, B, soft.speculativeMargin + closing * ctx.dt, &manifolds[k]);
+        }
+    });
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+        const ContactManifold& manifold = manifolds[k];
+        if (manifold.pointCount <= 0) continue;
+        const std::pair<int, int>& candidate = candidates[k];
         const RigidbodyVolume& A = *volumes[candidate.first];
         const RigidbodyVolume& B = *volumes[candidate.second];
-        if (!CanInteract(A, B)) continue;
-        // Speculative margin plus the distance the pair can close this step, so a fast body meets the surface
-        // in the substep it reaches it instead of being pushed out from inside.
-        const float closing = std::sqrt(MagnitudeSq(state[candidate.second].v - state[candidate.first].v));
-        CollideVolumes(A, B, soft.speculativeMargin + closing * ctx.dt, &manifold);
-        if (manifold.pointCount <= 0) continue;
 
         Pair pair;
         pair.a = candidate.first;
@@ -631,15 +653,17 @@ void SoftContactSolver::ApplyRestitution(float threshold) {
     }
 }
 
-void SoftContactSolver::StoreBodies(const std::vector<RigidbodyVolume*>& volumes) {
-    for (std::size_t i = 0; i < volumes.size(); ++i) {
-        const BodySim& bs = sim[i];
-        if (!bs.dynamic) continue;
-        RigidbodyVolume& body = *volumes[i];
-        body.velocity = state[i].v;
-        body.angVel = state[i].w;
-        body.position = bs.p;
-        body.orientation = bs.q;
-        body.SynchCollisionVolumes();
-    }
+void SoftContactSolver::StoreBodies(const std::vector<RigidbodyVolume*>& volumes, JobPool* jobs) {
+    ForEachChunk(jobs, volumes.size(), kBodyChunk, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const BodySim& bs = sim[i];
+            if (!bs.dynamic) continue;
+            RigidbodyVolume& body = *volumes[i];
+            body.velocity = state[i].v;
+            body.angVel = state[i].w;
+            body.position = bs.p;
+            body.orientation = bs.q;
+            body.SynchCollisionVolumes();
+        }
+    });
 }

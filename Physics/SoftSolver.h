@@ -16,7 +16,9 @@
 #include "Math/matrices.h"
 #include "Math/quaternion.h"
 #include "Math/vectors.h"
+#include "Physics/Geometry/ContactManifold.h"
 
+class JobPool;
 class RigidbodyVolume;
 struct StepContext;
 
@@ -235,7 +237,9 @@ private:
     /// each integration (by the first relax pass, pair by pair as it reaches them; here when there is no relax
     /// pass), and every solve pass in between reads them.
     void UpdateSeparations(const Block& block);
+    /// Per body, in fixed chunks on ctx.jobs (LoadBody: body i's state and constants; `awake`: not held by sleep).
     void LoadBodies(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx, const unsigned char* active);
+    void LoadBody(const RigidbodyVolume& body, const StepContext& ctx, bool awake, std::size_t i);
     void Collide(const std::vector<RigidbodyVolume*>& volumes, const std::vector<std::pair<int, int>>& candidates,
                  const StepContext& ctx, bool carryOver);
     void Prepare(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx);
@@ -253,12 +257,14 @@ private:
     /// lower body held still: approach no faster than the gap closes, push out of penetration at the static
     /// softness' bias rate.
     void ShockPass(std::size_t block, float invH, float biasRate, float maxPushout, float slop);
-    void StoreBodies(const std::vector<RigidbodyVolume*>& volumes);
+    /// The moving bodies' state back to the volumes, in fixed chunks on `jobs` (null: this thread).
+    void StoreBodies(const std::vector<RigidbodyVolume*>& volumes, JobPool* jobs);
 
     std::vector<BodyState> state;
     std::vector<BodySim> sim;
     std::vector<Pair> pairs, previousPairs;
     std::vector<Contact> contacts, previousContacts;
+    std::vector<ContactManifold> manifolds;  // Collide: one per candidate pair, capacity reused
     std::vector<Block> blocks;
     std::vector<int> blockBodies;         // moving bodies, block by block, in index order (BlockBodies)
     std::vector<int> islandParent;        // per body: union-find parent over the pairs (BuildBlocks)

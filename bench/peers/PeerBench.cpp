@@ -29,11 +29,15 @@ constexpr int kPenetrationWindow = 60;
 
 const char kUsage[] =
     "Usage: psb-peer-bench SCENE N [--solver book|accumulated|soft] [--steps S] [--warmup W] [--repeat R]\n"
+    "                      [--threads T]\n"
     "  SCENE N      boxpile N (cubes, 1..100000), pyramid N (base, 1..300) or tower N (height, 1..1000)\n"
     "  --solver S   this engine's contact solver (default accumulated; 10 iterations for accumulated)\n"
     "  --steps S    steps per run at 1/60 s (default 600)\n"
     "  --warmup W   first steps left out of the timing median (default 60, < S)\n"
     "  --repeat R   rounds, each running both engines, Bullet first in odd rounds (default 3)\n"
+    "  --threads T  also run this engine on T threads (1..256) in every round, beside its one-thread run, and\n"
+    "               print threads, psb_threads_ms (wall), speedup (psb_ms / psb_threads_ms) and same_state\n"
+    "               (1 when both runs end in the same bits); this engine otherwise runs on one thread\n"
     "Builds the scene in Bullet and in this engine from one definition and prints one line of key=value pairs:\n"
     "scene, n, solver; bullet_ms, psb_ms, ratio (psb / bullet): medians of wall ms per step after the warm-up,\n"
     "median over rounds; bullet_cpu_ms, psb_cpu_ms, cpu_ratio: the same from this thread's CPU time; each\n"
@@ -49,6 +53,7 @@ struct Options {
     int steps = 600;
     int warmup = 60;
     int repeat = 3;
+    int threads = 0;  // 0: no threaded run
 };
 
 /// Quality figures of one run, computed the same way for both engines (Probe).
@@ -124,11 +129,12 @@ private:
 };
 
 /// This engine with the bench's settings: the chosen contact solver, 10 iterations for Accumulated (the book's
-/// 5 otherwise), sleeping off; damping off comes from the specs.
+/// 5 otherwise), sleeping off, on `threads` threads; damping off comes from the specs.
 class PsbEngine {
 public:
-    PsbEngine(const std::vector<BodySpec>& specs, ContactSolver solver) : world(specs) {
+    PsbEngine(const std::vector<BodySpec>& specs, ContactSolver solver, int threads) : world(specs) {
         WorldSettings& s = world.system.settings;
+        s.threads = threads;
         s.contactSolver = solver;
         if (solver == ContactSolver::Accumulated) s.solverIterations = 10;
         s.sleep.enabled = false;
@@ -180,6 +186,7 @@ struct RunResult {
     double msPerStep = 0.0;     // wall clock: median over the steps after the warm-up
     double cpuMsPerStep = 0.0;  // this thread's CPU time: median over the same steps
     Quality quality;
+    std::vector<BodyState> end;  // every body's state after the last step
 };
 
 /// One full run of `engine`: every step timed on its own; after each of the last kPenetrationWindow steps (not
@@ -206,6 +213,7 @@ RunResult Run(Engine& engine, Probe& probe, const Options& o) {
     r.msPerStep = Median(std::vector<double>(ms.begin() + o.warmup, ms.end()));
     r.cpuMsPerStep = Median(std::vector<double>(cpuMs.begin() + o.warmup, cpuMs.end()));
     r.quality = probe.Final(penetration);
+    for (std::size_t i = 0; i < count; ++i) r.end.push_back(engine.State(i));
     return r;
 }
 
@@ -251,6 +259,9 @@ int Parse(int argc, char** argv, Options* o, bool* help) {
         } else if (std::strcmp(arg, "--warmup") == 0) {
             if (!ParseInt(value, &o->warmup) || o->warmup < 0)
                 return Usage("--warmup must be an integer >= 0, got", value);
+        } else if (std::strcmp(arg, "--threads") == 0) {
+            if (!ParseInt(value, &o->threads) || o->threads < 1 || o->threads > 256)
+                return Usage("--threads must be an integer in 1..256, got", value);
         } else if (std::strcmp(arg, "--repeat") == 0) {
             if (!ParseInt(value, &o->repeat) || o->repeat < 1 || o->repeat > 1000)
                 return Usage("--repeat must be an integer in 1..1000, got", value);
@@ -303,8 +314,8 @@ int main(int argc, char** argv) {
     }
     const std::vector<BodySpec> specs = Scene(o);
     Probe probe(specs);
-    std::vector<double> bulletMs, psbMs, bulletCpuMs, psbCpuMs;
-    RunResult bullet, psb;
+    std::vector<double> bulletMs, psbMs, bulletCpuMs, psbCpuMs, threadedMs;
+    RunResult bullet, psb, threaded;
     for (int round = 0; round < o.repeat; ++round) {
         // Alternate which engine goes first, so neither always runs on a warmer (or busier) machine.
         for (int k = 0; k < 2; ++k) {
@@ -314,7 +325,7 @@ int main(int argc, char** argv) {
                 bulletMs.push_back(bullet.msPerStep);
                 bulletCpuMs.push_back(bullet.cpuMsPerStep);
             } else {
-                PsbEngine engine(specs, o.solver);
+                PsbEngine engine(specs, o.solver, 1);
                 if (!engine.Error().empty()) {
                     std::fprintf(stderr, "psb-peer-bench: the scene was refused: %s\n", engine.Error().c_str());
                     return 1;
@@ -323,6 +334,11 @@ int main(int argc, char** argv) {
                 psbMs.push_back(psb.msPerStep);
                 psbCpuMs.push_back(psb.cpuMsPerStep);
             }
+        }
+        if (o.threads > 0) {  // right after this round's one-thread run, on the same scene
+            PsbEngine engine(specs, o.solver, o.threads);
+            threaded = Run(engine, probe, o);
+            threadedMs.push_back(threaded.msPerStep);
         }
     }
     const double bMs = Median(bulletMs), pMs = Median(psbMs);
@@ -339,6 +355,14 @@ int main(int argc, char** argv) {
     } else {
         std::printf(" bullet_disp=%.4g psb_disp=%.4g", b.displacement, p.displacement);
         if (o.scene == "tower") std::printf(" bullet_drift=%.4g psb_drift=%.4g", b.drift, p.drift);
+    }
+    if (o.threads > 0) {
+        const double tMs = Median(threadedMs);
+        bool same = psb.end.size() == threaded.end.size();
+        for (std::size_t i = 0; same && i < psb.end.size(); ++i)
+            same = std::memcmp(&psb.end[i], &threaded.end[i], sizeof(BodyState)) == 0;
+        std::printf(" threads=%d psb_threads_ms=%.4g speedup=%.3f same_state=%d", o.threads, tMs,
+                    tMs > 0.0 ? pMs / tMs : 0.0, same ? 1 : 0);
     }
     std::printf(" steps=%d warmup=%d repeat=%d\n", o.steps, o.warmup, o.repeat);
     return 0;
