@@ -4,14 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 #include "Physics/Geometry/ContactManifold.h"
 #include "Physics/JobPool.h"
 #include "Physics/RigidbodyVolume.h"
+#include "Physics/SoftContactKernel.h"
 #include "Physics/WorldSettings.h"
+
+using namespace softkernel;
 
 namespace {
 
@@ -27,79 +27,6 @@ inline vec3 Mul(const vec3& v, const mat3& m) {
             v.x * m[0][2] + v.y * m[1][2] + v.z * m[2][2]};
 }
 
-/// Four float lanes for the solver's hot loops (SoftSolver.h: every hot vec3 is followed by a fourth float). Only
-/// lane-wise operations and the three-term dot (x + y) + z, the scalar Dot's order, so lanes 0-2 carry the same
-/// bits as vec3 arithmetic.
-#if defined(__SSE2__)
-struct V4 {
-    __m128 m;
-};
-inline V4 Load(const vec3& v) { return {_mm_load_ps(&v.x)}; }
-inline V4 Load(const float* f) { return {_mm_load_ps(f)}; }
-inline void Store(vec3& v, V4 a) { _mm_store_ps(&v.x, a.m); }
-inline V4 Splat(float f) { return {_mm_set1_ps(f)}; }
-/// (v.x, v.y, v.z, 0).
-inline V4 Make(const vec3& v) { return {_mm_set_ps(0.0f, v.z, v.y, v.x)}; }
-/// Lane i of a in every lane.
-template <int i>
-inline V4 Broadcast(V4 a) {
-    return {_mm_shuffle_ps(a.m, a.m, _MM_SHUFFLE(i, i, i, i))};
-}
-/// Lane-wise Cross: (l.y r.z - l.z r.y, l.z r.x - l.x r.z, l.x r.y - l.y r.x).
-inline V4 Cross(V4 l, V4 r) {
-    const __m128 lYZX = _mm_shuffle_ps(l.m, l.m, _MM_SHUFFLE(3, 0, 2, 1));
-    const __m128 lZXY = _mm_shuffle_ps(l.m, l.m, _MM_SHUFFLE(3, 1, 0, 2));
-    const __m128 rYZX = _mm_shuffle_ps(r.m, r.m, _MM_SHUFFLE(3, 0, 2, 1));
-    const __m128 rZXY = _mm_shuffle_ps(r.m, r.m, _MM_SHUFFLE(3, 1, 0, 2));
-    return {_mm_sub_ps(_mm_mul_ps(lYZX, rZXY), _mm_mul_ps(lZXY, rYZX))};
-}
-inline V4 operator+(V4 a, V4 b) { return {_mm_add_ps(a.m, b.m)}; }
-inline V4 operator-(V4 a, V4 b) { return {_mm_sub_ps(a.m, b.m)}; }
-inline V4 operator*(V4 a, V4 b) { return {_mm_mul_ps(a.m, b.m)}; }
-/// Lane i of the result is Dot(a_i, b_i) for i < 3, summed as (x + y) + z.
-inline V4 Dot3(V4 a0, V4 b0, V4 a1, V4 b1, V4 a2, V4 b2) {
-    __m128 p0 = _mm_mul_ps(a0.m, b0.m), p1 = _mm_mul_ps(a1.m, b1.m), p2 = _mm_mul_ps(a2.m, b2.m);
-    __m128 p3 = _mm_setzero_ps();
-    _MM_TRANSPOSE4_PS(p0, p1, p2, p3);
-    return {_mm_add_ps(_mm_add_ps(p0, p1), p2)};
-}
-/// Dot(a0, b0) + Dot(a1, b1) - Dot(a2, b2), left to right: the relative speed along a row.
-inline float SumDot3(V4 a0, V4 b0, V4 a1, V4 b1, V4 a2, V4 b2) {
-    const __m128 d = Dot3(a0, b0, a1, b1, a2, b2).m;
-    return (_mm_cvtss_f32(d) + _mm_cvtss_f32(_mm_shuffle_ps(d, d, 1))) - _mm_cvtss_f32(_mm_shuffle_ps(d, d, 2));
-}
-/// (x + y) + z of a's lanes times b's.
-inline float Dot(V4 a, V4 b) {
-    const __m128 p = _mm_mul_ps(a.m, b.m);
-    return (_mm_cvtss_f32(p) + _mm_cvtss_f32(_mm_shuffle_ps(p, p, 1))) + _mm_cvtss_f32(_mm_shuffle_ps(p, p, 2));
-}
-#else
-struct V4 {
-    float f[4];
-};
-inline V4 Load(const float* f) { return {{f[0], f[1], f[2], f[3]}}; }
-inline V4 Load(const vec3& v) { return Load(&v.x); }
-inline void Store(vec3& v, V4 a) {
-    float* f = &v.x;
-    for (int i = 0; i < 4; ++i) f[i] = a.f[i];
-}
-inline V4 Splat(float x) { return {{x, x, x, x}}; }
-inline V4 Make(const vec3& v) { return {{v.x, v.y, v.z, 0.0f}}; }
-template <int i>
-inline V4 Broadcast(V4 a) {
-    return Splat(a.f[i]);
-}
-inline V4 Cross(V4 l, V4 r) {
-    const vec3 c = Cross(vec3(l.f[0], l.f[1], l.f[2]), vec3(r.f[0], r.f[1], r.f[2]));
-    return {{c.x, c.y, c.z, 0.0f}};
-}
-inline V4 operator+(V4 a, V4 b) { return {{a.f[0] + b.f[0], a.f[1] + b.f[1], a.f[2] + b.f[2], a.f[3] + b.f[3]}}; }
-inline V4 operator-(V4 a, V4 b) { return {{a.f[0] - b.f[0], a.f[1] - b.f[1], a.f[2] - b.f[2], a.f[3] - b.f[3]}}; }
-inline V4 operator*(V4 a, V4 b) { return {{a.f[0] * b.f[0], a.f[1] * b.f[1], a.f[2] * b.f[2], a.f[3] * b.f[3]}}; }
-inline float Dot(V4 a, V4 b) { return a.f[0] * b.f[0] + a.f[1] * b.f[1] + a.f[2] * b.f[2]; }
-inline float SumDot3(V4 a0, V4 b0, V4 a1, V4 b1, V4 a2, V4 b2) { return Dot(a0, b0) + Dot(a1, b1) - Dot(a2, b2); }
-#endif
-
 /// Below this square of half a substep's turn (x = |w| h / 2 < 0.1 rad), SmallTurn replaces Integrate.
 constexpr float kSmallHalfTurnSq = 0.01f;
 
@@ -113,74 +40,12 @@ inline quat SmallTurn(const quat& q, const vec3& w, float h, float x2) {
     return Normalized(quat(w.x * k, w.y * k, w.z * k, c) * q);
 }
 
-/// A pair's two bodies' velocities as lanes while its contacts are solved.
-struct Velocities {
-    V4 vA, wA, vB, wB;
-};
-inline Velocities LoadVelocities(const SoftContactSolver::BodyState& A, const SoftContactSolver::BodyState& B) {
-    return {Load(A.v), Load(A.w), Load(B.v), Load(B.w)};
-}
-inline void StoreVelocities(const Velocities& x, SoftContactSolver::BodyState& A, SoftContactSolver::BodyState& B) {
-    Store(A.v, x.vA);
-    Store(A.w, x.wA);
-    Store(B.v, x.vB);
-    Store(B.w, x.wB);
-}
-/// RowSpeed on lanes: Dot(vB - vA, d) + Dot(wB, rB x d) - Dot(wA, rA x d).
-inline float RowSpeed(const Velocities& x, V4 d, const SoftContactSolver::Row& row) {
-    return SumDot3(x.vB - x.vA, d, x.wB, Load(row.rBxD), x.wA, Load(row.rAxD));
-}
-/// RowSpeed of two rows (the friction pair) from the same velocities, sharing the lane transposes.
-inline void RowSpeeds(const Velocities& x, V4 d1, const SoftContactSolver::Row& r1, V4 d2,
-                      const SoftContactSolver::Row& r2, float* s1, float* s2) {
-#if defined(__SSE2__)
-    const __m128 dv = _mm_sub_ps(x.vB.m, x.vA.m);
-    __m128 p0 = _mm_mul_ps(dv, d1.m), p1 = _mm_mul_ps(x.wB.m, Load(r1.rBxD).m);
-    __m128 p2 = _mm_mul_ps(x.wA.m, Load(r1.rAxD).m), p3 = _mm_mul_ps(dv, d2.m);
-    _MM_TRANSPOSE4_PS(p0, p1, p2, p3);
-    const __m128 a = _mm_add_ps(_mm_add_ps(p0, p1), p2);  // dv.d1, wB.rB1, wA.rA1, dv.d2
-    const __m128 b = Dot3(x.wB, Load(r2.rBxD), x.wA, Load(r2.rAxD), V4{_mm_setzero_ps()}, V4{_mm_setzero_ps()}).m;
-    *s1 = (_mm_cvtss_f32(a) + _mm_cvtss_f32(_mm_shuffle_ps(a, a, 1))) - _mm_cvtss_f32(_mm_shuffle_ps(a, a, 2));
-    *s2 = (_mm_cvtss_f32(_mm_shuffle_ps(a, a, 3)) + _mm_cvtss_f32(b)) - _mm_cvtss_f32(_mm_shuffle_ps(b, b, 1));
-#else
-    *s1 = RowSpeed(x, d1, r1);
-    *s2 = RowSpeed(x, d2, r2);
-#endif
-}
-/// ApplyRow on lanes.
-inline void ApplyRow(Velocities& x, float invA, float invB, V4 d, const SoftContactSolver::Row& row, float j) {
-    x.vA = x.vA - d * Splat(invA * j);
-    x.vB = x.vB + d * Splat(invB * j);
-    x.wA = x.wA - Load(row.iArAxD) * Splat(j);
-    x.wB = x.wB + Load(row.iBrBxD) * Splat(j);
-}
-
 /// Orthonormal t1, t2 with n x t1 = t2, a fixed function of n (the same normal gives the same basis every step).
 void TangentBasis(const vec3& n, vec3* t1, vec3* t2) {
     vec3 t = std::fabs(n.x) >= 0.57735f ? vec3(n.y, -n.x, 0.0f) : vec3(0.0f, n.z, -n.y);
     t = t * (1.0f / std::sqrt(MagnitudeSq(t)));
     *t1 = t;
     *t2 = Cross(n, t);
-}
-
-/// v M for a matrix stored as three rows of four floats: (v.x row0 + v.y row1) + v.z row2, Mul's order.
-inline V4 MulRows(V4 v, const float (*m)[4]) {
-    return Broadcast<0>(v) * Load(m[0]) + Broadcast<1>(v) * Load(m[1]) + Broadcast<2>(v) * Load(m[2]);
-}
-
-/// Fills a constraint row along d: Jacobians, their images under the inverse inertias and the effective mass.
-inline void MakeRow(V4 rA, V4 rB, V4 d, float invSum, const float (*iA)[4], const float (*iB)[4],
-                    SoftContactSolver::Row* row) {
-    const V4 rAxD = Cross(rA, d), rBxD = Cross(rB, d);
-    const V4 iArAxD = MulRows(rAxD, iA), iBrBxD = MulRows(rBxD, iB);
-    const float impulse = row->impulse;  // the fourth lanes of the Jacobians hold mass and impulse
-    Store(row->rAxD, rAxD);
-    Store(row->rBxD, rBxD);
-    row->impulse = impulse;
-    Store(row->iArAxD, iArAxD);
-    Store(row->iBrBxD, iBrBxD);
-    const float k = invSum + Dot(rAxD, iArAxD) + Dot(rBxD, iBrBxD);
-    row->mass = k > 0.0f ? 1.0f / k : 0.0f;
 }
 
 /// Pairs of static bodies never move, so they are never tested.
@@ -202,6 +67,21 @@ void CollideVolumes(const RigidbodyVolume& a, const RigidbodyVolume& b, float ma
         CollideBoxSphere(a.box, b.sphere, margin, out);
     } else {
         CollideBoxes(a.box, b.box, margin, out);
+    }
+}
+
+/// A pair's velocities back to its moving bodies only. A static or sleeping body keeps its zero velocities (a pass
+/// leaves them unchanged, bit for bit); not writing them lets blocks that share the ground run on different threads.
+inline void StoreMovingVelocities(const PairVelocities& x, const SoftContactSolver::Pair& pair,
+                                  const std::vector<unsigned char>& moving,
+                                  std::vector<SoftContactSolver::BodyState>& state) {
+    if (moving[static_cast<std::size_t>(pair.a)] != 0) {
+        Store(state[static_cast<std::size_t>(pair.a)].v, x.vA);
+        Store(state[static_cast<std::size_t>(pair.a)].w, x.wA);
+    }
+    if (moving[static_cast<std::size_t>(pair.b)] != 0) {
+        Store(state[static_cast<std::size_t>(pair.b)].v, x.vB);
+        Store(state[static_cast<std::size_t>(pair.b)].w, x.wB);
     }
 }
 
@@ -261,12 +141,17 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
     // A contact with a static body has only one body to move, so it is made twice as stiff.
     const Softness staticSoftness = MakeSoftness(2.0f * hertz, soft.contactDampingRatio, ctx.h);
     // With colouring the batches prepare their own rows, four wide; Prepare does the pairs solved one by one.
-    BuildBlocks(ctx.settings.softGraphColouring, softness, staticSoftness);
+    graph.Build(ctx.settings.softGraphColouring, pairEnds, moving);
+    BuildBatches(softness, staticSoftness, ctx.jobs);
     Prepare(volumes, ctx);
     BuildShock(ctx);
     // Every substep of a block before the next block: islands share no moving body, so this is the order of one
-    // pass over all of them, with the block's rows still in cache (kBlockPairs).
-    for (const Block& block : blocks) {
+    // pass over all of them, with the block's rows still in cache (kBlockPairs). For the same reason the blocks are
+    // the jobs of the step's threads: a block writes only its own bodies, contacts and batches (static and sleeping
+    // bodies are read, never written), so any thread may run it and the bits stay those of one thread.
+    const std::vector<Block>& blocks = graph.Blocks();
+    auto solveBlock = [&](std::size_t b) {
+        const Block& block = blocks[b];
         UpdateSeparations(block);
         for (int s = 0; s < ctx.substepCount; ++s) {
             IntegrateVelocities(ctx, block);
@@ -274,8 +159,7 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
             for (int k = 0; k < soft.iterations; ++k)
                 Solve(block, ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, true);
             if (!shockPoints.empty())
-                ShockPass(static_cast<std::size_t>(&block - blocks.data()), ctx.invH, staticSoftness.biasRate,
-                          soft.maxPushoutSpeed, soft.linearSlop);
+                ShockPass(b, ctx.invH, staticSoftness.biasRate, soft.maxPushoutSpeed, soft.linearSlop);
             IntegratePositions(ctx, block);
             // The first relax pass brings each pair's separations up to date as it reaches the pair (the same
             // values UpdateSeparations gives: poses do not change during a pass); without one, UpdateSeparations
@@ -284,9 +168,13 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
             for (int k = 0; k < soft.relaxIterations; ++k)
                 Solve(block, ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, false, k == 0);
             // Again after the relax pass, without push-out: the velocities the next substep starts from.
-            if (!shockPoints.empty())
-                ShockPass(static_cast<std::size_t>(&block - blocks.data()), ctx.invH, 0.0f, 0.0f, soft.linearSlop);
+            if (!shockPoints.empty()) ShockPass(b, ctx.invH, 0.0f, 0.0f, soft.linearSlop);
         }
+    };
+    if (ctx.jobs != nullptr) {
+        ctx.jobs->ForEach(blocks.size(), solveBlock);
+    } else {
+        for (std::size_t b = 0; b < blocks.size(); ++b) solveBlock(b);
     }
     StoreBatchImpulses();  // the batches' impulses back to the contacts (none without colouring)
     ApplyRestitution(soft.restitutionThreshold);
@@ -299,6 +187,7 @@ void SoftContactSolver::LoadBodies(const std::vector<RigidbodyVolume*>& volumes,
     if (state.size() != n) {
         state.resize(n);
         sim.resize(n);
+        moving.resize(n);
     }
     ForEachChunk(ctx.jobs, n, kBodyChunk, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) LoadBody(*volumes[i], ctx, active == nullptr || active[i] != 0, i);
@@ -311,6 +200,7 @@ void SoftContactSolver::LoadBody(const RigidbodyVolume& body, const StepContext&
         BodySim& bs = sim[i];
         // A sleeping body (active[i] == 0) is held like a static one and StoreBodies leaves it untouched.
         bs.dynamic = body.HasVolume() && body.mass > 0.0f && awake;
+        moving[i] = bs.dynamic ? 1 : 0;
         bs.p = body.position;
         bs.q = body.orientation;
         bs.q0 = body.orientation;
@@ -354,6 +244,7 @@ void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
     contacts.swap(previousContacts);
     pairs.clear();
     contacts.clear();
+    pairEnds.clear();
     if (!carryOver) {
         previousPairs.clear();
         previousContacts.clear();
@@ -378,10 +269,10 @@ void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
             CollideVolumes(A, B, soft.speculativeMargin + closing * ctx.dt, &manifolds[k]);
         }
     });
-    for (std::size_t k = 0; k < candidates.size(); ++k) {
-        const ContactManifold& manifold = manifolds[k];
+    for (std::size_t at = 0; at < candidates.size(); ++at) {
+        const ContactManifold& manifold = manifolds[at];
         if (manifold.pointCount <= 0) continue;
-        const std::pair<int, int>& candidate = candidates[k];
+        const std::pair<int, int>& candidate = candidates[at];
         const RigidbodyVolume& A = *volumes[candidate.first];
         const RigidbodyVolume& B = *volumes[candidate.second];
 
@@ -416,40 +307,41 @@ void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
             c.rB = mp.point - sim[pair.b].p;
             c.separation = mp.separation;
             c.id = mp.id;
-            if (old != nullptr) {
-                const Contact* match = nullptr;
-                for (std::size_t j = old->first; j < old->first + old->count; ++j)
-                    if (previousContacts[j].id == mp.id) {
-                        match = &previousContacts[j];
-                        break;
-                    }
-                if (match != nullptr) {
-                    const Contact& o = *match;
-                    // Last step's total re-expressed in this step's basis, so a slowly turning normal keeps most.
-                    const vec3 P =
-                        (old->n * o.normal.impulse + old->t1 * o.tangent1.impulse + old->t2 * o.tangent2.impulse) *
-                        soft.warmStartFactor;
-                    c.normal.impulse = std::fmax(Dot(P, pair.n), 0.0f);
-                    c.support = c.normal.impulse;
-                    c.tangent1.impulse = Dot(P, pair.t1);
-                    c.tangent2.impulse = Dot(P, pair.t2);
-                    inheritedNormal += c.normal.impulse;
-                    ++warmStarted;
-                }
-            }
+            if (old != nullptr) Inherit(*old, pair, soft.warmStartFactor, &c);
         }
         pairs.push_back(pair);
+        pairEnds.emplace_back(pair.a, pair.b);
     }
 }
 
+void SoftContactSolver::Inherit(const Pair& old, const Pair& pair, float warmStartFactor, Contact* c) {
+    const Contact* match = nullptr;
+    for (std::size_t j = old.first; j < old.first + old.count; ++j)
+        if (previousContacts[j].id == c->id) {
+            match = &previousContacts[j];
+            break;
+        }
+    if (match == nullptr) return;
+    const Contact& o = *match;
+    // Last step's total re-expressed in this step's basis, so a slowly turning normal keeps most.
+    const vec3 P =
+        (old.n * o.normal.impulse + old.t1 * o.tangent1.impulse + old.t2 * o.tangent2.impulse) * warmStartFactor;
+    c->normal.impulse = std::fmax(Dot(P, pair.n), 0.0f);
+    c->support = c->normal.impulse;
+    c->tangent1.impulse = Dot(P, pair.t1);
+    c->tangent2.impulse = Dot(P, pair.t2);
+    inheritedNormal += c->normal.impulse;
+    ++warmStarted;
+}
+
 void SoftContactSolver::Prepare(const std::vector<RigidbodyVolume*>& /*volumes*/, const StepContext& /*ctx*/) {
-    for (const int i : overflow) PreparePair(pairs[static_cast<std::size_t>(i)]);
+    for (const int i : graph.Overflow()) PreparePair(pairs[static_cast<std::size_t>(i)]);
 }
 
 void SoftContactSolver::PreparePair(const Pair& pair) {
     const BodySim& A = sim[pair.a];
     const BodySim& B = sim[pair.b];
-    const Velocities x = LoadVelocities(state[pair.a], state[pair.b]);
+    const PairVelocities x = LoadVelocities(state[pair.a], state[pair.b]);
     const V4 n = Load(pair.n), t1 = Load(pair.t1), t2 = Load(pair.t2);
     const float invSum = A.invMass + B.invMass;
     for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
@@ -468,7 +360,7 @@ void SoftContactSolver::PreparePair(const Pair& pair) {
 void SoftContactSolver::IntegrateVelocities(const StepContext& ctx, const Block& block) {
     const float h = ctx.h;
     for (std::size_t k = block.bodyBegin; k < block.bodyEnd; ++k) {
-        const std::size_t i = static_cast<std::size_t>(blockBodies[k]);
+        const std::size_t i = static_cast<std::size_t>(graph.BlockBodies()[k]);
         const BodySim& bs = sim[i];
         BodyState& st = state[i];
         // Semi-implicit Euler, then the body's velocity retention and threshold per substep (RigidbodyVolume).
@@ -486,7 +378,7 @@ void SoftContactSolver::IntegrateVelocities(const StepContext& ctx, const Block&
 void SoftContactSolver::IntegratePositions(const StepContext& ctx, const Block& block) {
     const float h = ctx.h;
     for (std::size_t k = block.bodyBegin; k < block.bodyEnd; ++k) {
-        const std::size_t i = static_cast<std::size_t>(blockBodies[k]);
+        const std::size_t i = static_cast<std::size_t>(graph.BlockBodies()[k]);
         BodySim& bs = sim[i];
         BodyState& st = state[i];
         st.dp += st.v * h;
@@ -510,7 +402,7 @@ void SoftContactSolver::IntegratePositions(const StepContext& ctx, const Block& 
 void SoftContactSolver::UpdateSeparations(const Block& block) {
     for (std::size_t k = block.batchBegin; k < block.batchEnd; ++k) UpdateBatchSeparations(batches[k]);
     for (std::size_t k = block.overflowBegin; k < block.overflowEnd; ++k)
-        UpdatePairSeparations(pairs[static_cast<std::size_t>(overflow[k])]);
+        UpdatePairSeparations(pairs[static_cast<std::size_t>(graph.Overflow()[k])]);
 }
 
 void SoftContactSolver::UpdatePairSeparations(const Pair& pair) {
@@ -532,23 +424,19 @@ void SoftContactSolver::UpdatePairSeparations(const Pair& pair) {
 void SoftContactSolver::WarmStart(const Block& block) {
     WideWarmStart(block);
     for (std::size_t k = block.overflowBegin; k < block.overflowEnd; ++k)
-        WarmStartPair(pairs[static_cast<std::size_t>(overflow[k])]);
+        WarmStartPair(pairs[static_cast<std::size_t>(graph.Overflow()[k])]);
 }
 
 void SoftContactSolver::WarmStartPair(const Pair& pair) {
     // The pair's two bodies are worked on in locals (no other pair touches them meanwhile).
     BodyState& A = state[pair.a];
     BodyState& B = state[pair.b];
-    Velocities x = LoadVelocities(A, B);
+    PairVelocities x = LoadVelocities(A, B);
     const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
     const V4 n = Load(pair.n), t1 = Load(pair.t1), t2 = Load(pair.t2);
-    for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
-        const Contact& c = contacts[k];
-        ApplyRow(x, invA, invB, n, c.normal, c.normal.impulse);
-        ApplyRow(x, invA, invB, t1, c.tangent1, c.tangent1.impulse);
-        ApplyRow(x, invA, invB, t2, c.tangent2, c.tangent2.impulse);
-    }
-    StoreVelocities(x, A, B);
+    for (std::size_t k = pair.first; k < pair.first + pair.count; ++k)
+        WarmStartPoint(x, invA, invB, n, t1, t2, contacts[k]);
+    StoreMovingVelocities(x, pair, moving, state);
 }
 
 void SoftContactSolver::Solve(const Block& block, float invH, const Softness& dynamicSoftness,
@@ -556,7 +444,7 @@ void SoftContactSolver::Solve(const Block& block, float invH, const Softness& dy
                               bool updateSeparations) {
     WideSolve(block, invH, maxPushout, slop, useBias, updateSeparations);
     for (std::size_t k = block.overflowBegin; k < block.overflowEnd; ++k) {
-        const Pair& pair = pairs[static_cast<std::size_t>(overflow[k])];
+        const Pair& pair = pairs[static_cast<std::size_t>(graph.Overflow()[k])];
         if (updateSeparations) UpdatePairSeparations(pair);
         SolvePair(pair, pair.touchesStatic ? staticSoftness : dynamicSoftness, invH, maxPushout, slop, useBias);
     }
@@ -566,7 +454,7 @@ void SoftContactSolver::SolvePair(const Pair& pair, const Softness& softness, fl
                                   bool useBias) {
     BodyState& A = state[pair.a];
     BodyState& B = state[pair.b];
-    Velocities x = LoadVelocities(A, B);
+    PairVelocities x = LoadVelocities(A, B);
     const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
     const V4 n = Load(pair.n), t1 = Load(pair.t1), t2 = Load(pair.t2);
     // Friction only in the relax pass, as Box2D's soft step does since 2026: the biased pass's friction was undone
@@ -574,54 +462,13 @@ void SoftContactSolver::SolvePair(const Pair& pair, const Softness& softness, fl
     // before the normal rows, so the pass ends on non-penetration: friction's lever arms change the corners' normal
     // speeds, and solved last it left a cube landing flat at 5 m/s rising at 0.14 m/s (at 6 substeps; 0.008 m/s
     // this way round: SoftSolver.SpeculativeContactStopsFastBodyWithoutPopping).
-    if (!useBias) {
-        for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
-            Contact& c = contacts[k];
-            // Friction: the TOTAL stays inside the Coulomb cone mu * jn (book §15, Coulomb clamp), jn from the
-            // last pass without bias (Contact::support; docs/ch15.md, "Convergence of the contact solvers").
-            const float limit = pair.friction * c.support;
-            float speed1, speed2;
-            RowSpeeds(x, t1, c.tangent1, t2, c.tangent2, &speed1, &speed2);
-            float j1 = c.tangent1.impulse - c.tangent1.mass * speed1;
-            float j2 = c.tangent2.impulse - c.tangent2.mass * speed2;
-            const float sq = j1 * j1 + j2 * j2;
-            if (sq > limit * limit) {
-                const float scale = limit > 0.0f ? limit / std::sqrt(sq) : 0.0f;
-                j1 *= scale;
-                j2 *= scale;
-            }
-            const float d1 = j1 - c.tangent1.impulse, d2 = j2 - c.tangent2.impulse;
-            c.tangent1.impulse = j1;
-            c.tangent2.impulse = j2;
-            ApplyRow(x, invA, invB, t1, c.tangent1, d1);
-            ApplyRow(x, invA, invB, t2, c.tangent2, d2);
-        }
-    }
-    for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
-        Contact& c = contacts[k];
-        const float s = c.current;
-        // Speculative (s > 0): may close the gap this substep, no more. Penetrating, biased pass: the soft
-        // push-out. Written as selects, not branches: whether a contact is speculative is hard to predict.
-        const bool speculative = s > 0.0f;
-        const bool pushOut = !speculative && useBias;
-        const float pushOutBias = std::max(softness.biasRate * std::min(s + slop, 0.0f), -maxPushout);
-        const float bias = speculative ? s * invH : (pushOut ? pushOutBias : 0.0f);
-        const float massScale = pushOut ? softness.massScale : 1.0f;
-        const float impulseScale = pushOut ? softness.impulseScale : 0.0f;
-        // Normal: the TOTAL impulse stays >= 0 (contacts push).
-        const float vn = RowSpeed(x, n, c.normal);
-        // Restitution works from the fastest closing speed met before solving (the impact substep), not from
-        // the step's start, which misses up to g dt of the fall.
-        if (useBias) c.relativeVelocity = std::min(c.relativeVelocity, vn);
-        const float jn = std::max(
-            c.normal.impulse - c.normal.mass * massScale * (vn + bias) - impulseScale * c.normal.impulse, 0.0f);
-        const float dn = jn - c.normal.impulse;
-        c.normal.impulse = jn;
-        c.maxNormalImpulse = std::max(c.maxNormalImpulse, jn);
-        if (!useBias) c.support = jn;
-        ApplyRow(x, invA, invB, n, c.normal, dn);
-    }
-    StoreVelocities(x, A, B);
+    if (!useBias)
+        for (std::size_t k = pair.first; k < pair.first + pair.count; ++k)
+            SolveFriction(x, invA, invB, t1, t2, pair.friction, contacts[k]);
+    const PassLanes<float> pass = {invH, slop, -maxPushout};
+    for (std::size_t k = pair.first; k < pair.first + pair.count; ++k)
+        SolveNormal(x, invA, invB, n, softness, pass, useBias, contacts[k]);
+    StoreMovingVelocities(x, pair, moving, state);
 }
 
 void SoftContactSolver::ApplyRestitution(float threshold) {
@@ -629,7 +476,7 @@ void SoftContactSolver::ApplyRestitution(float threshold) {
         if (pair.restitution == 0.0f) continue;
         BodyState& A = state[pair.a];
         BodyState& B = state[pair.b];
-        Velocities x = LoadVelocities(A, B);
+        PairVelocities x = LoadVelocities(A, B);
         const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
         const V4 n = Load(pair.n);
         // Several passes, not one: a face's corners are solved one after another, and one pass leaves the
@@ -640,13 +487,7 @@ void SoftContactSolver::ApplyRestitution(float threshold) {
                 Contact& c = contacts[k];
                 // Only a real impact (closing faster than the threshold before solving) that the solver pushed on.
                 if (c.relativeVelocity > -threshold || c.maxNormalImpulse == 0.0f) continue;
-                const float vn = RowSpeed(x, n, c.normal);
-                const float jn =
-                    std::max(c.normal.impulse - c.normal.mass * (vn + pair.restitution * c.relativeVelocity), 0.0f);
-                const float dn = jn - c.normal.impulse;
-                c.normal.impulse = jn;
-                c.maxNormalImpulse = std::max(c.maxNormalImpulse, jn);
-                ApplyRow(x, invA, invB, n, c.normal, dn);
+                SolveRestitution(x, invA, invB, n, pair.restitution, c);
             }
         }
         StoreVelocities(x, A, B);

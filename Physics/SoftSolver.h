@@ -13,10 +13,12 @@
 #include <utility>
 #include <vector>
 
+#include "Math/Simd4.h"
 #include "Math/matrices.h"
 #include "Math/quaternion.h"
 #include "Math/vectors.h"
 #include "Physics/Geometry/ContactManifold.h"
+#include "Physics/SoftSolverGraph.h"
 
 class JobPool;
 class RigidbodyVolume;
@@ -128,12 +130,9 @@ public:
         bool isotropic = false;  // equal principal moments: a free turn keeps w (IntegratePositions' SmallTurn)
     };
 
-    /// Four floats, one per lane of a wide batch (GCC/Clang vector extension: element-wise arithmetic).
-    typedef float Float4 __attribute__((vector_size(16)));
-    /// Three Float4: a vector per lane.
-    struct Vec4x3 {
-        Float4 x, y, z;
-    };
+    /// Four floats, one per lane of a wide batch, and a vector per lane (Math/Simd4.h).
+    using Float4 = simd4::Float4;
+    using Vec4x3 = simd4::Vec4x3;
     /// One row of a point in every lane (Row, four wide).
     struct WideRow {
         Vec4x3 rAxD, rBxD, iArAxD, iBrBxD;
@@ -159,21 +158,12 @@ public:
         WidePoint points[4];
     };
 
-    /// Colours of the constraint graph: a pair takes the first colour neither of its moving bodies has.
-    static constexpr int kColours = 24;
+    /// The contact graph's colours and block size, and a block (SoftSolverGraph.h).
+    static constexpr int kColours = SoftContactGraph::kColours;
+    static constexpr std::size_t kBlockPairs = SoftContactGraph::kBlockPairs;
+    using Block = SoftContactGraph::Block;
     /// Passes of the restitution solve over a pair's impact points (ApplyRestitution).
     static constexpr int kRestitutionPasses = 4;
-    /// Islands gathered until they hold this many pairs make a block (BuildBlocks): about 200 KB of rows.
-    static constexpr std::size_t kBlockPairs = 256;
-    /// Whole islands (moving bodies linked by pairs), in order of their first body, gathered until they hold
-    /// kBlockPairs pairs. Step runs every substep of a block before the next block, so the block's rows and
-    /// bodies stay in cache; islands share no moving body, so the order of blocks changes no result. Inside a
-    /// block the pairs keep their order: its batches colour by colour, then its overflow one by one.
-    struct Block {
-        std::size_t bodyBegin = 0, bodyEnd = 0;          // BlockBodies()[bodyBegin, bodyEnd): its moving bodies
-        std::size_t batchBegin = 0, batchEnd = 0;        // Batches()[batchBegin, batchEnd)
-        std::size_t overflowBegin = 0, overflowEnd = 0;  // OverflowPairs()[overflowBegin, overflowEnd)
-    };
     /// The last Step's pairs, its blocks, the moving bodies of each block, its batches, and the pairs solved one
     /// by one after a block's batches (a moving body already in every colour, or the one pair of a colour's last
     /// batch; without colouring, every pair, in one block).
@@ -186,10 +176,10 @@ public:
         const std::size_t k = static_cast<std::size_t>(i);
         return sim[k].p - state[k].dp;
     }
-    const std::vector<Block>& Blocks() const { return blocks; }
-    const std::vector<int>& BlockBodies() const { return blockBodies; }
+    const std::vector<Block>& Blocks() const { return graph.Blocks(); }
+    const std::vector<int>& BlockBodies() const { return graph.BlockBodies(); }
     const std::vector<WideBatch>& Batches() const { return batches; }
-    const std::vector<int>& OverflowPairs() const { return overflow; }
+    const std::vector<int>& OverflowPairs() const { return graph.Overflow(); }
 
     /// One contact point of the shock pass (SoftSolverShock.cpp): the pair's body nearer the static ones in the
     /// contact graph (`lower`, fewer pairs away) is held still and only `upper` is moved. n points from lower to
@@ -213,13 +203,12 @@ public:
     const std::vector<ShockPoint>& ShockPoints() const { return shockPoints; }
 
 private:
-    // Blocks and graph colouring (SoftSolverGraph.cpp): blocks and their batches built once per step before
-    // Prepare; each pass over a block runs its batches colour by colour, then its overflow pairs one by one; the
-    // impulses go back to the contacts before restitution.
-    void BuildBlocks(bool colouring, const Softness& softness, const Softness& staticSoftness);
-    /// Colours the pairs `list` (pair indices, in pair order) and appends their batches and overflow.
-    void BuildBatches(const std::vector<int>& list, std::size_t begin, std::size_t end, const Softness& softness,
-                      const Softness& staticSoftness);
+    // The four-wide path (SoftSolverWide.cpp): the graph's batches (SoftSolverGraph.h) filled and prepared once per
+    // step before Prepare; each pass over a block runs its batches colour by colour, then its overflow pairs one by
+    // one (the scalar path); the impulses go back to the contacts before restitution.
+    void BuildBatches(const Softness& softness, const Softness& staticSoftness, JobPool* jobs);
+    void FillBatch(const SoftContactGraph::Batch& lanes, const Softness& softness, const Softness& staticSoftness,
+                   WideBatch* out);
     void UpdateBatchSeparations(WideBatch& batch) const;
     void WideWarmStart(const Block& block);
     /// One pass over a block's batches; `updateSeparations`: each batch first brings its separations up to date
@@ -242,6 +231,8 @@ private:
     void LoadBody(const RigidbodyVolume& body, const StepContext& ctx, bool awake, std::size_t i);
     void Collide(const std::vector<RigidbodyVolume*>& volumes, const std::vector<std::pair<int, int>>& candidates,
                  const StepContext& ctx, bool carryOver);
+    /// Warm start: contact c (its id set) takes the impulse of old's contact with the same feature id, if any.
+    void Inherit(const Pair& old, const Pair& pair, float warmStartFactor, Contact* c);
     void Prepare(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx);
     // The two per-body loops of a substep: each lives here only.
     void IntegrateVelocities(const StepContext& ctx, const Block& block);
@@ -264,17 +255,11 @@ private:
     std::vector<BodySim> sim;
     std::vector<Pair> pairs, previousPairs;
     std::vector<Contact> contacts, previousContacts;
-    std::vector<ContactManifold> manifolds;  // Collide: one per candidate pair, capacity reused
-    std::vector<Block> blocks;
-    std::vector<int> blockBodies;         // moving bodies, block by block, in index order (BlockBodies)
-    std::vector<int> islandParent;        // per body: union-find parent over the pairs (BuildBlocks)
-    std::vector<int> islandPairs;         // per island root: its pair count, then its block
-    std::vector<std::size_t> blockStart;  // per block: where its bodies (then its pairs) start
-    std::vector<int> blockPairList;       // pair indices, block by block, in pair order
-    std::vector<WideBatch> batches;
-    std::vector<int> overflow;               // pair indices solved one by one after a block's batches
-    std::vector<std::uint32_t> bodyColours;  // per body: the colours it has this step (bit c)
-    std::vector<int> colourPairs[kColours];  // pair indices of each colour, in pair order
+    std::vector<ContactManifold> manifolds;     // Collide: one per candidate pair, capacity reused
+    std::vector<std::pair<int, int>> pairEnds;  // per pair: its bodies (a, b), the graph's input
+    std::vector<unsigned char> moving;          // per body: it moves this step (BodySim::dynamic), the graph's input
+    SoftContactGraph graph;                     // blocks, colours and batches of the pairs
+    std::vector<WideBatch> batches;             // the graph's batches, filled
     std::vector<ShockPoint> shockPoints;
     std::vector<std::size_t> shockBlockStart;  // per block: its first shock point (one more entry at the end)
     std::vector<int> bodyLayer, bodyBlock, layerQueue, adjacencyStart, adjacency;  // BuildShock's scratch

@@ -42,6 +42,8 @@ void SoftContactSolver::BuildShock(const StepContext& ctx) {
     shockBlockStart.clear();
     const float ratio = ctx.settings.soft.shockMassRatio;
     if (!(ratio > 0.0f) || pairs.empty()) return;
+    const std::vector<Block>& blocks = graph.Blocks();
+    const std::vector<int>& blockBodies = graph.BlockBodies();
     // Which blocks reach the ratio (largest over smallest dynamic mass), and each moving body's block.
     const std::size_t n = state.size();
     bodyBlock.assign(n, -1);

@@ -1,0 +1,225 @@
+// ContactSolver::Soft, the four-wide path (docs/ch15.md, "Graph colouring"): the pairs of one batch (one colour of
+// the contact graph, SoftSolverGraph.h: no moving body twice) are solved together, one per lane, with the equations
+// of SoftContactKernel.h, the same the scalar path uses, so a lane gives the scalar path's bits.
+#include <algorithm>
+#include <cstddef>
+#include <cstring>
+
+#include "Physics/JobPool.h"
+#include "Physics/SoftContactKernel.h"
+#include "Physics/SoftSolver.h"
+
+using namespace softkernel;
+
+namespace {
+
+/// Batches per job of BuildBatches: fixed, never derived from the thread count (docs/threads.md).
+constexpr std::size_t kBatchChunk = 64;
+
+using WideBatch = SoftContactSolver::WideBatch;
+using WidePoint = SoftContactSolver::WidePoint;
+
+static_assert(sizeof(vec3) == 12 && offsetof(SoftContactSolver::BodyState, v) == 0 &&
+                  offsetof(SoftContactSolver::BodyState, w) == 16 && offsetof(SoftContactSolver::BodyState, dp) == 32,
+              "BodyState's v, w and dp must each fill 16 bytes with their padding (Load4, Scatter)");
+
+/// The lanes' body velocities (zero for an empty lane).
+WideVelocities Gather(const std::vector<SoftContactSolver::BodyState>& state, const WideBatch& batch) {
+    const Float4 zero = Wide(0.0f);
+    Float4 vA[4], wA[4], vB[4], wB[4];
+    for (int lane = 0; lane < 4; ++lane) {
+        if (batch.pair[lane] < 0) {
+            vA[lane] = wA[lane] = vB[lane] = wB[lane] = zero;
+            continue;
+        }
+        const SoftContactSolver::BodyState& A = state[static_cast<std::size_t>(batch.a[lane])];
+        const SoftContactSolver::BodyState& B = state[static_cast<std::size_t>(batch.b[lane])];
+        vA[lane] = Load4(A.v);
+        wA[lane] = Load4(A.w);
+        vB[lane] = Load4(B.v);
+        wB[lane] = Load4(B.w);
+    }
+    return {Transpose(vA[0], vA[1], vA[2], vA[3]), Transpose(wA[0], wA[1], wA[2], wA[3]),
+            Transpose(vB[0], vB[1], vB[2], vB[3]), Transpose(wB[0], wB[1], wB[2], wB[3])};
+}
+
+/// Writes the lanes' velocities back to their moving bodies (static and sleeping ones are never written).
+void Scatter(std::vector<SoftContactSolver::BodyState>& state, const WideBatch& batch, const WideVelocities& s) {
+    Float4 vA[4], wA[4], vB[4], wB[4];
+    Untranspose(s.vA, vA);
+    Untranspose(s.wA, wA);
+    Untranspose(s.vB, vB);
+    Untranspose(s.wB, wB);
+    for (int lane = 0; lane < 4; ++lane) {
+        if ((batch.movesA >> lane & 1u) != 0u) {
+            SoftContactSolver::BodyState& A = state[static_cast<std::size_t>(batch.a[lane])];
+            std::memcpy(&A.v.x, &vA[lane], sizeof(Float4));
+            std::memcpy(&A.w.x, &wA[lane], sizeof(Float4));
+        }
+        if ((batch.movesB >> lane & 1u) != 0u) {
+            SoftContactSolver::BodyState& B = state[static_cast<std::size_t>(batch.b[lane])];
+            std::memcpy(&B.v.x, &vB[lane], sizeof(Float4));
+            std::memcpy(&B.w.x, &wB[lane], sizeof(Float4));
+        }
+    }
+}
+
+}  // namespace
+
+void SoftContactSolver::BuildBatches(const Softness& softness, const Softness& staticSoftness, JobPool* jobs) {
+    const std::vector<SoftContactGraph::Batch>& lanes = graph.Batches();
+    // Each batch is filled from its own lanes only, so chunks of batches run on the step's threads; a slot kept from
+    // the last step is cleared by its own job (every lane and point zero, as a new one is).
+    batches.resize(lanes.size());
+    ForEachChunk(jobs, lanes.size(), kBatchChunk, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+            batches[k] = WideBatch();
+            FillBatch(lanes[k], softness, staticSoftness, &batches[k]);
+        }
+    });
+}
+
+void SoftContactSolver::FillBatch(const SoftContactGraph::Batch& lanes, const Softness& softness,
+                                  const Softness& staticSoftness, WideBatch* out) {
+    WideBatch& batch = *out;
+    batch.colour = lanes.colour;
+    Vec4x3 IA[3] = {}, IB[3] = {};  // the lanes' world inverse inertias, by rows
+    Mask4 valid[4] = {};            // point k of lane l exists
+    for (int lane = 0; lane < 4; ++lane) {
+        batch.pair[lane] = batch.a[lane] = batch.b[lane] = -1;
+        const int index = lanes.pair[lane];
+        if (index < 0) continue;
+        const Pair& pair = pairs[static_cast<std::size_t>(index)];
+        batch.pair[lane] = index;
+        batch.a[lane] = pair.a;
+        batch.b[lane] = pair.b;
+        if (sim[pair.a].dynamic) batch.movesA |= static_cast<std::uint8_t>(1u << lane);
+        if (sim[pair.b].dynamic) batch.movesB |= static_cast<std::uint8_t>(1u << lane);
+        SetLane(&batch.n, lane, pair.n);
+        SetLane(&batch.t1, lane, pair.t1);
+        SetLane(&batch.t2, lane, pair.t2);
+        batch.invMassA[lane] = sim[pair.a].invMass;
+        batch.invMassB[lane] = sim[pair.b].invMass;
+        batch.friction[lane] = pair.friction;
+        const Softness& soft = pair.touchesStatic ? staticSoftness : softness;
+        batch.biasRate[lane] = soft.biasRate;
+        batch.massScale[lane] = soft.massScale;
+        batch.impulseScale[lane] = soft.impulseScale;
+        batch.pointCount = std::max(batch.pointCount, static_cast<int>(pair.count));
+        for (std::size_t k = 0; k < pair.count; ++k) {
+            const Contact& c = contacts[pair.first + k];
+            WidePoint& p = batch.points[k];
+            SetLane(&p.rA, lane, c.rA);
+            SetLane(&p.rB, lane, c.rB);
+            p.normal.impulse[lane] = c.normal.impulse;  // the warm start Collide matched
+            p.support[lane] = c.support;
+            p.tangent1.impulse[lane] = c.tangent1.impulse;
+            p.tangent2.impulse[lane] = c.tangent2.impulse;
+            p.baseSeparation[lane] = c.separation;  // minus n . (rB - rA) below
+            valid[k][lane] = -1;
+        }
+        const auto& iA = sim[pair.a].invI;
+        const auto& iB = sim[pair.b].invI;
+        for (int r = 0; r < 3; ++r) {
+            SetLane(&IA[r], lane, vec3(iA[r][0], iA[r][1], iA[r][2]));
+            SetLane(&IB[r], lane, vec3(iB[r][0], iB[r][1], iB[r][2]));
+        }
+    }
+    // PreparePair four wide: rows, base separation, normal speed before solving.
+    const Float4 invSum = batch.invMassA + batch.invMassB;
+    const WideVelocities bodies = Gather(state, batch);
+    for (int k = 0; k < batch.pointCount; ++k) {
+        WidePoint& p = batch.points[k];
+        MakeRow(p.rA, p.rB, batch.n, invSum, IA, IB, valid[k], &p.normal);
+        MakeRow(p.rA, p.rB, batch.t1, invSum, IA, IB, valid[k], &p.tangent1);
+        MakeRow(p.rA, p.rB, batch.t2, invSum, IA, IB, valid[k], &p.tangent2);
+        p.baseSeparation = p.baseSeparation - Dot(Sub(p.rB, p.rA), batch.n);
+        p.relativeVelocity = RowSpeed(bodies, batch.n, p.normal);
+        p.maxNormalImpulse = Wide(0.0f);
+    }
+}
+
+void SoftContactSolver::UpdateBatchSeparations(WideBatch& batch) const {
+    // UpdatePairSeparations four wide: s = s_base + n . ((dpB - dpA) + rB dRB - rA dRA), rows of dR as vectors.
+    // The lanes' dp and dR rows, each a padded 16-byte row of BodyState, transposed (an empty lane: zeros).
+    const Float4 zero = Wide(0.0f);
+    Float4 rows[2][4][4];  // [A, B][dp, dR row 0, 1, 2][lane]
+    for (int lane = 0; lane < 4; ++lane) {
+        if (batch.pair[lane] < 0) {
+            for (auto& body : rows)
+                for (auto& row : body) row[lane] = zero;
+            continue;
+        }
+        const BodyState* bodies[2] = {&state[static_cast<std::size_t>(batch.a[lane])],
+                                      &state[static_cast<std::size_t>(batch.b[lane])]};
+        for (int i = 0; i < 2; ++i) {
+            rows[i][0][lane] = Load4(bodies[i]->dp);
+            for (int r = 0; r < 3; ++r) std::memcpy(&rows[i][r + 1][lane], bodies[i]->dR[r], sizeof(Float4));
+        }
+    }
+    auto lanes = [&rows](int body, int row) {
+        const Float4(&r)[4] = rows[body][row];
+        return Transpose(r[0], r[1], r[2], r[3]);
+    };
+    const Vec4x3 RA[3] = {lanes(0, 1), lanes(0, 2), lanes(0, 3)};
+    const Vec4x3 RB[3] = {lanes(1, 1), lanes(1, 2), lanes(1, 3)};
+    const Vec4x3 dp = Sub(lanes(1, 0), lanes(0, 0));
+    for (int k = 0; k < batch.pointCount; ++k) {
+        WidePoint& p = batch.points[k];
+        const Vec4x3 d = Sub(Add(dp, Mul(p.rB, RB)), Mul(p.rA, RA));
+        p.current = Dot(d, batch.n) + p.baseSeparation;
+    }
+}
+
+void SoftContactSolver::WideWarmStart(const Block& block) {
+    for (std::size_t b = block.batchBegin; b < block.batchEnd; ++b) {
+        const WideBatch& batch = batches[b];
+        WideVelocities s = Gather(state, batch);
+        for (int k = 0; k < batch.pointCount; ++k)
+            WarmStartPoint(s, batch.invMassA, batch.invMassB, batch.n, batch.t1, batch.t2, batch.points[k]);
+        Scatter(state, batch, s);
+    }
+}
+
+void SoftContactSolver::WideSolve(const Block& block, float invH, float maxPushout, float slop, bool useBias,
+                                  bool updateSeparations) {
+    const PassLanes<Float4> pass = {Wide(invH), Wide(slop), Wide(-maxPushout)};
+    for (std::size_t b = block.batchBegin; b < block.batchEnd; ++b) {
+        WideBatch& batch = batches[b];
+        if (updateSeparations) UpdateBatchSeparations(batch);
+        WideVelocities s = Gather(state, batch);
+        // Friction in the relax pass only, and before the normal rows, as in SolvePair.
+        if (!useBias)
+            for (int k = 0; k < batch.pointCount; ++k)
+                SolveFriction(s, batch.invMassA, batch.invMassB, batch.t1, batch.t2, batch.friction, batch.points[k]);
+        for (int k = 0; k < batch.pointCount; ++k)
+            SolveNormal(s, batch.invMassA, batch.invMassB, batch.n, batch, pass, useBias, batch.points[k]);
+        Scatter(state, batch, s);
+    }
+}
+
+void SoftContactSolver::StoreBatchImpulses() {
+    for (const WideBatch& batch : batches) {
+        for (int lane = 0; lane < 4; ++lane) {
+            if (batch.pair[lane] < 0) continue;
+            const Pair& pair = pairs[static_cast<std::size_t>(batch.pair[lane])];
+            for (std::size_t k = 0; k < pair.count; ++k) {
+                const WidePoint& p = batch.points[k];
+                Contact& c = contacts[pair.first + k];
+                c.normal.impulse = p.normal.impulse[lane];
+                c.tangent1.impulse = p.tangent1.impulse[lane];
+                c.tangent2.impulse = p.tangent2.impulse[lane];
+                c.current = p.current[lane];
+                c.relativeVelocity = p.relativeVelocity[lane];
+                c.maxNormalImpulse = p.maxNormalImpulse[lane];
+                if (pair.restitution != 0.0f) {  // ApplyRestitution solves the normal row once more
+                    c.normal.rAxD = Lane(p.normal.rAxD, lane);
+                    c.normal.rBxD = Lane(p.normal.rBxD, lane);
+                    c.normal.iArAxD = Lane(p.normal.iArAxD, lane);
+                    c.normal.iBrBxD = Lane(p.normal.iBrBxD, lane);
+                    c.normal.mass = p.normal.mass[lane];
+                }
+            }
+        }
+    }
+}
