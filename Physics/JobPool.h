@@ -74,14 +74,20 @@ void SetDefaultThreadCount(int threads);
 /// Number of chunks of `chunk` items that cover n items (0 for n = 0).
 inline std::size_t ChunkCount(std::size_t n, std::size_t chunk) { return (n + chunk - 1) / chunk; }
 
+/// Runs job(i) for every i in [0, count): on the threads of `jobs`, or in order on this thread when it is null.
+template <typename Job>
+void ForEachJob(JobPool* jobs, std::size_t count, Job&& job) {
+    if (jobs == nullptr) {
+        for (std::size_t i = 0; i < count; ++i) job(i);
+    } else {
+        jobs->ForEach(count, job);
+    }
+}
+
 /// Runs range(begin, end) for the consecutive chunks of `chunk` items (> 0) that cover [0, n): on the threads of
 /// `jobs`, or in order on this thread when it is null. The chunks depend on n and chunk only.
 template <typename Range>
 void ForEachChunk(JobPool* jobs, std::size_t n, std::size_t chunk, Range&& range) {
-    auto run = [&](std::size_t c) { range(c * chunk, c * chunk + chunk < n ? c * chunk + chunk : n); };
-    if (jobs == nullptr) {
-        for (std::size_t c = 0; c < ChunkCount(n, chunk); ++c) run(c);
-    } else {
-        jobs->ForEach(ChunkCount(n, chunk), run);
-    }
+    ForEachJob(jobs, ChunkCount(n, chunk),
+               [&](std::size_t c) { range(c * chunk, c * chunk + chunk < n ? c * chunk + chunk : n); });
 }

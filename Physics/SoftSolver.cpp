@@ -16,10 +16,8 @@ using namespace softkernel;
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
-/// Items per job of the per-body loops and of the manifolds: fixed, never derived from the thread count
-/// (docs/threads.md).
+/// Bodies per job of the per-body loops: fixed, never derived from the thread count (docs/threads.md).
 constexpr std::size_t kBodyChunk = 512;
-constexpr std::size_t kCandidateChunk = 128;
 
 /// v M in the row-vector convention (MultiplyVector), inline for the solver's inner loops.
 inline vec3 Mul(const vec3& v, const mat3& m) {
@@ -38,36 +36,6 @@ inline quat SmallTurn(const quat& q, const vec3& w, float h, float x2) {
     const float k = 0.5f * h * (1.0f - x2 / 6.0f * (1.0f - x2 / 20.0f * (1.0f - x2 / 42.0f)));  // (h / 2) sin x / x
     const float c = 1.0f - x2 / 2.0f * (1.0f - x2 / 12.0f * (1.0f - x2 / 30.0f * (1.0f - x2 / 56.0f)));  // cos x
     return Normalized(quat(w.x * k, w.y * k, w.z * k, c) * q);
-}
-
-/// Orthonormal t1, t2 with n x t1 = t2, a fixed function of n (the same normal gives the same basis every step).
-void TangentBasis(const vec3& n, vec3* t1, vec3* t2) {
-    vec3 t = std::fabs(n.x) >= 0.57735f ? vec3(n.y, -n.x, 0.0f) : vec3(0.0f, n.z, -n.y);
-    t = t * (1.0f / std::sqrt(MagnitudeSq(t)));
-    *t1 = t;
-    *t2 = Cross(n, t);
-}
-
-/// Pairs of static bodies never move, so they are never tested.
-bool CanInteract(const RigidbodyVolume& a, const RigidbodyVolume& b) {
-    return a.HasVolume() && b.HasVolume() && (a.mass > 0.0f || b.mass > 0.0f);
-}
-
-/// Solver manifold of any sphere/box pair, normal from a to b (the sphere-box case is swapped and flipped).
-void CollideVolumes(const RigidbodyVolume& a, const RigidbodyVolume& b, float margin, ContactManifold* out) {
-    out->pointCount = 0;
-    const bool sphereA = a.type == RigidbodyType::Sphere;
-    const bool sphereB = b.type == RigidbodyType::Sphere;
-    if (sphereA && sphereB) {
-        CollideSpheres(a.sphere, b.sphere, margin, out);
-    } else if (sphereA) {
-        CollideBoxSphere(b.box, a.sphere, margin, out);
-        out->normal = -out->normal;
-    } else if (sphereB) {
-        CollideBoxSphere(a.box, b.sphere, margin, out);
-    } else {
-        CollideBoxes(a.box, b.box, margin, out);
-    }
 }
 
 /// A pair's velocities back to its moving bodies only. A static or sleeping body keeps its zero velocities (a pass
@@ -171,11 +139,7 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
             if (!shockPoints.empty()) ShockPass(b, ctx.invH, 0.0f, 0.0f, soft.linearSlop);
         }
     };
-    if (ctx.jobs != nullptr) {
-        ctx.jobs->ForEach(blocks.size(), solveBlock);
-    } else {
-        for (std::size_t b = 0; b < blocks.size(); ++b) solveBlock(b);
-    }
+    ForEachJob(ctx.jobs, blocks.size(), solveBlock);
     StoreBatchImpulses();  // the batches' impulses back to the contacts (none without colouring)
     ApplyRestitution(soft.restitutionThreshold);
     StoreBodies(volumes, ctx.jobs);
@@ -249,89 +213,29 @@ void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
         previousPairs.clear();
         previousContacts.clear();
     }
+    // In chunks of candidates on the step's threads (SoftSolverCollide.cpp): every candidate's manifold into its own
+    // slot, counting each chunk's pairs and points; then each chunk's pairs and contacts at the place the counts
+    // give, so they are in candidate order, as one loop over the candidates makes them.
+    const std::size_t chunks = ChunkCount(candidates.size(), kCandidateChunk);
+    manifolds.resize(candidates.size());
+    chunkCounts.assign(chunks, ChunkCounts());
+    ForEachJob(ctx.jobs, chunks, [&](std::size_t c) { FindManifolds(volumes, candidates, ctx, c); });
+    std::size_t pairCount = 0, contactCount = 0;
+    for (ChunkCounts& counts : chunkCounts) {
+        counts.firstPair = pairCount;
+        counts.firstContact = contactCount;
+        pairCount += counts.pairs;
+        contactCount += counts.contacts;
+    }
+    pairs.resize(pairCount);
+    pairEnds.resize(pairCount);
+    contacts.resize(contactCount);
+    ForEachJob(ctx.jobs, chunks, [&](std::size_t c) { MakePairs(volumes, candidates, ctx, c); });
+    // The warm start's totals, summed in contact order (an unmatched contact adds its zero impulse: no change).
     warmStarted = 0;
     inheritedNormal = 0.0f;
-    const SoftSolverSettings& soft = ctx.settings.soft;
-    std::size_t cursor = 0;  // previousPairs is in the same increasing (a, b) order as the candidates
-    // Every candidate's manifold first, each into its own slot, in fixed chunks on the step's threads; then the
-    // pairs and contacts from them in candidate order, as one loop over the candidates would make them.
-    manifolds.resize(candidates.size());
-    ForEachChunk(ctx.jobs, candidates.size(), kCandidateChunk, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t k = begin; k < end; ++k) {
-            const std::pair<int, int>& candidate = candidates[k];
-            const RigidbodyVolume& A = *volumes[candidate.first];
-            const RigidbodyVolume& B = *volumes[candidate.second];
-            manifolds[k].pointCount = 0;
-            if (!CanInteract(A, B)) continue;
-            // Speculative margin plus the distance the pair can close this step, so a fast body meets the surface
-            // in the substep it reaches it instead of being pushed out from inside.
-            const float closing = std::sqrt(MagnitudeSq(state[candidate.second].v - state[candidate.first].v));
-            CollideVolumes(A, B, soft.speculativeMargin + closing * ctx.dt, &manifolds[k]);
-        }
-    });
-    for (std::size_t at = 0; at < candidates.size(); ++at) {
-        const ContactManifold& manifold = manifolds[at];
-        if (manifold.pointCount <= 0) continue;
-        const std::pair<int, int>& candidate = candidates[at];
-        const RigidbodyVolume& A = *volumes[candidate.first];
-        const RigidbodyVolume& B = *volumes[candidate.second];
-
-        Pair pair;
-        pair.a = candidate.first;
-        pair.b = candidate.second;
-        pair.bodyA = &A;
-        pair.bodyB = &B;
-        pair.n = Normalized(manifold.normal);
-        TangentBasis(pair.n, &pair.t1, &pair.t2);
-        pair.friction = std::sqrt(A.friction * B.friction);  // book §15: mu = sqrt(muA muB)
-        pair.restitution = std::fmin(A.cor, B.cor);          // book: the smaller cor
-        pair.touchesStatic = !(A.mass > 0.0f) || !(B.mass > 0.0f);
-        pair.first = contacts.size();
-        pair.count = static_cast<std::size_t>(std::min(manifold.pointCount, kMaxManifoldPoints));
-
-        // The same pair last step (same indices, same bodies): its contacts are matched by feature id.
-        const Pair* old = nullptr;
-        while (cursor < previousPairs.size() &&
-               (previousPairs[cursor].a < pair.a ||
-                (previousPairs[cursor].a == pair.a && previousPairs[cursor].b < pair.b)))
-            ++cursor;
-        if (cursor < previousPairs.size() && previousPairs[cursor].a == pair.a && previousPairs[cursor].b == pair.b &&
-            previousPairs[cursor].bodyA == &A && previousPairs[cursor].bodyB == &B)
-            old = &previousPairs[cursor];
-
-        for (std::size_t k = 0; k < pair.count; ++k) {
-            const ManifoldPoint& mp = manifold.points[k];
-            contacts.emplace_back();  // built in place: the copy of a whole Contact showed in the profile
-            Contact& c = contacts.back();
-            c.rA = mp.point - sim[pair.a].p;
-            c.rB = mp.point - sim[pair.b].p;
-            c.separation = mp.separation;
-            c.id = mp.id;
-            if (old != nullptr) Inherit(*old, pair, soft.warmStartFactor, &c);
-        }
-        pairs.push_back(pair);
-        pairEnds.emplace_back(pair.a, pair.b);
-    }
-}
-
-void SoftContactSolver::Inherit(const Pair& old, const Pair& pair, float warmStartFactor, Contact* c) {
-    const Contact* match = nullptr;
-    for (std::size_t j = old.first; j < old.first + old.count; ++j)
-        if (previousContacts[j].id == c->id) {
-            match = &previousContacts[j];
-            break;
-        }
-    if (match == nullptr) return;
-    const Contact& o = *match;
-    // Last step's total re-expressed in this step's basis, so a slowly turning normal keeps most.
-    const vec3 P =
-        (old.n * o.normal.impulse + old.t1 * o.tangent1.impulse + old.t2 * o.tangent2.impulse) * warmStartFactor;
-    c->normal.impulse = std::fmax(Dot(P, pair.n), 0.0f);
-    c->support = c->normal.impulse;
-    c->tangent1.impulse = Dot(P, pair.t1);
-    c->tangent2.impulse = Dot(P, pair.t2);
-    inheritedNormal += c->normal.impulse;
-    ++warmStarted;
+    for (const ChunkCounts& counts : chunkCounts) warmStarted += counts.matched;
+    for (const Contact& c : contacts) inheritedNormal += c.normal.impulse;
 }
 
 void SoftContactSolver::Prepare(const std::vector<RigidbodyVolume*>& /*volumes*/, const StepContext& /*ctx*/) {

@@ -231,8 +231,21 @@ private:
     void LoadBody(const RigidbodyVolume& body, const StepContext& ctx, bool awake, std::size_t i);
     void Collide(const std::vector<RigidbodyVolume*>& volumes, const std::vector<std::pair<int, int>>& candidates,
                  const StepContext& ctx, bool carryOver);
-    /// Warm start: contact c (its id set) takes the impulse of old's contact with the same feature id, if any.
-    void Inherit(const Pair& old, const Pair& pair, float warmStartFactor, Contact* c);
+    /// Warm start: contact c (its id set) takes the impulse of old's contact with the same feature id, if any
+    /// (true then).
+    bool Inherit(const Pair& old, const Pair& pair, float warmStartFactor, Contact* c) const;
+    // Collide's two passes over chunk `chunk` of kCandidateChunk candidates (SoftSolverCollide.cpp): the manifolds,
+    // counted in chunkCounts; then the chunk's pairs and contacts from its first slots on.
+    void FindManifolds(const std::vector<RigidbodyVolume*>& volumes, const std::vector<std::pair<int, int>>& candidates,
+                       const StepContext& ctx, std::size_t chunk);
+    void MakePairs(const std::vector<RigidbodyVolume*>& volumes, const std::vector<std::pair<int, int>>& candidates,
+                   const StepContext& ctx, std::size_t chunk);
+    /// Candidates per job of Collide: fixed, never derived from the thread count (docs/threads.md).
+    static constexpr std::size_t kCandidateChunk = 128;
+    struct ChunkCounts {
+        std::size_t pairs = 0, contacts = 0, matched = 0;  // touching pairs, their points, points warm started
+        std::size_t firstPair = 0, firstContact = 0;       // where the chunk's pairs and contacts start
+    };
     void Prepare(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx);
     // The two per-body loops of a substep: each lives here only.
     void IntegrateVelocities(const StepContext& ctx, const Block& block);
@@ -256,6 +269,7 @@ private:
     std::vector<Pair> pairs, previousPairs;
     std::vector<Contact> contacts, previousContacts;
     std::vector<ContactManifold> manifolds;     // Collide: one per candidate pair, capacity reused
+    std::vector<ChunkCounts> chunkCounts;       // Collide: one per chunk of candidates
     std::vector<std::pair<int, int>> pairEnds;  // per pair: its bodies (a, b), the graph's input
     std::vector<unsigned char> moving;          // per body: it moves this step (BodySim::dynamic), the graph's input
     SoftContactGraph graph;                     // blocks, colours and batches of the pairs
