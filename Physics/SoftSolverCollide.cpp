@@ -117,7 +117,8 @@ void SoftContactSolver::MakePairs(const std::vector<RigidbodyVolume*>& volumes,
 
         for (std::size_t k = 0; k < pair.count; ++k) {
             const ManifoldPoint& mp = manifold.points[k];
-            Contact& c = contacts[nextContact++];  // value-initialised by the resize
+            Contact& c = contacts[nextContact++];
+            c = Contact();
             c.rA = mp.point - sim[pair.a].p;
             c.rB = mp.point - sim[pair.b].p;
             c.separation = mp.separation;

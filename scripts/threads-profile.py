@@ -5,7 +5,8 @@ do not depend on what else the machine is doing), collecting only inside Physics
 one thread there: every chunked pass then runs inside JobPool::Run, inline. Writes the table and the Amdahl bounds
 between the markers in docs/threads.md.
 
-Usage: threads-profile.py BUILD_DIR [N] [STEPS]   (defaults: boxpile 4000, 120 steps)
+Usage: threads-profile.py BUILD_DIR [N] [STEPS] [--reuse]   (defaults: boxpile 4000, 120 steps; --reuse: read
+BUILD_DIR/threads-profile.callgrind from the last run instead of running again)
 """
 import os
 import re
@@ -61,7 +62,8 @@ def inclusive_and_callers(out):
 
 
 def find(table, prefix):
-    return sum(v for k, v in table.items() if k.startswith(prefix))
+    """Inclusive Ir of the functions named `prefix...`, not of the lambdas defined inside them."""
+    return sum(v for k, v in table.items() if k.startswith(prefix) and "{lambda" not in k)
 
 
 def run_inside(edges, prefix):
@@ -75,7 +77,8 @@ def main():
     n = int(sys.argv[2]) if len(sys.argv) > 2 else 4000
     steps = int(sys.argv[3]) if len(sys.argv) > 3 else 120
     out = os.path.join(build, "threads-profile.callgrind")
-    run_callgrind(build, n, steps, out)
+    if "--reuse" not in sys.argv:
+        run_callgrind(build, n, steps, out)
     inclusive, edges = inclusive_and_callers(out)
     total = find(inclusive, "PhysicsSystem::Update(")
     step = find(inclusive, "SoftContactSolver::Step(")
@@ -88,8 +91,9 @@ def main():
         else:
             ir = find(inclusive, prefix)
             # Chunks run from the function itself or from the helpers it calls (the grid, the cell scan).
+            # The cell scan runs its buckets directly on one thread and in chunks on more (PairsInCells).
             par = run_inside(edges, prefix) + (run_inside(edges, "Broadphase::BuildGrid(") +
-                                               run_inside(edges, "Broadphase::PairsInCells(")
+                                               find(inclusive, "Broadphase::PairsInBuckets(")
                                                if prefix.startswith("Broadphase") else 0)
         named += ir if not prefix or not prefix.startswith("Broadphase") else 0
         rows.append((label, ir, par))
