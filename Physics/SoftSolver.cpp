@@ -159,45 +159,43 @@ void SoftContactSolver::LoadBodies(const std::vector<RigidbodyVolume*>& volumes,
 }
 
 void SoftContactSolver::LoadBody(const RigidbodyVolume& body, const StepContext& ctx, bool awake, std::size_t i) {
-    {
-        BodyState& st = state[i];
-        BodySim& bs = sim[i];
-        // A sleeping body (active[i] == 0) is held like a static one and StoreBodies leaves it untouched.
-        bs.dynamic = body.HasVolume() && body.mass > 0.0f && awake;
-        moving[i] = bs.dynamic ? 1 : 0;
-        bs.p = body.position;
-        bs.q = body.orientation;
-        bs.q0 = body.orientation;
-        st = BodyState();
-        if (!bs.dynamic) {
-            // Static bodies are immovable here: no velocity, never integrated.
-            st.v = vec3();
-            st.w = vec3();
-            bs.invMass = 0.0f;
-            for (auto& row : bs.invI)
-                for (float& f : row) f = 0.0f;
-            bs.gravity = vec3();
-            bs.angularAccel = vec3();
-            bs.retention = 1.0f;
-            bs.epsilon = 0.0f;
-            return;
-        }
-        st.v = body.velocity;
-        st.w = body.angVel;
-        bs.invMass = body.InvMass();
-        const mat3 invI = body.InvTensor();
-        for (int r = 0; r < 3; ++r) {
-            for (int k = 0; k < 3; ++k) bs.invI[r][k] = invI[r][k];
-            bs.invI[r][3] = 0.0f;
-        }
-        bs.inertia = body.LocalInertia();
-        bs.isotropic = bs.inertia.x == bs.inertia.y && bs.inertia.y == bs.inertia.z;
-        // The book's force model: forces = gravity * mass (ApplyForces), plus any torque the body carries.
-        bs.gravity = body.gravity;
-        bs.angularAccel = Mul(body.torques, invI);
-        bs.retention = body.StepRetention(ctx.h);
-        bs.epsilon = body.StepVelocityEpsilon(ctx.h);
+    BodyState& st = state[i];
+    BodySim& bs = sim[i];
+    // A sleeping body (active[i] == 0) is held like a static one and StoreBodies leaves it untouched.
+    bs.dynamic = body.HasVolume() && body.mass > 0.0f && awake;
+    moving[i] = bs.dynamic ? 1 : 0;
+    bs.p = body.position;
+    bs.q = body.orientation;
+    bs.q0 = body.orientation;
+    st = BodyState();
+    if (!bs.dynamic) {
+        // Static bodies are immovable here: no velocity, never integrated.
+        st.v = vec3();
+        st.w = vec3();
+        bs.invMass = 0.0f;
+        for (auto& row : bs.invI)
+            for (float& f : row) f = 0.0f;
+        bs.gravity = vec3();
+        bs.angularAccel = vec3();
+        bs.retention = 1.0f;
+        bs.epsilon = 0.0f;
+        return;
     }
+    st.v = body.velocity;
+    st.w = body.angVel;
+    bs.invMass = body.InvMass();
+    const mat3 invI = body.InvTensor();
+    for (int r = 0; r < 3; ++r) {
+        for (int k = 0; k < 3; ++k) bs.invI[r][k] = invI[r][k];
+        bs.invI[r][3] = 0.0f;
+    }
+    bs.inertia = body.LocalInertia();
+    bs.isotropic = bs.inertia.x == bs.inertia.y && bs.inertia.y == bs.inertia.z;
+    // The book's force model: forces = gravity * mass (ApplyForces), plus any torque the body carries.
+    bs.gravity = body.gravity;
+    bs.angularAccel = Mul(body.torques, invI);
+    bs.retention = body.StepRetention(ctx.h);
+    bs.epsilon = body.StepVelocityEpsilon(ctx.h);
 }
 
 void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
