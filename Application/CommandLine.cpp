@@ -169,6 +169,10 @@ const Flag kFlags[] = {
      [](Options& o, const FlagValue& v) { o.progressEvery = int(v.integer); }},
     {"--quiet", "", ValueType::None, 0, 0, "no progress line and no summary",
      [](Options& o, const FlagValue&) { o.quiet = true; }},
+    {"--threads", "N", ValueType::Int, 1, 256,
+     "threads for the rigid-body step: pair search, manifolds and the soft solve (default: the hardware's "
+     "concurrency; 1 = one thread); every N gives the same bits (docs/threads.md)",
+     [](Options& o, const FlagValue& v) { o.threads = int(v.integer); }},
     {"--debug-nonfinite-at", "N", ValueType::Int, 0, kMaxFrames,
      "test hook: report frame N as non-finite (exercises exit code 3)",
      [](Options& o, const FlagValue& v) { o.debugNonFiniteAt = int(v.integer); }},
@@ -303,19 +307,13 @@ struct FlagScope {
 };
 
 constexpr FlagScope kScopes[] = {
-    {"--demo", true, true},
-    {"--set", true, true},
-    {"--quiet", true, true},
-    {"--window", true, false},
-    {"--frames", true, false},
-    {"--size", true, false},
-    {"--dt", true, false},
-    {"--no-ui", true, false},
-    {"--export-scene", false, true},
-    {"--camera-yaw", false, true},
-    {"--camera-pitch", false, true},
-    {"--camera-zoom", false, true},
-    {"--camera-target", false, true},
+    {"--demo", true, true},         {"--set", true, true},
+    {"--quiet", true, true},        {"--window", true, false},
+    {"--frames", true, false},      {"--size", true, false},
+    {"--dt", true, false},          {"--no-ui", true, false},
+    {"--threads", true, false},     {"--export-scene", false, true},
+    {"--camera-yaw", false, true},  {"--camera-pitch", false, true},
+    {"--camera-zoom", false, true}, {"--camera-target", false, true},
 };
 
 /// The first flag given that --window (window) or --export-scene (!window) would ignore, or nullptr.

@@ -55,6 +55,8 @@ struct Options {
     bool encodeThread = true;  ///< --serial-encode turns it off (same files, slower)
     int progressEvery = 0;     ///< 0 = automatic (see docs/app.md)
     bool quiet = false;
+    /// --threads: threads of every world's rigid-body step (SetDefaultThreadCount); 0 = the hardware's concurrency.
+    int threads = 0;
     /// Test hook: report frame N as non-finite (exercises the exit-3 path; DemoBase::StateIsFinite is the
     /// real check). -1 = off.
     int debugNonFiniteAt = -1;

@@ -12,6 +12,7 @@
 #include "Application/WindowedRunner.h"
 #endif
 #include "Demos/DemoRegistry.h"
+#include "Physics/JobPool.h"
 #include "Platform/Files/TempRegistry.h"
 
 namespace {
@@ -51,6 +52,7 @@ int RunCommandLine(int argc, const char* const* argv) {
         return kExitUsage;
     }
     for (const std::string& note : options.notes) std::fprintf(stderr, "physics-sandbox: %s\n", note.c_str());
+    SetDefaultThreadCount(options.threads);  // before any world steps; 0 keeps the hardware's concurrency
     if (options.mode == Options::Mode::Help) {
         std::fputs(UsageText().c_str(), stdout);
         return FinishStdout();

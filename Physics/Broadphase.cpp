@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "Physics/JobPool.h"
 #include "Physics/RigidbodyVolume.h"
 
 void VolumeBounds(const RigidbodyVolume& body, vec3* outMin, vec3* outMax) {
@@ -39,6 +40,18 @@ constexpr float kMaxCellSpan = 4.0f;
 /// share border cells instead of overflowing.
 constexpr int kCellBits = 21;
 constexpr float kCellLimit = static_cast<float>(1 << (kCellBits - 1));
+/// Bodies per job of the per-body loops, and hash buckets per job of the cell scan: fixed sizes, never derived
+/// from the thread count (docs/threads.md).
+constexpr std::size_t kBodyChunk = 512;
+constexpr std::size_t kBucketChunk = 2048;
+
+/// Runs body(i) for every i in [0, n), in chunks of kBodyChunk on `jobs` (in order on this thread without).
+template <typename Body>
+void ForEachBody(JobPool* jobs, int n, Body&& body) {
+    ForEachChunk(jobs, static_cast<std::size_t>(n), kBodyChunk, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) body(static_cast<int>(i));
+    });
+}
 
 /// Resizes *v to `size`, growing its capacity geometrically so a count that creeps up step by step does not
 /// reallocate every step.
@@ -72,7 +85,8 @@ bool Overlap(const B& a, const B& b) {
 }  // namespace
 
 bool Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::vector<std::pair<int, int>>* pairs,
-                           const unsigned char* active, float margin, float sweepTime, std::size_t maxPairs) {
+                           const unsigned char* active, float margin, float sweepTime, std::size_t maxPairs,
+                           JobPool* jobs) {
     pairs->clear();
     raw.clear();
     const int n = static_cast<int>(volumes.size());
@@ -86,7 +100,7 @@ bool Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::ve
     if (!anyMoving) return true;
     bodies.resize(static_cast<std::size_t>(n));
     cellRanges.resize(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) {
+    ForEachBody(jobs, n, [&](int i) {
         const RigidbodyVolume& volume = *volumes[static_cast<std::size_t>(i)];
         Body& body = bodies[static_cast<std::size_t>(i)];
         VolumeBounds(volume, &body.min, &body.max);
@@ -96,9 +110,9 @@ bool Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::ve
             body.max += vec3(grow, grow, grow);
         }
         body.moving = moves(i);
-    }
-    BuildGrid(n);
-    if (!PairsInCells(&raw, maxPairs) || !PairsWithWideBodies(n, &raw, maxPairs)) {
+    });
+    BuildGrid(n, jobs);
+    if (!PairsInCells(&raw, maxPairs, jobs) || !PairsWithWideBodies(n, &raw, maxPairs)) {
         raw.clear();
         return false;
     }
@@ -120,7 +134,7 @@ bool Broadphase::FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::ve
     return true;
 }
 
-void Broadphase::BuildGrid(int n) {
+void Broadphase::BuildGrid(int n, JobPool* jobs) {
     // Cell side: kCellScale times the median largest AABB side of the bodies with finite bounds (1 m if none
     // has a positive one), a pure function of the bounds.
     extents.clear();
@@ -141,27 +155,31 @@ void Broadphase::BuildGrid(int n) {
     // Cell ranges. Floor and clamp are monotonic, so two AABBs that overlap on an axis get cell ranges that
     // overlap there too. A body whose range is wider than kMaxCellSpan cells on an axis, inverted (min > max, from
     // a negative growth) or not finite (the test below fails for NaN and infinity) is compared with every body.
-    wide.clear();
-    std::size_t entryCount = 0;
-    for (int i = 0; i < n; ++i) {
+    cellCounts.resize(static_cast<std::size_t>(n));
+    ForEachBody(jobs, n, [&](int i) {
         Body& body = bodies[static_cast<std::size_t>(i)];
         body.wide = false;
         for (int k = 0; k < 3; ++k) {
             const float first = std::floor(body.min[k] * inverseCell), last = std::floor(body.max[k] * inverseCell);
             if (!(last - first >= 0.0f && last - first < kMaxCellSpan)) body.wide = true;
         }
-        if (body.wide) {
-            wide.push_back(i);
-            continue;
+        std::size_t cells = 0;
+        if (!body.wide) {
+            CellRange& range = cellRanges[static_cast<std::size_t>(i)];
+            cells = 1;
+            for (int k = 0; k < 3; ++k) {
+                range.min[k] = CellCoordinate(body.min[k], inverseCell);
+                range.max[k] = CellCoordinate(body.max[k], inverseCell);
+                cells *= static_cast<std::size_t>(range.max[k] - range.min[k] + 1);
+            }
         }
-        CellRange& range = cellRanges[static_cast<std::size_t>(i)];
-        std::size_t cells = 1;
-        for (int k = 0; k < 3; ++k) {
-            range.min[k] = CellCoordinate(body.min[k], inverseCell);
-            range.max[k] = CellCoordinate(body.max[k], inverseCell);
-            cells *= static_cast<std::size_t>(range.max[k] - range.min[k] + 1);
-        }
-        entryCount += cells;
+        cellCounts[static_cast<std::size_t>(i)] = cells;
+    });
+    wide.clear();
+    std::size_t entryCount = 0;
+    for (int i = 0; i < n; ++i) {
+        if (bodies[static_cast<std::size_t>(i)].wide) wide.push_back(i);
+        entryCount += cellCounts[static_cast<std::size_t>(i)];
     }
 
     // Counting sort of the (cell, body) entries by a hash of the cell, filled backwards so that each bucket lists
@@ -204,24 +222,46 @@ void Broadphase::BuildGrid(int n) {
     // bucketStart[b] is now the first entry of bucket b, bucketStart[bucketCount] the entry count.
 }
 
-bool Broadphase::PairsInCells(std::vector<std::pair<int, int>>* out, std::size_t maxPairs) const {
+bool Broadphase::PairsInCells(std::vector<std::pair<int, int>>* out, std::size_t maxPairs, JobPool* jobs) {
+    const std::size_t bucketCount = bucketStart.size() - 1;
+    std::atomic<std::size_t> found{out->size()};
+    if (jobs == nullptr || jobs->Threads() == 1) return PairsInBuckets(0, bucketCount, out, &found, maxPairs);
+    const std::size_t chunks = ChunkCount(bucketCount, kBucketChunk);
+    if (chunkPairs.size() < chunks) chunkPairs.resize(chunks);
+    std::atomic<bool> over{false};
+    jobs->ForEach(chunks, [&](std::size_t c) {
+        std::vector<std::pair<int, int>>& list = chunkPairs[c];
+        list.clear();
+        if (!PairsInBuckets(c * kBucketChunk, std::min(bucketCount, (c + 1) * kBucketChunk), &list, &found, maxPairs))
+            over.store(true, std::memory_order_relaxed);
+    });
+    if (over.load()) return false;
+    for (std::size_t c = 0; c < chunks; ++c) out->insert(out->end(), chunkPairs[c].begin(), chunkPairs[c].end());
+    return true;
+}
+
+bool Broadphase::PairsInBuckets(std::size_t begin, std::size_t end, std::vector<std::pair<int, int>>* out,
+                                std::atomic<std::size_t>* found, std::size_t maxPairs) const {
     // Two bodies sharing several cells are reported once, from the low corner of their common range: the cell
     // where, on every axis, one of the two ranges starts. With the moving bit, the two entries' flags together
-    // must have all four bits set.
-    const std::size_t bucketCount = bucketStart.size() - 1;
-    for (std::size_t b = 0; b < bucketCount; ++b) {
-        const int end = bucketStart[b + 1];
-        for (int p = bucketStart[b]; p < end; ++p) {
+    // must have all four bits set. `found` counts every chunk's pairs, bucket by bucket, so the search stops soon
+    // after the limit is passed in any chunk.
+    for (std::size_t b = begin; b < end; ++b) {
+        const std::size_t before = out->size();
+        const int last = bucketStart[b + 1];
+        for (int p = bucketStart[b]; p < last; ++p) {
             const CellEntry& ea = cellEntries[static_cast<std::size_t>(p)];
             const Body& a = bodies[static_cast<std::size_t>(ea.body)];
-            for (int q = p + 1; q < end; ++q) {
+            for (int q = p + 1; q < last; ++q) {
                 const CellEntry& eb = cellEntries[static_cast<std::size_t>(q)];
                 if ((ea.flags | eb.flags) != 15u || ea.key != eb.key) continue;
                 if (!Overlap(a, bodies[static_cast<std::size_t>(eb.body)])) continue;
                 out->emplace_back(ea.body, eb.body);
-                if (out->size() > maxPairs) return false;
+                if (out->size() - before > maxPairs) return false;
             }
         }
+        const std::size_t added = out->size() - before;
+        if (added > 0 && found->fetch_add(added, std::memory_order_relaxed) + added > maxPairs) return false;
     }
     return true;
 }

@@ -5,6 +5,7 @@
 // too many cells (a ground plate, a non-finite AABB) is kept out of the grid and compared with every body.
 // Small scenes never use it: PhysicsSystem tests all pairs below WorldSettings::broadphaseMinVolumes.
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -12,6 +13,7 @@
 
 #include "Physics/Geometry/Geometry3D.h"
 
+class JobPool;
 class RigidbodyVolume;
 
 /// World-space AABB of a sphere or box volume (min, max); a Base-type body gets an empty box at its position.
@@ -26,10 +28,11 @@ public:
     /// times `sweepTime` (s): the soft solver's speculative margin and the step's travel (both 0 test the bodies'
     /// own AABBs). The result depends only on the arguments (no state carries over between calls). Allocation-free
     /// once the capacities have grown. Returns false, with *pairs empty, once more than maxPairs pairs are found
-    /// (the search stops there, so memory stays within the limit).
+    /// (the search stops there, so memory stays within the limit). With `jobs`, the bounds, cell ranges and cell
+    /// scans run in fixed chunks on its threads; the pairs are the same for any thread count (docs/threads.md).
     bool FindPairs(const std::vector<RigidbodyVolume*>& volumes, std::vector<std::pair<int, int>>* pairs,
                    const unsigned char* active = nullptr, float margin = 0.0f, float sweepTime = 0.0f,
-                   std::size_t maxPairs = static_cast<std::size_t>(-1));
+                   std::size_t maxPairs = static_cast<std::size_t>(-1), JobPool* jobs = nullptr);
 
 private:
     struct Body {
@@ -46,9 +49,15 @@ private:
         int body = 0;
         unsigned flags = 0;  // bit k (0-2): the body's range starts at this cell on axis k; bit 3: the body moves
     };
-    void BuildGrid(int n);
-    /// Both append to *pairs and stop once it holds more than maxPairs (false then).
-    bool PairsInCells(std::vector<std::pair<int, int>>* pairs, std::size_t maxPairs) const;
+    void BuildGrid(int n, JobPool* jobs);
+    /// Pairs found in the cells of hash buckets [begin, end), appended to *out; stops once `found` (shared by every
+    /// chunk of buckets) passes maxPairs (false then).
+    bool PairsInBuckets(std::size_t begin, std::size_t end, std::vector<std::pair<int, int>>* out,
+                        std::atomic<std::size_t>* found, std::size_t maxPairs) const;
+    /// Every chunk of buckets on `jobs`, each into its own list, then the lists appended to *pairs in bucket
+    /// order: the order a single scan gives. False once more than maxPairs pairs are found.
+    bool PairsInCells(std::vector<std::pair<int, int>>* pairs, std::size_t maxPairs, JobPool* jobs);
+    /// Appends to *pairs and stops once it holds more than maxPairs (false then).
     bool PairsWithWideBodies(int n, std::vector<std::pair<int, int>>* pairs, std::size_t maxPairs) const;
 
     std::vector<Body> bodies;              // by volume index
@@ -59,4 +68,6 @@ private:
     std::vector<CellEntry> cellEntries;    // (cell, body) for every covered cell, grouped by hash bucket
     std::vector<std::pair<int, int>> raw;  // pairs as found, before ordering
     std::vector<int> firstCount;           // scratch: pairs per first index, for the counting sort
+    std::vector<std::size_t> cellCounts;   // per body: cells its range covers (0 for a wide body)
+    std::vector<std::vector<std::pair<int, int>>> chunkPairs;  // per chunk of buckets: its pairs, capacity reused
 };

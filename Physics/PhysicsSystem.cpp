@@ -5,6 +5,7 @@
 
 #include "Physics/Cloth.h"
 #include "Physics/DistanceJoint.h"
+#include "Physics/JobPool.h"
 #include "Physics/Particle.h"
 #include "Physics/RigidbodyVolume.h"
 #include "Physics/Spring.h"
@@ -15,6 +16,8 @@ PhysicsSystem::~PhysicsSystem() = default;
 void PhysicsSystem::Update(float deltaTime) {
     if (!(deltaTime > 0.0f) || !std::isfinite(deltaTime) || !stopReason.empty()) return;
     StepContext ctx{settings};
+    // The process keeps one pool per thread count (JobPool::Shared): worlds asking for the same count share it.
+    ctx.jobs = &JobPool::Shared(settings.threads);
     ctx.dt = deltaTime;
     ctx.invDt = 1.0f / deltaTime;
     ctx.step = stepCount;

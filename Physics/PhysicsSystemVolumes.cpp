@@ -61,7 +61,7 @@ void PhysicsSystem::FindPairs(const StepContext& ctx, const unsigned char* activ
                 if (wanted(i, j)) test(i, j);
         return;
     }
-    if (!broadphase.FindPairs(volumes, &candidatePairs, active, 0.0f, 0.0f, ctx.settings.maxPairs)) {
+    if (!broadphase.FindPairs(volumes, &candidatePairs, active, 0.0f, 0.0f, ctx.settings.maxPairs, ctx.jobs)) {
         StopAtPairLimit();
         return;
     }
@@ -127,7 +127,8 @@ void PhysicsSystem::StepSoftVolumes(StepContext& ctx) {
                     if (CanInteract(*volumes[i], *volumes[j]) && (active == nullptr || active[i] || active[j]) &&
                         near(i, j))
                         candidatePairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
-        } else if (!broadphase.FindPairs(volumes, &candidatePairs, active, margin, ctx.dt, settings.maxPairs)) {
+        } else if (!broadphase.FindPairs(volumes, &candidatePairs, active, margin, ctx.dt, settings.maxPairs,
+                                         ctx.jobs)) {
             StopAtPairLimit();
         }
     };

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "Physics/Geometry/ContactManifold.h"
+#include "Physics/JobPool.h"
 #include "Physics/RigidbodyVolume.h"
 #include "Physics/SoftContactKernel.h"
 #include "Physics/WorldSettings.h"
@@ -15,6 +16,8 @@ using namespace softkernel;
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
+/// Bodies per job of the per-body loops: fixed, never derived from the thread count (docs/threads.md).
+constexpr std::size_t kBodyChunk = 512;
 
 /// v M in the row-vector convention (MultiplyVector), inline for the solver's inner loops.
 inline vec3 Mul(const vec3& v, const mat3& m) {
@@ -35,33 +38,18 @@ inline quat SmallTurn(const quat& q, const vec3& w, float h, float x2) {
     return Normalized(quat(w.x * k, w.y * k, w.z * k, c) * q);
 }
 
-/// Orthonormal t1, t2 with n x t1 = t2, a fixed function of n (the same normal gives the same basis every step).
-void TangentBasis(const vec3& n, vec3* t1, vec3* t2) {
-    vec3 t = std::fabs(n.x) >= 0.57735f ? vec3(n.y, -n.x, 0.0f) : vec3(0.0f, n.z, -n.y);
-    t = t * (1.0f / std::sqrt(MagnitudeSq(t)));
-    *t1 = t;
-    *t2 = Cross(n, t);
-}
-
-/// Pairs of static bodies never move, so they are never tested.
-bool CanInteract(const RigidbodyVolume& a, const RigidbodyVolume& b) {
-    return a.HasVolume() && b.HasVolume() && (a.mass > 0.0f || b.mass > 0.0f);
-}
-
-/// Solver manifold of any sphere/box pair, normal from a to b (the sphere-box case is swapped and flipped).
-void CollideVolumes(const RigidbodyVolume& a, const RigidbodyVolume& b, float margin, ContactManifold* out) {
-    out->pointCount = 0;
-    const bool sphereA = a.type == RigidbodyType::Sphere;
-    const bool sphereB = b.type == RigidbodyType::Sphere;
-    if (sphereA && sphereB) {
-        CollideSpheres(a.sphere, b.sphere, margin, out);
-    } else if (sphereA) {
-        CollideBoxSphere(b.box, a.sphere, margin, out);
-        out->normal = -out->normal;
-    } else if (sphereB) {
-        CollideBoxSphere(a.box, b.sphere, margin, out);
-    } else {
-        CollideBoxes(a.box, b.box, margin, out);
+/// A pair's velocities back to its moving bodies only. A static or sleeping body keeps its zero velocities (a pass
+/// leaves them unchanged, bit for bit); not writing them lets blocks that share the ground run on different threads.
+inline void StoreMovingVelocities(const PairVelocities& x, const SoftContactSolver::Pair& pair,
+                                  const std::vector<unsigned char>& moving,
+                                  std::vector<SoftContactSolver::BodyState>& state) {
+    if (moving[static_cast<std::size_t>(pair.a)] != 0) {
+        Store(state[static_cast<std::size_t>(pair.a)].v, x.vA);
+        Store(state[static_cast<std::size_t>(pair.a)].w, x.wA);
+    }
+    if (moving[static_cast<std::size_t>(pair.b)] != 0) {
+        Store(state[static_cast<std::size_t>(pair.b)].v, x.vB);
+        Store(state[static_cast<std::size_t>(pair.b)].w, x.wB);
     }
 }
 
@@ -122,13 +110,16 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
     const Softness staticSoftness = MakeSoftness(2.0f * hertz, soft.contactDampingRatio, ctx.h);
     // With colouring the batches prepare their own rows, four wide; Prepare does the pairs solved one by one.
     graph.Build(ctx.settings.softGraphColouring, pairEnds, moving);
-    BuildBatches(softness, staticSoftness);
+    BuildBatches(softness, staticSoftness, ctx.jobs);
     Prepare(volumes, ctx);
     BuildShock(ctx);
     // Every substep of a block before the next block: islands share no moving body, so this is the order of one
-    // pass over all of them, with the block's rows still in cache (kBlockPairs).
+    // pass over all of them, with the block's rows still in cache (kBlockPairs). For the same reason the blocks are
+    // the jobs of the step's threads: a block writes only its own bodies, contacts and batches (static and sleeping
+    // bodies are read, never written), so any thread may run it and the bits stay those of one thread.
     const std::vector<Block>& blocks = graph.Blocks();
-    for (const Block& block : blocks) {
+    auto solveBlock = [&](std::size_t b) {
+        const Block& block = blocks[b];
         UpdateSeparations(block);
         for (int s = 0; s < ctx.substepCount; ++s) {
             IntegrateVelocities(ctx, block);
@@ -136,7 +127,7 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
             for (int k = 0; k < soft.iterations; ++k)
                 Solve(block, ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, true);
             if (!shockPoints.empty())
-                ShockPass(static_cast<std::size_t>(&block - blocks.data()), ctx.invH, staticSoftness.biasRate,
+                ShockPass(b, ctx.invH, staticSoftness.biasRate,
                           soft.maxPushoutSpeed, soft.linearSlop, false);
             IntegratePositions(ctx, block);
             // The first relax pass brings each pair's separations up to date as it reaches the pair (the same
@@ -147,13 +138,14 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
                 Solve(block, ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, false, k == 0);
             // Again after the relax pass, without push-out: the velocities the next substep starts from.
             if (!shockPoints.empty())
-                ShockPass(static_cast<std::size_t>(&block - blocks.data()), ctx.invH, 0.0f, 0.0f, soft.linearSlop,
+                ShockPass(b, ctx.invH, 0.0f, 0.0f, soft.linearSlop,
                           true);
         }
-    }
+    };
+    ForEachJob(ctx.jobs, blocks.size(), solveBlock);
     StoreBatchImpulses();  // the batches' impulses back to the contacts (none without colouring)
     ApplyRestitution(soft.restitutionThreshold);
-    StoreBodies(volumes);
+    StoreBodies(volumes, ctx.jobs);
 }
 
 void SoftContactSolver::LoadBodies(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx,
@@ -164,132 +156,86 @@ void SoftContactSolver::LoadBodies(const std::vector<RigidbodyVolume*>& volumes,
         sim.resize(n);
         moving.resize(n);
     }
-    for (std::size_t i = 0; i < n; ++i) {
-        const RigidbodyVolume& body = *volumes[i];
-        BodyState& st = state[i];
-        BodySim& bs = sim[i];
-        // A sleeping body (active[i] == 0) is held like a static one and StoreBodies leaves it untouched.
-        bs.dynamic = body.HasVolume() && body.mass > 0.0f && (active == nullptr || active[i] != 0);
-        moving[i] = bs.dynamic ? 1 : 0;
-        bs.p = body.position;
-        bs.q = body.orientation;
-        bs.q0 = body.orientation;
-        st = BodyState();
-        if (!bs.dynamic) {
-            // Static bodies are immovable here: no velocity, never integrated.
-            st.v = vec3();
-            st.w = vec3();
-            bs.invMass = 0.0f;
-            for (auto& row : bs.invI)
-                for (float& f : row) f = 0.0f;
-            bs.gravity = vec3();
-            bs.angularAccel = vec3();
-            bs.retention = 1.0f;
-            bs.epsilon = 0.0f;
-            continue;
-        }
-        st.v = body.velocity;
-        st.w = body.angVel;
-        bs.invMass = body.InvMass();
-        const mat3 invI = body.InvTensor();
-        for (int r = 0; r < 3; ++r) {
-            for (int k = 0; k < 3; ++k) bs.invI[r][k] = invI[r][k];
-            bs.invI[r][3] = 0.0f;
-        }
-        bs.inertia = body.LocalInertia();
-        bs.isotropic = bs.inertia.x == bs.inertia.y && bs.inertia.y == bs.inertia.z;
-        // The book's force model: forces = gravity * mass (ApplyForces), plus any torque the body carries.
-        bs.gravity = body.gravity;
-        bs.angularAccel = Mul(body.torques, invI);
-        bs.retention = body.StepRetention(ctx.h);
-        bs.epsilon = body.StepVelocityEpsilon(ctx.h);
+    ForEachChunk(ctx.jobs, n, kBodyChunk, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) LoadBody(*volumes[i], ctx, active == nullptr || active[i] != 0, i);
+    });
+}
+
+void SoftContactSolver::LoadBody(const RigidbodyVolume& body, const StepContext& ctx, bool awake, std::size_t i) {
+    BodyState& st = state[i];
+    BodySim& bs = sim[i];
+    // A sleeping body (active[i] == 0) is held like a static one and StoreBodies leaves it untouched.
+    bs.dynamic = body.HasVolume() && body.mass > 0.0f && awake;
+    moving[i] = bs.dynamic ? 1 : 0;
+    bs.p = body.position;
+    bs.q = body.orientation;
+    bs.q0 = body.orientation;
+    st = BodyState();
+    if (!bs.dynamic) {
+        // Static bodies are immovable here: no velocity, never integrated.
+        st.v = vec3();
+        st.w = vec3();
+        bs.invMass = 0.0f;
+        for (auto& row : bs.invI)
+            for (float& f : row) f = 0.0f;
+        bs.gravity = vec3();
+        bs.angularAccel = vec3();
+        bs.retention = 1.0f;
+        bs.epsilon = 0.0f;
+        return;
     }
+    st.v = body.velocity;
+    st.w = body.angVel;
+    bs.invMass = body.InvMass();
+    const mat3 invI = body.InvTensor();
+    for (int r = 0; r < 3; ++r) {
+        for (int k = 0; k < 3; ++k) bs.invI[r][k] = invI[r][k];
+        bs.invI[r][3] = 0.0f;
+    }
+    bs.inertia = body.LocalInertia();
+    bs.isotropic = bs.inertia.x == bs.inertia.y && bs.inertia.y == bs.inertia.z;
+    // The book's force model: forces = gravity * mass (ApplyForces), plus any torque the body carries.
+    bs.gravity = body.gravity;
+    bs.angularAccel = Mul(body.torques, invI);
+    bs.retention = body.StepRetention(ctx.h);
+    bs.epsilon = body.StepVelocityEpsilon(ctx.h);
 }
 
 void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
                                 const std::vector<std::pair<int, int>>& candidates, const StepContext& ctx,
                                 bool carryOver) {
     // This step's buffers become last step's; capacities are kept, so nothing is allocated once they have grown.
+    // The buffers that were last step's are overwritten slot by slot below (each chunk clears its own slots), not
+    // cleared here: clearing them all on one thread was a sixth of the narrow phase.
     pairs.swap(previousPairs);
     contacts.swap(previousContacts);
-    pairs.clear();
-    contacts.clear();
-    pairEnds.clear();
     if (!carryOver) {
         previousPairs.clear();
         previousContacts.clear();
     }
+    // In chunks of candidates on the step's threads (SoftSolverCollide.cpp): every candidate's manifold into its own
+    // slot, counting each chunk's pairs and points; then each chunk's pairs and contacts at the place the counts
+    // give, so they are in candidate order, as one loop over the candidates makes them.
+    const std::size_t chunks = ChunkCount(candidates.size(), kCandidateChunk);
+    manifolds.resize(candidates.size());
+    chunkCounts.assign(chunks, ChunkCounts());
+    ForEachJob(ctx.jobs, chunks, [&](std::size_t c) { FindManifolds(volumes, candidates, ctx, c); });
+    std::size_t pairCount = 0, contactCount = 0;
+    for (ChunkCounts& counts : chunkCounts) {
+        counts.firstPair = pairCount;
+        counts.firstContact = contactCount;
+        pairCount += counts.pairs;
+        contactCount += counts.contacts;
+    }
+    pairs.resize(pairCount);
+    pairEnds.resize(pairCount);
+    contacts.resize(contactCount);
+    ForEachJob(ctx.jobs, chunks, [&](std::size_t c) { MakePairs(volumes, candidates, ctx, c); });
+    // The warm start's totals, summed in contact order (an unmatched contact adds its zero impulse: no change).
     warmStarted = 0;
     inheritedNormal = 0.0f;
-    const SoftSolverSettings& soft = ctx.settings.soft;
-    std::size_t cursor = 0;  // previousPairs is in the same increasing (a, b) order as the candidates
-    ContactManifold manifold;
-    for (const std::pair<int, int>& candidate : candidates) {
-        const RigidbodyVolume& A = *volumes[candidate.first];
-        const RigidbodyVolume& B = *volumes[candidate.second];
-        if (!CanInteract(A, B)) continue;
-        // Speculative margin plus the distance the pair can close this step, so a fast body meets the surface
-        // in the substep it reaches it instead of being pushed out from inside.
-        const float closing = std::sqrt(MagnitudeSq(state[candidate.second].v - state[candidate.first].v));
-        CollideVolumes(A, B, soft.speculativeMargin + closing * ctx.dt, &manifold);
-        if (manifold.pointCount <= 0) continue;
-
-        Pair pair;
-        pair.a = candidate.first;
-        pair.b = candidate.second;
-        pair.bodyA = &A;
-        pair.bodyB = &B;
-        pair.n = Normalized(manifold.normal);
-        TangentBasis(pair.n, &pair.t1, &pair.t2);
-        pair.friction = std::sqrt(A.friction * B.friction);  // book §15: mu = sqrt(muA muB)
-        pair.restitution = std::fmin(A.cor, B.cor);          // book: the smaller cor
-        pair.touchesStatic = !(A.mass > 0.0f) || !(B.mass > 0.0f);
-        pair.first = contacts.size();
-        pair.count = static_cast<std::size_t>(std::min(manifold.pointCount, kMaxManifoldPoints));
-
-        // The same pair last step (same indices, same bodies): its contacts are matched by feature id.
-        const Pair* old = nullptr;
-        while (cursor < previousPairs.size() &&
-               (previousPairs[cursor].a < pair.a ||
-                (previousPairs[cursor].a == pair.a && previousPairs[cursor].b < pair.b)))
-            ++cursor;
-        if (cursor < previousPairs.size() && previousPairs[cursor].a == pair.a && previousPairs[cursor].b == pair.b &&
-            previousPairs[cursor].bodyA == &A && previousPairs[cursor].bodyB == &B)
-            old = &previousPairs[cursor];
-
-        for (std::size_t k = 0; k < pair.count; ++k) {
-            const ManifoldPoint& mp = manifold.points[k];
-            contacts.emplace_back();  // built in place: the copy of a whole Contact showed in the profile
-            Contact& c = contacts.back();
-            c.rA = mp.point - sim[pair.a].p;
-            c.rB = mp.point - sim[pair.b].p;
-            c.separation = mp.separation;
-            c.id = mp.id;
-            if (old != nullptr) Inherit(*old, pair, soft.warmStartFactor, &c);
-        }
-        pairs.push_back(pair);
-        pairEnds.emplace_back(pair.a, pair.b);
-    }
-}
-
-void SoftContactSolver::Inherit(const Pair& old, const Pair& pair, float warmStartFactor, Contact* c) {
-    const Contact* match = nullptr;
-    for (std::size_t j = old.first; j < old.first + old.count; ++j)
-        if (previousContacts[j].id == c->id) {
-            match = &previousContacts[j];
-            break;
-        }
-    if (match == nullptr) return;
-    const Contact& o = *match;
-    // Last step's total re-expressed in this step's basis, so a slowly turning normal keeps most.
-    const vec3 P =
-        (old.n * o.normal.impulse + old.t1 * o.tangent1.impulse + old.t2 * o.tangent2.impulse) * warmStartFactor;
-    c->normal.impulse = std::fmax(Dot(P, pair.n), 0.0f);
-    c->support = c->normal.impulse;
-    c->tangent1.impulse = Dot(P, pair.t1);
-    c->tangent2.impulse = Dot(P, pair.t2);
-    inheritedNormal += c->normal.impulse;
-    ++warmStarted;
+    for (const ChunkCounts& counts : chunkCounts) warmStarted += counts.matched;
+    for (const Contact& c : contacts) inheritedNormal += c.normal.impulse;
 }
 
 void SoftContactSolver::Prepare(const std::vector<RigidbodyVolume*>& /*volumes*/, const StepContext& /*ctx*/) {
@@ -394,7 +340,7 @@ void SoftContactSolver::WarmStartPair(const Pair& pair) {
     const V4 n = Load(pair.n), t1 = Load(pair.t1), t2 = Load(pair.t2);
     for (std::size_t k = pair.first; k < pair.first + pair.count; ++k)
         WarmStartPoint(x, invA, invB, n, t1, t2, contacts[k]);
-    StoreVelocities(x, A, B);
+    StoreMovingVelocities(x, pair, moving, state);
 }
 
 void SoftContactSolver::Solve(const Block& block, float invH, const Softness& dynamicSoftness,
@@ -426,7 +372,7 @@ void SoftContactSolver::SolvePair(const Pair& pair, const Softness& softness, fl
     const PassLanes<float> pass = {invH, slop, -maxPushout};
     for (std::size_t k = pair.first; k < pair.first + pair.count; ++k)
         SolveNormal(x, invA, invB, n, softness, pass, useBias, contacts[k]);
-    StoreVelocities(x, A, B);
+    StoreMovingVelocities(x, pair, moving, state);
 }
 
 void SoftContactSolver::ApplyRestitution(float threshold) {
@@ -452,15 +398,17 @@ void SoftContactSolver::ApplyRestitution(float threshold) {
     }
 }
 
-void SoftContactSolver::StoreBodies(const std::vector<RigidbodyVolume*>& volumes) {
-    for (std::size_t i = 0; i < volumes.size(); ++i) {
-        const BodySim& bs = sim[i];
-        if (!bs.dynamic) continue;
-        RigidbodyVolume& body = *volumes[i];
-        body.velocity = state[i].v;
-        body.angVel = state[i].w;
-        body.position = bs.p;
-        body.orientation = bs.q;
-        body.SynchCollisionVolumes();
-    }
+void SoftContactSolver::StoreBodies(const std::vector<RigidbodyVolume*>& volumes, JobPool* jobs) {
+    ForEachChunk(jobs, volumes.size(), kBodyChunk, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            const BodySim& bs = sim[i];
+            if (!bs.dynamic) continue;
+            RigidbodyVolume& body = *volumes[i];
+            body.velocity = state[i].v;
+            body.angVel = state[i].w;
+            body.position = bs.p;
+            body.orientation = bs.q;
+            body.SynchCollisionVolumes();
+        }
+    });
 }

@@ -17,8 +17,10 @@
 #include "Math/matrices.h"
 #include "Math/quaternion.h"
 #include "Math/vectors.h"
+#include "Physics/Geometry/ContactManifold.h"
 #include "Physics/SoftSolverGraph.h"
 
+class JobPool;
 class RigidbodyVolume;
 struct StepContext;
 
@@ -210,7 +212,7 @@ private:
     // The four-wide path (SoftSolverWide.cpp): the graph's batches (SoftSolverGraph.h) filled and prepared once per
     // step before Prepare; each pass over a block runs its batches colour by colour, then its overflow pairs one by
     // one (the scalar path); the impulses go back to the contacts before restitution.
-    void BuildBatches(const Softness& softness, const Softness& staticSoftness);
+    void BuildBatches(const Softness& softness, const Softness& staticSoftness, JobPool* jobs);
     void FillBatch(const SoftContactGraph::Batch& lanes, const Softness& softness, const Softness& staticSoftness,
                    WideBatch* out);
     void UpdateBatchSeparations(WideBatch& batch) const;
@@ -230,11 +232,26 @@ private:
     /// each integration (by the first relax pass, pair by pair as it reaches them; here when there is no relax
     /// pass), and every solve pass in between reads them.
     void UpdateSeparations(const Block& block);
+    /// Per body, in fixed chunks on ctx.jobs (LoadBody: body i's state and constants; `awake`: not held by sleep).
     void LoadBodies(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx, const unsigned char* active);
+    void LoadBody(const RigidbodyVolume& body, const StepContext& ctx, bool awake, std::size_t i);
     void Collide(const std::vector<RigidbodyVolume*>& volumes, const std::vector<std::pair<int, int>>& candidates,
                  const StepContext& ctx, bool carryOver);
-    /// Warm start: contact c (its id set) takes the impulse of old's contact with the same feature id, if any.
-    void Inherit(const Pair& old, const Pair& pair, float warmStartFactor, Contact* c);
+    /// Warm start: contact c (its id set) takes the impulse of old's contact with the same feature id, if any
+    /// (true then).
+    bool Inherit(const Pair& old, const Pair& pair, float warmStartFactor, Contact* c) const;
+    // Collide's two passes over chunk `chunk` of kCandidateChunk candidates (SoftSolverCollide.cpp): the manifolds,
+    // counted in chunkCounts; then the chunk's pairs and contacts from its first slots on.
+    void FindManifolds(const std::vector<RigidbodyVolume*>& volumes, const std::vector<std::pair<int, int>>& candidates,
+                       const StepContext& ctx, std::size_t chunk);
+    void MakePairs(const std::vector<RigidbodyVolume*>& volumes, const std::vector<std::pair<int, int>>& candidates,
+                   const StepContext& ctx, std::size_t chunk);
+    /// Candidates per job of Collide: fixed, never derived from the thread count (docs/threads.md).
+    static constexpr std::size_t kCandidateChunk = 128;
+    struct ChunkCounts {
+        std::size_t pairs = 0, contacts = 0, matched = 0;  // touching pairs, their points, points warm started
+        std::size_t firstPair = 0, firstContact = 0;       // where the chunk's pairs and contacts start
+    };
     void Prepare(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx);
     // The two per-body loops of a substep: each lives here only.
     void IntegrateVelocities(const StepContext& ctx, const Block& block);
@@ -261,12 +278,15 @@ private:
     float PairLoad(std::size_t first, std::size_t last) const;
     /// The upper body given the lower one's sideways velocity, within the cone of the pair's load.
     void ShockFriction(std::size_t first, std::size_t last);
-    void StoreBodies(const std::vector<RigidbodyVolume*>& volumes);
+    /// The moving bodies' state back to the volumes, in fixed chunks on `jobs` (null: this thread).
+    void StoreBodies(const std::vector<RigidbodyVolume*>& volumes, JobPool* jobs);
 
     std::vector<BodyState> state;
     std::vector<BodySim> sim;
     std::vector<Pair> pairs, previousPairs;
     std::vector<Contact> contacts, previousContacts;
+    std::vector<ContactManifold> manifolds;     // Collide: one per candidate pair, capacity reused
+    std::vector<ChunkCounts> chunkCounts;       // Collide: one per chunk of candidates
     std::vector<std::pair<int, int>> pairEnds;  // per pair: its bodies (a, b), the graph's input
     std::vector<unsigned char> moving;          // per body: it moves this step (BodySim::dynamic), the graph's input
     SoftContactGraph graph;                     // blocks, colours and batches of the pairs

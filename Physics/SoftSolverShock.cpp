@@ -275,13 +275,20 @@ void SoftContactSolver::ShockPass(std::size_t block, float invH, float biasRate,
     }
     // Top down (points are sorted bottom up, and a body's pairs over it have higher layers than its pairs under
     // it): each body's load on what is under it, its pairs' loads and its share of what leans on it.
-    for (std::size_t k = begin; k < end; ++k) carried[shockPoints[k].upper] = carried[shockPoints[k].lower] = 0.0f;
+    // A body that does not move this step (the ground, a sleeper) may be under several blocks, which run on
+    // different threads: its load is never read, so it is not written.
+    auto moves = [this](int body) { return sim[static_cast<std::size_t>(body)].dynamic; };
+    for (std::size_t k = begin; k < end; ++k) {
+        carried[static_cast<std::size_t>(shockPoints[k].upper)] = 0.0f;
+        if (moves(shockPoints[k].lower)) carried[static_cast<std::size_t>(shockPoints[k].lower)] = 0.0f;
+    }
     for (std::size_t stop = end; stop > begin;) {
         std::size_t start = stop - 1;
         while (start > begin && shockPoints[start - 1].upper == shockPoints[stop - 1].upper &&
                shockPoints[start - 1].lower == shockPoints[stop - 1].lower)
             --start;
-        carried[static_cast<std::size_t>(shockPoints[start].lower)] += PairLoad(start, stop);
+        const float load = PairLoad(start, stop);
+        if (moves(shockPoints[start].lower)) carried[static_cast<std::size_t>(shockPoints[start].lower)] += load;
         stop = start;
     }
     for (std::size_t first = begin; first < end;) {

@@ -5,12 +5,16 @@
 #include <cstddef>
 #include <cstring>
 
+#include "Physics/JobPool.h"
 #include "Physics/SoftContactKernel.h"
 #include "Physics/SoftSolver.h"
 
 using namespace softkernel;
 
 namespace {
+
+/// Batches per job of BuildBatches: fixed, never derived from the thread count (docs/threads.md).
+constexpr std::size_t kBatchChunk = 64;
 
 using WideBatch = SoftContactSolver::WideBatch;
 using WidePoint = SoftContactSolver::WidePoint;
@@ -62,13 +66,17 @@ void Scatter(std::vector<SoftContactSolver::BodyState>& state, const WideBatch& 
 
 }  // namespace
 
-void SoftContactSolver::BuildBatches(const Softness& softness, const Softness& staticSoftness) {
+void SoftContactSolver::BuildBatches(const Softness& softness, const Softness& staticSoftness, JobPool* jobs) {
     const std::vector<SoftContactGraph::Batch>& lanes = graph.Batches();
-    batches.clear();
-    for (const SoftContactGraph::Batch& batch : lanes) {
-        batches.emplace_back();  // value-initialised: every lane and point zero (in place, no memset call)
-        FillBatch(batch, softness, staticSoftness, &batches.back());
-    }
+    // Each batch is filled from its own lanes only, so chunks of batches run on the step's threads; a slot kept from
+    // the last step is cleared by its own job (every lane and point zero, as a new one is).
+    batches.resize(lanes.size());
+    ForEachChunk(jobs, lanes.size(), kBatchChunk, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+            batches[k] = WideBatch();
+            FillBatch(lanes[k], softness, staticSoftness, &batches[k]);
+        }
+    });
 }
 
 void SoftContactSolver::FillBatch(const SoftContactGraph::Batch& lanes, const Softness& softness,

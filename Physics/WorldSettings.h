@@ -10,6 +10,8 @@
 #include "Physics/Integrator.h"
 #include "Physics/Particle.h"
 
+class JobPool;
+
 /// The book's fixed step, s (GetFixedFPS()/1000, docs/book-reference.md §1.2). The per-step factors the book
 /// defines (a particle's velocity retention 0.95) are defined at this step.
 constexpr float kBookStep = 0.03f;
@@ -88,12 +90,19 @@ struct WorldSettings {
     /// no moving body; docs/ch15.md, "Graph colouring"); false solves them one by one in pair order. The same
     /// equations either way, in another order. Not in the book.
     bool softGraphColouring = true;
+    /// Threads the volume step may use, count: 1 is the single-thread path, 0 the process default
+    /// (DefaultThreadCount() in JobPool.h: physics-sandbox --threads, else the hardware's concurrency). The pair
+    /// search, the manifolds and the soft solve's blocks are cut into chunks of fixed size and merged in a fixed
+    /// order, so every count gives the same bits (docs/threads.md). Not in the book.
+    int threads = 0;
 };
 
 /// What one PhysicsSystem::Update hands to each stage: the step's times and counters and the world's settings.
 /// Built on the stack per step; no stage keeps it.
 struct StepContext {
     const WorldSettings& settings;
+    /// The step's threads (settings.threads resolved; JobPool::Shared). Null runs every stage on the calling thread.
+    JobPool* jobs = nullptr;
     float dt = 0.0f;     ///< s, the whole step
     float invDt = 0.0f;  ///< 1/s
     /// s, one volume substep (dt / substepCount; dt itself when substepCount is 1, bit for bit).

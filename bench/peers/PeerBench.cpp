@@ -32,7 +32,7 @@ constexpr int kPenetrationWindow = 60;
 
 const char kUsage[] =
     "Usage: psb-peer-bench SCENE N [--solver book|accumulated|soft] [--steps S] [--warmup W] [--repeat R]\n"
-    "                      [--sleep] [--csv FILE]\n"
+    "                      [--sleep] [--csv FILE] [--threads T]\n"
     "  SCENE N      boxpile N (cubes, 1..100000), pyramid N (base, 1..300) or tower N (height, 1..1000)\n"
     "  --solver S   this engine's contact solver (default accumulated; 10 iterations for accumulated)\n"
     "  --steps S    steps per run at 1/60 s (default 600)\n"
@@ -42,6 +42,9 @@ const char kUsage[] =
     "               docs/sleep.md); without it neither sleeps\n"
     "  --csv FILE   also write FILE (replaced atomically): header scene,bodies,sleep,threads,engine,\n"
     "               cpu_ms_per_step,ratio_to_bullet,max_displacement_m,stands and one row per engine\n"
+    "  --threads T  also run this engine on T threads (1..256) in every round, beside its one-thread run, and\n"
+    "               print threads, psb_threads_ms (wall), speedup (psb_ms / psb_threads_ms) and same_state\n"
+    "               (1 when both runs end in the same bits); this engine otherwise runs on one thread\n"
     "Builds the scene in Bullet and in this engine from one definition and prints one line of key=value pairs:\n"
     "scene, n, solver, sleep (on|off); bullet_ms, psb_ms, ratio (psb / bullet): medians of wall ms per step after the "
     "warm-up,\n"
@@ -60,6 +63,7 @@ struct Options {
     int repeat = 3;
     bool sleep = false;  // both engines at their default sleeping (--sleep)
     std::string csv;     // --csv FILE, empty: none
+    int threads = 0;     // 0: no threaded run
 };
 
 /// Quality figures of one run, computed the same way for both engines (Probe).
@@ -135,11 +139,13 @@ private:
 };
 
 /// This engine with the bench's settings: the chosen contact solver, 10 iterations for Accumulated (the book's
-/// 5 otherwise), sleeping off or at its defaults (docs/sleep.md); damping off comes from the specs.
+/// 5 otherwise), sleeping off or at its defaults (docs/sleep.md), on `threads` threads; damping off comes from the
+/// specs.
 class PsbEngine {
 public:
-    PsbEngine(const std::vector<BodySpec>& specs, ContactSolver solver, bool sleep) : world(specs) {
+    PsbEngine(const std::vector<BodySpec>& specs, ContactSolver solver, bool sleep, int threads) : world(specs) {
         WorldSettings& s = world.system.settings;
+        s.threads = threads;
         s.contactSolver = solver;
         if (solver == ContactSolver::Accumulated) s.solverIterations = 10;
         s.sleep = SleepSettings();
@@ -193,6 +199,7 @@ struct RunResult {
     double msPerStep = 0.0;     // wall clock: median over the steps after the warm-up
     double cpuMsPerStep = 0.0;  // this thread's CPU time: median over the same steps
     Quality quality;
+    std::vector<BodyState> end;  // every body's state after the last step
 };
 
 /// One full run of `engine`: every step timed on its own; after each of the last kPenetrationWindow steps (not
@@ -219,6 +226,7 @@ RunResult Run(Engine& engine, Probe& probe, const Options& o) {
     r.msPerStep = Median(std::vector<double>(ms.begin() + o.warmup, ms.end()));
     r.cpuMsPerStep = Median(std::vector<double>(cpuMs.begin() + o.warmup, cpuMs.end()));
     r.quality = probe.Final(penetration);
+    for (std::size_t i = 0; i < count; ++i) r.end.push_back(engine.State(i));
     return r;
 }
 
@@ -271,6 +279,9 @@ int Parse(int argc, char** argv, Options* o, bool* help) {
         } else if (std::strcmp(arg, "--csv") == 0) {
             if (*value == '\0') return Usage("--csv needs a file name, got", value);
             o->csv = value;
+        } else if (std::strcmp(arg, "--threads") == 0) {
+            if (!ParseInt(value, &o->threads) || o->threads < 1 || o->threads > 256)
+                return Usage("--threads must be an integer in 1..256, got", value);
         } else if (std::strcmp(arg, "--repeat") == 0) {
             if (!ParseInt(value, &o->repeat) || o->repeat < 1 || o->repeat > 1000)
                 return Usage("--repeat must be an integer in 1..1000, got", value);
@@ -381,8 +392,8 @@ int main(int argc, char** argv) {
     if (!o.csv.empty() && !csv.Open(o.csv)) return 2;
     const std::vector<BodySpec> specs = Scene(o);
     Probe probe(specs);
-    std::vector<double> bulletMs, psbMs, bulletCpuMs, psbCpuMs;
-    RunResult bullet, psb;
+    std::vector<double> bulletMs, psbMs, bulletCpuMs, psbCpuMs, threadedMs;
+    RunResult bullet, psb, threaded;
     for (int round = 0; round < o.repeat; ++round) {
         // Alternate which engine goes first, so neither always runs on a warmer (or busier) machine.
         for (int k = 0; k < 2; ++k) {
@@ -392,7 +403,7 @@ int main(int argc, char** argv) {
                 bulletMs.push_back(bullet.msPerStep);
                 bulletCpuMs.push_back(bullet.cpuMsPerStep);
             } else {
-                PsbEngine engine(specs, o.solver, o.sleep);
+                PsbEngine engine(specs, o.solver, o.sleep, 1);
                 if (!engine.Error().empty()) {
                     if (!o.csv.empty()) csv.Abandon();
                     std::fprintf(stderr, "psb-peer-bench: the scene was refused: %s\n", engine.Error().c_str());
@@ -402,6 +413,11 @@ int main(int argc, char** argv) {
                 psbMs.push_back(psb.msPerStep);
                 psbCpuMs.push_back(psb.cpuMsPerStep);
             }
+        }
+        if (o.threads > 0) {  // right after this round's one-thread run, on the same scene
+            PsbEngine engine(specs, o.solver, o.sleep, o.threads);
+            threaded = Run(engine, probe, o);
+            threadedMs.push_back(threaded.msPerStep);
         }
     }
     const double bMs = Median(bulletMs), pMs = Median(psbMs);
@@ -424,6 +440,14 @@ int main(int argc, char** argv) {
     } else {
         std::printf(" bullet_disp=%.4g psb_disp=%.4g", b.displacement, p.displacement);
         if (o.scene == "tower") std::printf(" bullet_drift=%.4g psb_drift=%.4g", b.drift, p.drift);
+    }
+    if (o.threads > 0) {
+        const double tMs = Median(threadedMs);
+        bool same = psb.end.size() == threaded.end.size();
+        for (std::size_t i = 0; same && i < psb.end.size(); ++i)
+            same = std::memcmp(&psb.end[i], &threaded.end[i], sizeof(BodyState)) == 0;
+        std::printf(" threads=%d psb_threads_ms=%.4g speedup=%.3f same_state=%d", o.threads, tMs,
+                    tMs > 0.0 ? pMs / tMs : 0.0, same ? 1 : 0);
     }
     std::printf(" steps=%d warmup=%d repeat=%d\n", o.steps, o.warmup, o.repeat);
     return 0;

@@ -177,6 +177,18 @@ TEST(CommandLine, EveryIntegerIsRangeCheckedWithoutOverflow) {
     EXPECT_EQ(o.debugNonFiniteAt, 99999999);
 }
 
+TEST(CommandLine, ThreadsTakesACountFrom1To256AndDefaultsToTheHardware) {
+    Options o;
+    std::string error;
+    ASSERT_EQ(Parse({"--demo", "ch15"}, &o, &error), ParseStatus::Ok) << error;
+    EXPECT_EQ(o.threads, 0) << "0: the hardware's concurrency (SetDefaultThreadCount)";
+    ASSERT_EQ(Parse({"--demo", "ch15", "--threads", "3"}, &o, &error), ParseStatus::Ok) << error;
+    EXPECT_EQ(o.threads, 3);
+    ExpectError({"--demo", "ch15", "--threads", "0"}, "--threads 0: expected an integer in [1, 256]");
+    ExpectError({"--demo", "ch15", "--threads", "257"}, "--threads 257");
+    ExpectError({"--demo", "ch15", "--threads", "two"}, "--threads two");
+}
+
 TEST(CommandLine, HelpListsEveryFlagTheParserAccepts) {
     const std::string help = UsageText();
     for (const char* flag : {"--help",
@@ -207,6 +219,7 @@ TEST(CommandLine, HelpListsEveryFlagTheParserAccepts) {
                              "--progress",
                              "--quiet",
                              "--debug-nonfinite-at",
+                             "--threads",
                              "--explain-model"}) {
         EXPECT_NE(help.find(std::string("  ") + flag + " "), std::string::npos) << flag;
         Options o;
