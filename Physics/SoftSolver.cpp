@@ -264,31 +264,34 @@ void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
             c.rB = mp.point - sim[pair.b].p;
             c.separation = mp.separation;
             c.id = mp.id;
-            if (old != nullptr) Inherit(*old, pair, soft.warmStartFactor, &c);
         }
+        if (old != nullptr) Inherit(*old, pair, soft.warmStartFactor);
         pairs.push_back(pair);
         pairEnds.emplace_back(pair.a, pair.b);
     }
 }
 
-void SoftContactSolver::Inherit(const Pair& old, const Pair& pair, float warmStartFactor, Contact* c) {
-    const Contact* match = nullptr;
-    for (std::size_t j = old.first; j < old.first + old.count; ++j)
-        if (previousContacts[j].id == c->id) {
-            match = &previousContacts[j];
-            break;
-        }
-    if (match == nullptr) return;
-    const Contact& o = *match;
-    // Last step's total re-expressed in this step's basis, so a slowly turning normal keeps most.
-    const vec3 P =
-        (old.n * o.normal.impulse + old.t1 * o.tangent1.impulse + old.t2 * o.tangent2.impulse) * warmStartFactor;
-    c->normal.impulse = std::fmax(Dot(P, pair.n), 0.0f);
-    c->support = c->normal.impulse;
-    c->tangent1.impulse = Dot(P, pair.t1);
-    c->tangent2.impulse = Dot(P, pair.t2);
-    inheritedNormal += c->normal.impulse;
-    ++warmStarted;
+void SoftContactSolver::Inherit(const Pair& old, const Pair& pair, float warmStartFactor) {
+    for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
+        Contact& c = contacts[k];
+        const Contact* match = nullptr;
+        for (std::size_t j = old.first; j < old.first + old.count; ++j)
+            if (previousContacts[j].id == c.id) {
+                match = &previousContacts[j];
+                break;
+            }
+        if (match == nullptr) continue;
+        const Contact& o = *match;
+        // Last step's total re-expressed in this step's basis, so a slowly turning normal keeps most.
+        const vec3 P =
+            (old.n * o.normal.impulse + old.t1 * o.tangent1.impulse + old.t2 * o.tangent2.impulse) * warmStartFactor;
+        c.normal.impulse = std::fmax(Dot(P, pair.n), 0.0f);
+        c.support = c.normal.impulse;
+        c.tangent1.impulse = Dot(P, pair.t1);
+        c.tangent2.impulse = Dot(P, pair.t2);
+        inheritedNormal += c.normal.impulse;
+        ++warmStarted;
+    }
 }
 
 void SoftContactSolver::Prepare(const std::vector<RigidbodyVolume*>& /*volumes*/, const StepContext& /*ctx*/) {
@@ -307,6 +310,7 @@ void SoftContactSolver::PreparePair(const Pair& pair) {
         MakeRow(rA, rB, n, invSum, A.invI, B.invI, &c.normal);
         MakeRow(rA, rB, t1, invSum, A.invI, B.invI, &c.tangent1);
         MakeRow(rA, rB, t2, invSum, A.invI, B.invI, &c.tangent2);
+        c.coupling = TangentCoupling(c.tangent1, c.tangent2);
         // The separation is tracked through the step from the bodies' motion (Solve), not re-collided.
         c.baseSeparation = c.separation - Dot(c.rB - c.rA, pair.n);
         c.relativeVelocity = RowSpeed(x, n, c.normal);
