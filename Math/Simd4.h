@@ -192,6 +192,15 @@ inline bool And(bool a, bool b) { return a && b; }
 inline Mask4 And(Mask4 a, Mask4 b) { return a & b; }
 inline bool Any(bool a) { return a; }
 inline bool Any(Mask4 a) { return (a[0] | a[1] | a[2] | a[3]) != 0; }
+/// Square root lane by lane (correctly rounded, as std::sqrt).
+inline Float4 Sqrt(Float4 x) {
+#if defined(__SSE2__)
+    return _mm_sqrt_ps(x);
+#else
+    for (int lane = 0; lane < 4; ++lane) x[lane] = std::sqrt(x[lane]);
+    return x;
+#endif
+}
 /// mask ? a : b lane by lane.
 inline float Select(bool mask, float a, float b) { return mask ? a : b; }
 inline Float4 Select(Mask4 mask, Float4 a, Float4 b) { return mask ? a : b; }

@@ -97,21 +97,14 @@ inline void MakeRow(const Vec4x3& rA, const Vec4x3& rB, const Vec4x3& d, Float4 
     row->mass = Select(valid & (k > zero), Wide(1.0f) / k, zero);
 }
 
-/// (rA x u) . IA^-1 (rA x u) + (rB x u) . IB^-1 (rB x u) for the slip u = t1 s1 + t2 s2, from the two friction rows
-/// (rows are linear in their direction): the angular part of the inverse mass along u, times |u|^2.
-inline float SlipAngularInvMass(const Row& r1, const Row& r2, float s1, float s2) {
-    const V4 a = Load(r1.rAxD) * Splat(s1) + Load(r2.rAxD) * Splat(s2);
-    const V4 ia = Load(r1.iArAxD) * Splat(s1) + Load(r2.iArAxD) * Splat(s2);
-    const V4 b = Load(r1.rBxD) * Splat(s1) + Load(r2.rBxD) * Splat(s2);
-    const V4 ib = Load(r1.iBrBxD) * Splat(s1) + Load(r2.iBrBxD) * Splat(s2);
-    return Dot(a, ia) + Dot(b, ib);
+/// The off-diagonal entry of a contact's inverse mass matrix in its tangent plane, t1 . K t2 = (rA x t1) . IA^-1
+/// (rA x t2) + (rB x t1) . IB^-1 (rB x t2) (t1 . t2 = 0: no linear part), 1/kg: with the rows' own 1 / mass, the
+/// inverse mass along any direction of the plane (SolveFriction).
+inline float TangentCoupling(const Row& r1, const Row& r2) {
+    return Dot(Load(r1.rAxD), Load(r2.iArAxD)) + Dot(Load(r1.rBxD), Load(r2.iBrBxD));
 }
-inline Float4 SlipAngularInvMass(const WideRow& r1, const WideRow& r2, Float4 s1, Float4 s2) {
-    const Vec4x3 a = Add(Scale(r1.rAxD, s1), Scale(r2.rAxD, s2));
-    const Vec4x3 ia = Add(Scale(r1.iArAxD, s1), Scale(r2.iArAxD, s2));
-    const Vec4x3 b = Add(Scale(r1.rBxD, s1), Scale(r2.rBxD, s2));
-    const Vec4x3 ib = Add(Scale(r1.iBrBxD, s1), Scale(r2.iBrBxD, s2));
-    return Dot(a, ia) + Dot(b, ib);
+inline Float4 TangentCoupling(const WideRow& r1, const WideRow& r2) {
+    return Dot(r1.rAxD, r2.iArAxD) + Dot(r1.rBxD, r2.iBrBxD);
 }
 
 /// The factor that brings a friction impulse of squared length sq back onto the cone of radius limit: 1 inside it.
@@ -120,11 +113,8 @@ inline float ConeScale(float sq, float limit) {
     return limit > 0.0f ? limit / std::sqrt(sq) : 0.0f;
 }
 inline Float4 ConeScale(Float4 sq, Float4 limit) {
-    Float4 scale = Wide(1.0f);
-    for (int lane = 0; lane < 4; ++lane)
-        if (sq[lane] > limit[lane] * limit[lane])
-            scale[lane] = limit[lane] > 0.0f ? limit[lane] / std::sqrt(sq[lane]) : 0.0f;
-    return scale;
+    const Float4 zero = Wide(0.0f);
+    return Select(sq > limit * limit, Select(limit > zero, limit / Sqrt(sq), zero), Wide(1.0f));
 }
 
 // ---- The equations of one contact point, for either lane type ----
@@ -152,20 +142,23 @@ inline void SolveFriction(B& x, R invA, R invB, const D& t1, const D& t2, R fric
     RowSpeeds(x, t1, c.tangent1, t2, c.tangent2, &speed1, &speed2);
     R j1 = c.tangent1.impulse - c.tangent1.mass * speed1;
     R j2 = c.tangent2.impulse - c.tangent2.mass * speed2;
-    const R zero = Fill<R>(0.0f);
-    const R slipSq = speed1 * speed1 + speed2 * speed2;
-    const auto slides = And(j1 * j1 + j2 * j2 > limit * limit, slipSq > zero);
-    if (Any(slides)) {
-        // Effective mass along the slip u = t1 s1 + t2 s2: |u|^2 / (u . K u), K the contact's inverse mass matrix.
-        const R k = (invA + invB) * slipSq + SlipAngularInvMass(c.tangent1, c.tangent2, speed1, speed2);
+    const auto outside = j1 * j1 + j2 * j2 > limit * limit;
+    if (Any(outside)) {
+        // Sliding (outside the cone and slipping): effective mass along the slip u = t1 s1 + t2 s2, |u|^2 / (u . K u),
+        // K the contact's inverse mass matrix in the tangent plane (1 / mass on its diagonal, P::coupling off it).
+        const R zero = Fill<R>(0.0f);
+        const R slipSq = speed1 * speed1 + speed2 * speed2;
+        const auto slides = And(outside, slipSq > zero);
+        const R k = speed1 * speed1 / c.tangent1.mass + speed2 * speed2 / c.tangent2.mass +
+                    Fill<R>(2.0f) * speed1 * speed2 * c.coupling;
         const R mass = Select(k > zero, slipSq / k, zero);
         j1 = Select(slides, c.tangent1.impulse - mass * speed1, j1);
         j2 = Select(slides, c.tangent2.impulse - mass * speed2, j2);
+        // Then scaled back onto the cone (a scale of 1 leaves the lanes inside it unchanged, bit for bit).
+        const R scale = ConeScale(j1 * j1 + j2 * j2, limit);
+        j1 = j1 * scale;
+        j2 = j2 * scale;
     }
-    // Outside the cone: scaled back onto it (a scale of 1 leaves the others unchanged, bit for bit).
-    const R scale = ConeScale(j1 * j1 + j2 * j2, limit);
-    j1 = j1 * scale;
-    j2 = j2 * scale;
     const R d1 = j1 - c.tangent1.impulse, d2 = j2 - c.tangent2.impulse;
     c.tangent1.impulse = j1;
     c.tangent2.impulse = j2;

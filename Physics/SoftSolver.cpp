@@ -254,6 +254,7 @@ void SoftContactSolver::PreparePair(const Pair& pair) {
         MakeRow(rA, rB, n, invSum, A.invI, B.invI, &c.normal);
         MakeRow(rA, rB, t1, invSum, A.invI, B.invI, &c.tangent1);
         MakeRow(rA, rB, t2, invSum, A.invI, B.invI, &c.tangent2);
+        c.coupling = TangentCoupling(c.tangent1, c.tangent2);
         // The separation is tracked through the step from the bodies' motion (Solve), not re-collided.
         c.baseSeparation = c.separation - Dot(c.rB - c.rA, pair.n);
         c.relativeVelocity = RowSpeed(x, n, c.normal);

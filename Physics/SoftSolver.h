@@ -84,8 +84,9 @@ public:
         float maxNormalImpulse = 0.0f;  // largest total normal impulse of the step, N s
         float baseSeparation = 0.0f;    // separation - n . (rB - rA): the separation with the step's offsets removed
         float support = 0.0f;           // normal impulse of the last pass without bias (the friction cone's bound), N s
-        vec3 rA;                        // anchors from the body centres at the start of the step, world, m
-        float separation = 0.0f;        // from the manifold, m (< 0 penetrating)
+        float coupling = 0.0f;    // (rA x t1) . IA^-1 (rA x t2) + (rB x t1) . IB^-1 (rB x t2), 1/kg (SolveFriction)
+        vec3 rA;                  // anchors from the body centres at the start of the step, world, m
+        float separation = 0.0f;  // from the manifold, m (< 0 penetrating)
         vec3 rB;
         std::uint32_t id = 0;  // feature id (ContactManifold.h)
     };
@@ -142,7 +143,7 @@ public:
     struct WidePoint {
         Vec4x3 rA, rB;
         WideRow normal, tangent1, tangent2;
-        Float4 baseSeparation, current, relativeVelocity, maxNormalImpulse, support;
+        Float4 baseSeparation, current, relativeVelocity, maxNormalImpulse, support, coupling;
     };
     /// Up to four pairs of one colour (no moving body twice), solved together: lane l is pairs[pair[l]], or
     /// empty (pair -1: no bodies, zero masses).

@@ -133,6 +133,7 @@ void SoftContactSolver::FillBatch(const SoftContactGraph::Batch& lanes, const So
         MakeRow(p.rA, p.rB, batch.n, invSum, IA, IB, valid[k], &p.normal);
         MakeRow(p.rA, p.rB, batch.t1, invSum, IA, IB, valid[k], &p.tangent1);
         MakeRow(p.rA, p.rB, batch.t2, invSum, IA, IB, valid[k], &p.tangent2);
+        p.coupling = TangentCoupling(p.tangent1, p.tangent2);
         p.baseSeparation = p.baseSeparation - Dot(Sub(p.rB, p.rA), batch.n);
         p.relativeVelocity = RowSpeed(bodies, batch.n, p.normal);
         p.maxNormalImpulse = Wide(0.0f);
