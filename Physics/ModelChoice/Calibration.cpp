@@ -8,9 +8,9 @@
 #include "Physics/PhysicsSystem.h"
 
 namespace model_choice {
-double ThreadCpuSeconds() {
+double ProcessCpuSeconds() {
     timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
     return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
@@ -132,7 +132,7 @@ SpanResult RunSpan(const ProbeFactory& factory, const ModelCandidate& candidate,
     const bool wholeRun = o.wholeRun;
     ChoiceClock* clock = o.clock;
     SpanResult r;
-    const double start = ThreadCpuSeconds();
+    const double start = ProcessCpuSeconds();
     if (clock) clock->StartPiece();
     std::unique_ptr<ModelProbe> coarse = factory();
     coarse->Apply(candidate);
@@ -206,11 +206,11 @@ SpanResult RunSpan(const ProbeFactory& factory, const ModelCandidate& candidate,
             break;
         }
     }
-    r.probeCpuSeconds = ThreadCpuSeconds() - start;
+    r.probeCpuSeconds = ProcessCpuSeconds() - start;
     r.simulated = candidate.step * static_cast<double>(reached);
     r.share = static_cast<double>(reached) / static_cast<double>(warm + measured);
     r.work = r.simulated * perSecond;
-    // The candidate's part of the span's CPU, by predicted work: the thread's CPU clock is a system call (about
+    // The candidate's part of the span's CPU, by predicted work: the process's CPU clock is a system call (about
     // 0.25 us), and reading it around every sample's advance was half a microsecond problem's calibration (the
     // projectile's: 69 us with it, 36 us without).
     r.cpuSeconds = r.probeCpuSeconds * own / perSecond;

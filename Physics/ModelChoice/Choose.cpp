@@ -49,7 +49,7 @@ std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateS
     const double interval = span / 2.0;
     const int intervals = static_cast<int>(std::ceil(T / interval - 1e-9));
     if (settings.eventSpans <= 0 || space.hasVolumes || intervals < 4) return plan;
-    const double start = ThreadCpuSeconds();
+    const double start = ProcessCpuSeconds();
     clock->StartPiece();
     clock->Candidate(0.0, "the pilot run of the scene's own model");
     std::unique_ptr<ModelProbe> pilot = factory();
@@ -113,7 +113,7 @@ std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateS
         plan.push_back({Kind::Event, snapshots[static_cast<std::size_t>(k - 1)], begin, T - begin, 0});
         result->eventTimes.push_back(begin);
     }
-    result->pilotCpuSeconds = ThreadCpuSeconds() - start;
+    result->pilotCpuSeconds = ProcessCpuSeconds() - start;
     result->calibrationWork += PredictedWork(space.base, space) * static_cast<double>(n) * h;
     result->calibrationCpuSeconds += result->pilotCpuSeconds;
     clock->Add(result->pilotCpuSeconds, PredictedWork(space.base, space) * static_cast<double>(n) * h);

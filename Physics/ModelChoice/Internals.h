@@ -18,8 +18,9 @@ namespace model_choice {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-/// s of CPU of the calling thread.
-double ThreadCpuSeconds();
+/// s of CPU of the whole process: a probe on a world with threads (WorldSettings::threads) spends some on the job
+/// pool's workers, which the choice's CPU limit counts too.
+double ProcessCpuSeconds();
 /// Formal order of accuracy of a candidate on a space: contact (volumes or particles bouncing off constraints) and
 /// joints' projections make it first order; otherwise the integrator's.
 int OrderOf(const ModelCandidate& c, const CandidateSpace& space);
@@ -55,12 +56,12 @@ public:
         work += workUnits;
         Report(0.0);
     }
-    /// Inside a piece that started at thread CPU `pieceStart` and has done `pieceWork` so far: true once the limit
+    /// Inside a piece that started at process CPU `pieceStart` and has done `pieceWork` so far: true once the limit
     /// is spent (the piece then stops).
     bool Poll(double pieceStart, double pieceWork) {
         if (pieceWork < polledWork + kPollWork) return false;
         polledWork = pieceWork;
-        const double now = ThreadCpuSeconds() - pieceStart;
+        const double now = ProcessCpuSeconds() - pieceStart;
         Report(now);
         return spent + now >= Limit(now, pieceWork);
     }
