@@ -9,7 +9,8 @@
 // span, is the estimate at the end of the run. During the run the refinement runs again over short spans from
 // the live state; when the projected end-of-run error leaves the budget, the model is refined and the switch logged.
 //
-// Nothing here knows a scene: the host hands in a ProbeFactory that builds fresh copies of its world. GL-free.
+// Nothing here knows a scene: a probe is a copy of the host's world made in the physics layer (ProbesOf,
+// Physics/WorldCopy.h), or whatever ProbeFactory a caller hands in (the tests). GL-free.
 
 #include <functional>
 #include <memory>
@@ -102,6 +103,11 @@ public:
     /// A factory of probes that start from this probe's world as it is now.
     virtual ProbeFactory Snapshot() const = 0;
 };
+/// Probes over `world` as it is at the factory's first call: that state is copied once (WorldCopy) and each probe
+/// runs its own copy of it. `world` must outlive the factory's first call.
+ProbeFactory ProbesOf(const PhysicsSystem& world);
+/// Probes over `world` as it is now (copied at once): a snapshot the watch keeps for later.
+ProbeFactory ProbesNow(const PhysicsSystem& world);
 /// Every body's position as x, y, z triples: particles and volumes in insertion order, then cloth particles.
 void WorldPositions(const PhysicsSystem& world, std::vector<double>* out);
 /// J: kinetic energy of particles (cloth included) and volumes (linear and angular), gravitational potential
