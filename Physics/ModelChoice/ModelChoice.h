@@ -229,6 +229,9 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
 /// short span every settings.checkEvery seconds, keeps the running estimate (the error of earlier models for their
 /// share of the run plus the current model's span extrapolated with the calibration's growth) and, when it
 /// exceeds the budget itself, refines the model (the next smaller step, else more passes).
+namespace model_choice {
+struct SpanResult;  // Internals.h: one span's run
+}  // namespace model_choice
 class ModelWatch {
 public:
     ModelWatch(const CandidateSpace& space, const ErrorBudget& budget, const ChoiceSettings& settings,
@@ -270,6 +273,14 @@ private:
     ChoiceSettings settings;
     ModelCandidate current;
     double CheckSpan() const;
+    // Check's parts: run the span (false: none left to run), fold it into the running estimate (returns what the
+    // span adds, or its whole-run estimate), keep the model though the estimate is over (true, *log set once), or
+    // refine it (true when it changed).
+    bool RunCheckSpan(double time, bool event, const ProbeFactory& factory, double* fromTime,
+                      model_choice::SpanResult* out);
+    double Account(const model_choice::SpanResult& w, bool event, double fromTime, double time);
+    bool KeepsModel(double time, double latest, std::string* log);
+    bool RefineModel(double time, bool event, double fromTime, const model_choice::SpanResult& w, std::string* log);
 
     double running = 0.0;
     double predicted = 0.0;     // the calibration's estimate for the chosen model over the whole run
