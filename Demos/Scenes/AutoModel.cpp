@@ -9,74 +9,11 @@
 #include <limits>
 #include <sstream>
 
-#include "Demos/Scenes/FileScene.h"
-#include "Demos/Scenes/SceneExport.h"
 #include "Physics/Cloth.h"
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
 
 namespace {
-
-/// A FileScene built from a description of the host's world, run with one candidate.
-class FileSceneProbe : public ModelProbe {
-public:
-    explicit FileSceneProbe(const SceneDescription& d) : description(d) {}
-
-    void Apply(const ModelCandidate& model) override {
-        SceneWorld& w = description.world;
-        w.integrator = model.integrator;
-        w.contactSolver = model.solver;
-        w.iterations = model.iterations;
-        w.soft.substeps = model.softSubsteps;
-        w.step = static_cast<float>(model.step);
-        step = model.step;
-        scene = std::make_unique<FileScene>(description);
-        steps = 0;
-    }
-
-    bool AdvanceTo(double seconds) override {
-        const float dt = static_cast<float>(step);
-        while (static_cast<double>(steps + 1) * step <= seconds * (1.0 + 1e-12) + 1e-12) {
-            if (!scene->Step(dt)) return false;
-            ++steps;
-        }
-        return true;
-    }
-
-    const PhysicsSystem& World() const override { return scene->System(); }
-
-    ProbeFactory Snapshot() const override;
-
-private:
-    SceneDescription description;
-    std::unique_ptr<FileScene> scene;
-    double step = 0.03;
-    long long steps = 0;
-};
-
-/// A factory over `world` as it is now (described at once; every probe starts from that state).
-ProbeFactory SnapshotOf(const PhysicsSystem& world) {
-    std::vector<std::string> notes;  // what the format cannot express: the estimate runs without it
-    auto now = std::make_shared<const SceneDescription>(DescribeWorld(world, "auto-model probe", &notes));
-    return [now]() -> std::unique_ptr<ModelProbe> { return std::make_unique<FileSceneProbe>(*now); };
-}
-
-ProbeFactory FileSceneProbe::Snapshot() const { return SnapshotOf(scene->System()); }
-
-/// A factory over the host's world as it is at the first call (described once, shared by every probe).
-ProbeFactory FactoryOf(const PhysicsSystem& world) {
-    auto description = std::make_shared<SceneDescription>();
-    auto described = std::make_shared<bool>(false);
-    const PhysicsSystem* at = &world;
-    return [description, described, at]() -> std::unique_ptr<ModelProbe> {
-        if (!*described) {
-            std::vector<std::string> notes;  // what the format cannot express: the estimate runs without it
-            *description = DescribeWorld(*at, "auto-model probe", &notes);
-            *described = true;
-        }
-        return std::make_unique<FileSceneProbe>(*description);
-    };
-}
 
 constexpr double kStepLadder[] = {0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 0.0005, 0.0002, 0.0001};
 constexpr int kIterationLadder[] = {1, 2, 5, 10, 20, 50};
@@ -256,7 +193,7 @@ bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double 
     space = SpaceOf(*params, world, hostStep);
     settings = tuning;
     settings.runSeconds = runSeconds;
-    choice = ChooseModel(FactoryOf(world), space, budget, settings);
+    choice = ChooseModel(ProbesOf(world), space, budget, settings);
     if (!choice.feasible) {
         *error = RefusalText(choice, space, budget, settings);
         return false;
@@ -271,10 +208,10 @@ bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double 
 void AutoModel::AfterFrame(ParameterSet* params, const PhysicsSystem& world, double time) {
     if (!active) return;
     watch->Observe(time, world);
-    if (watch->WantsSnapshot(time)) watch->TakeSnapshot(time, SnapshotOf(world));
+    if (watch->WantsSnapshot(time)) watch->TakeSnapshot(time, ProbesNow(world));
     if (!watch->Due(time)) return;
     std::string line;
-    const bool changed = watch->Check(time, FactoryOf(world), &line);
+    const bool changed = watch->Check(time, ProbesOf(world), &line);
     if (changed) {
         std::string error;
         if (!ApplyModel(params, watch->Current(), &error)) line += " (not applied: " + error + ")";

@@ -1,8 +1,8 @@
 #pragma once
 // `model: auto` for any host with a parameter table and a world (docs/model-choice.md): the demos and scene files.
 // The candidates are what the host's `--set` keys can change (integrator, dt, iterations, solver, soft-substeps)
-// and what its world holds; probes are FileScenes built from the world as it is (DescribeWorld), so the estimate
-// runs on the scene itself; the chosen model is applied through the same keys a user would set. GL-free.
+// and what its world holds; probes are copies of the world as it is (ProbesOf: Physics/WorldCopy.h), so the
+// estimate runs on the scene itself; the chosen model is applied through the same keys a user would set. GL-free.
 
 #include <memory>
 #include <string>

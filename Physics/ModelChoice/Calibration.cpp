@@ -125,45 +125,52 @@ ModelCandidate RefineFor(const ModelCandidate& c, const CandidateSpace& space, b
 /// A span with `missBound` > 0 stops at the first sample whose difference, with the Richardson factor, already
 /// exceeds it: the span's contribution can only be larger (its growth is at least 0), so the candidate misses,
 /// and what is left of the span would only say by how much. Its result is then that lower bound (`missedAt`).
-SpanResult RunSpan(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
-                   const ErrorBudget& budget, double span, const SpanOptions& o) {
-    const int warmSteps = o.warmSteps;
-    const double fixedGrowth = o.fixedGrowth, missBound = o.missBound;
-    const bool wholeRun = o.wholeRun;
-    ChoiceClock* clock = o.clock;
-    SpanResult r;
-    const double start = ProcessCpuSeconds();
-    if (clock) clock->StartPiece();
-    std::unique_ptr<ModelProbe> coarse = factory();
-    coarse->Apply(candidate);
-    std::unique_ptr<ModelProbe> fine, finest;
-    const bool observed = budget.quantity == BudgetQuantity::Constraint;
-    const ModelCandidate refined = RefineFor(candidate, space, o.byStep);
-    const ModelCandidate refinedTwice = RefineFor(refined, space, o.byStep);
-    if (!observed) {
-        fine = factory();
-        fine->Apply(refined);
+/// RunSpan's state: the candidate, its refinement and, for a whole run or SpanOptions::third, the refinement's own
+/// refinement, run side by side from one state, and the differences they made so far.
+class SpanRun {
+public:
+    SpanRun(const ProbeFactory& factory, const ModelCandidate& c, const CandidateSpace& sp, const ErrorBudget& b,
+            double span, const SpanOptions& options)
+        : candidate(c), space(sp), budget(b), o(options) {
+        start = ProcessCpuSeconds();
+        if (o.clock) o.clock->StartPiece();
+        coarse = factory();
+        coarse->Apply(candidate);
+        observed = budget.quantity == BudgetQuantity::Constraint;
+        refined = RefineFor(candidate, space, o.byStep);
+        refinedTwice = RefineFor(refined, space, o.byStep);
+        if (!observed) {
+            fine = factory();
+            fine->Apply(refined);
+        }
+        third = (o.wholeRun || o.third) && !observed;
+        // A whole run is judged where the budget bounds it, at the end (energy and position; constraint error is
+        // observed).
+        atEnd = o.wholeRun && budget.quantity != BudgetQuantity::Constraint;
+        if (third) {
+            finest = factory();
+            finest->Apply(refinedTwice);
+        }
+        q = QuantityProbe{budget.quantity, 1.0, {}, {}, false, {}, 0.0};
+        if (budget.quantity == BudgetQuantity::Energy) {
+            q.energyScale = std::max(std::fabs(WorldEnergy(coarse->World())), 1e-12);
+        }
+        q2 = q;  // the refinement against the third probe
+        warm = observed ? 0 : o.warmSteps;
+        measured = std::max(2LL, std::llround(span / candidate.step));
+        samples = static_cast<int>(std::min<long long>(256, measured));
     }
-    const bool third = (wholeRun || o.third) && !observed;
-    // A whole run is judged where the budget bounds it, at the end (energy and position; constraint error is observed).
-    const bool atEnd = wholeRun && budget.quantity != BudgetQuantity::Constraint;
-    if (third) {
-        finest = factory();
-        finest->Apply(refinedTwice);
+
+    /// Runs the warm-up and the measured part (up to a miss, the CPU limit or a blow-up) and says what it found.
+    SpanResult Run() {
+        Measure();
+        Account();
+        if (!ok) return r;
+        return Conclude();
     }
-    QuantityProbe q{budget.quantity, 1.0, {}, {}, false, {}, 0.0};
-    if (budget.quantity == BudgetQuantity::Energy) {
-        q.energyScale = std::max(std::fabs(WorldEnergy(coarse->World())), 1e-12);
-    }
-    QuantityProbe q2 = q;  // the refinement against the third probe
-    const long long warm = observed ? 0 : warmSteps;
-    const long long measured = std::max(2LL, std::llround(span / candidate.step));
-    const int samples = static_cast<int>(std::min<long long>(256, measured));
-    double half = 0.0, full = 0.0;  // running maximum at the measured part's middle and end
-    double finer = 0.0;             // the third probe's: the largest over the run of the finer pair's difference
-    double last = 0.0;              // the difference at the end
-    bool ok = true;
-    auto advance = [&](double t) {
+
+private:
+    bool Advance(double t) {
         if (!coarse->AdvanceTo(t)) {
             r.stable = false;
             return false;
@@ -173,76 +180,87 @@ SpanResult RunSpan(const ProbeFactory& factory, const ModelCandidate& candidate,
             return false;
         }
         return true;
-    };
-    if (warm > 0) {
-        ok = advance(candidate.step * static_cast<double>(warm));
-        if (ok) q.Rebase(*coarse, fine.get());
     }
-    long long reached = warm;  // steps of the candidate run, the warm-up included
-    const double own = PredictedWork(candidate, space);
-    const double perSecond =
-        own + (observed ? 0.0 : PredictedWork(refined, space)) + (third ? PredictedWork(refinedTwice, space) : 0.0);
-    const double factor = observed ? 1.0 : RichardsonFactor(OrderOf(candidate, space));
-    for (int s = 1; ok && s <= samples; ++s) {
-        reached = warm + (measured * s) / samples;
-        ok = advance(candidate.step * static_cast<double>(reached));
-        if (!ok) break;
-        const double d = q.Measure(*coarse, fine.get());
-        if (!std::isfinite(d)) {
-            r.stable = false;
-            ok = false;
-            break;
+
+    void Measure() {
+        if (warm > 0) {
+            ok = Advance(candidate.step * static_cast<double>(warm));
+            if (ok) q.Rebase(*coarse, fine.get());
         }
-        full = std::max(full, d);
-        last = d;
-        if (third && !atEnd) finer = std::max(finer, q2.Measure(*fine, finest.get()));
-        if (2 * s <= samples) half = full;
-        if (missBound > 0.0 && !atEnd && s < samples && factor * full > missBound) {
-            r.missedAt = candidate.step * static_cast<double>(reached - warm);
-            break;
-        }
-        if (clock && s < samples && clock->Poll(start, candidate.step * static_cast<double>(reached) * perSecond)) {
-            r.stopped = true;
-            break;
+        reached = warm;
+        own = PredictedWork(candidate, space);
+        perSecond =
+            own + (observed ? 0.0 : PredictedWork(refined, space)) + (third ? PredictedWork(refinedTwice, space) : 0.0);
+        factor = observed ? 1.0 : RichardsonFactor(OrderOf(candidate, space));
+        for (int s = 1; ok && s <= samples; ++s) {
+            reached = warm + (measured * s) / samples;
+            ok = Advance(candidate.step * static_cast<double>(reached));
+            if (!ok) break;
+            const double d = q.Measure(*coarse, fine.get());
+            if (!std::isfinite(d)) {
+                r.stable = false;
+                ok = false;
+                break;
+            }
+            full = std::max(full, d);
+            last = d;
+            if (third && !atEnd) finer = std::max(finer, q2.Measure(*fine, finest.get()));
+            if (2 * s <= samples) half = full;
+            if (o.missBound > 0.0 && !atEnd && s < samples && factor * full > o.missBound) {
+                r.missedAt = candidate.step * static_cast<double>(reached - warm);
+                break;
+            }
+            if (o.clock && s < samples &&
+                o.clock->Poll(start, candidate.step * static_cast<double>(reached) * perSecond)) {
+                r.stopped = true;
+                break;
+            }
         }
     }
-    r.probeCpuSeconds = ProcessCpuSeconds() - start;
-    r.simulated = candidate.step * static_cast<double>(reached);
-    r.share = static_cast<double>(reached) / static_cast<double>(warm + measured);
-    r.work = r.simulated * perSecond;
-    // The candidate's part of the span's CPU, by predicted work: the process's CPU clock is a system call (about
-    // 0.25 us), and reading it around every sample's advance was half a microsecond problem's calibration (the
-    // projectile's: 69 us with it, 36 us without).
-    r.cpuSeconds = r.probeCpuSeconds * own / perSecond;
-    if (clock) clock->Add(r.probeCpuSeconds, r.work);
-    // The finest probe that ran sets the rounding level: it made the most steps.
-    const ModelCandidate& finestRun = third ? refinedTwice : refined;
-    r.noise = ConvergenceNoise(budget.quantity, q.b, observed ? 0.0 : r.simulated * UpdatesPerSecond(finestRun, space));
-    if (!ok) return r;
-    const double length = candidate.step * static_cast<double>(measured);
-    if (r.missedAt >= 0.0 || r.stopped) {
-        // A lower bound: the difference so far, nothing extrapolated.
+
+    /// The span's cost: CPU, simulated time, share, work, and the rounding level of its finest probe.
+    void Account() {
+        r.probeCpuSeconds = ProcessCpuSeconds() - start;
+        r.simulated = candidate.step * static_cast<double>(reached);
+        r.share = static_cast<double>(reached) / static_cast<double>(warm + measured);
+        r.work = r.simulated * perSecond;
+        // The candidate's part of the span's CPU, by predicted work: the thread's CPU clock is a system call (about
+        // 0.25 us), and reading it around every sample's advance was half a microsecond problem's calibration (the
+        // projectile's: 69 us with it, 36 us without).
+        r.cpuSeconds = r.probeCpuSeconds * own / perSecond;
+        if (o.clock) o.clock->Add(r.probeCpuSeconds, r.work);
+        // The finest probe that ran sets the rounding level: it made the most steps.
+        const ModelCandidate& finestRun = third ? refinedTwice : refined;
+        r.noise =
+            ConvergenceNoise(budget.quantity, q.b, observed ? 0.0 : r.simulated * UpdatesPerSecond(finestRun, space));
+    }
+
+    SpanResult Conclude() {
+        const double length = candidate.step * static_cast<double>(measured);
         r.observed = full;
         r.length = length;
         r.factor = factor;
-        r.growth = 0.0;
+        if (r.missedAt >= 0.0 || r.stopped) {
+            r.growth = 0.0;  // a lower bound: the difference so far, nothing extrapolated
+            return r;
+        }
+        // Growth in time, fitted from the measured part's halves, 0 (bounded: a symplectic integrator's energy
+        // error, a stack that settled) to 1 (a drift: a phase error, a velocity bias). Nothing is extrapolated
+        // faster than linearly: an instability starting is left to the live checks.
+        double growth = 1.0;
+        if (full > 0.0 && half > 0.0) growth = std::clamp(std::log2(full / half), 0.0, 1.0);
+        if (o.fixedGrowth >= 0.0) growth = o.fixedGrowth;
+        r.growth = growth;
+        if (third) ConcludeThird();
         return r;
     }
-    // Growth in time, fitted from the measured part's halves, 0 (bounded: a symplectic integrator's energy error, a
-    // stack that settled) to 1 (a drift: a phase error, a velocity bias). Nothing is extrapolated faster than
-    // linearly: an instability starting is left to the live checks.
-    double growth = 1.0;
-    if (full > 0.0 && half > 0.0) growth = std::clamp(std::log2(full / half), 0.0, 1.0);
-    if (fixedGrowth >= 0.0) growth = fixedGrowth;
-    r.growth = growth;
-    r.observed = full;
-    r.length = length;
-    r.factor = factor;
-    if (third) {
+
+    /// With a third probe: the finer pair's difference, times 2^p, where it says more than the candidate's own.
+    void ConcludeThird() {
         if (atEnd) finer = q2.Measure(*fine, finest.get());
         if (!std::isfinite(finer)) {
             r.observed = kInf;  // as a refinement that blew up: the candidate itself ran
-            return r;
+            return;
         }
         const double predicted = std::pow(2.0, OrderOf(candidate, space)) * finer;
         const double pair = atEnd ? last : full;
@@ -258,7 +276,27 @@ SpanResult RunSpan(const ProbeFactory& factory, const ModelCandidate& candidate,
         }
         r.growth = 0.0;  // nothing is extrapolated: the span is the run
     }
-    return r;
+
+    const ModelCandidate& candidate;
+    const CandidateSpace& space;
+    const ErrorBudget& budget;
+    const SpanOptions& o;
+    SpanResult r;
+    bool observed = false, third = false, atEnd = false, ok = true;
+    ModelCandidate refined, refinedTwice;
+    std::unique_ptr<ModelProbe> coarse, fine, finest;
+    QuantityProbe q, q2;
+    long long warm = 0, measured = 0, reached = 0;
+    int samples = 0;
+    double start = 0.0, own = 0.0, perSecond = 0.0, factor = 1.0;
+    double half = 0.0, full = 0.0;  // running maximum at the measured part's middle and end
+    double finer = 0.0;             // the third probe's: the largest over the run of the finer pair's difference
+    double last = 0.0;              // the difference at the end
+};
+
+SpanResult RunSpan(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
+                   const ErrorBudget& budget, double span, const SpanOptions& o) {
+    return SpanRun(factory, candidate, space, budget, span, o).Run();
 }
 
 double SpanFor(const ChoiceSettings& s) {

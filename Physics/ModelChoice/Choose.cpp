@@ -369,11 +369,9 @@ void KeepBest(ModelChoiceResult* result, int index) {
     if (!b || rank(e) < rank(*b) || (rank(e) == rank(*b) && e.estimate < b->estimate)) result->best = index;
 }
 
-}  // namespace
-
-ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace& space, const ErrorBudget& budget,
-                              const ChoiceSettings& settings) {
-    ModelChoiceResult result;
+/// Every candidate of `space` in result->candidates (model and predicted work), and their indices cheapest first.
+std::vector<std::size_t> CostOrder(const CandidateSpace& space, ModelChoiceResult* out) {
+    ModelChoiceResult& result = *out;
     const std::vector<ModelCandidate> all = EnumerateCandidates(space);
     result.candidates.resize(all.size());
     std::vector<std::size_t> order(all.size());
@@ -389,6 +387,62 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
         const double wa = result.candidates[a].predictedWork, wb = result.candidates[b].predictedWork;
         return wa < wb || (wa == wb && a < b);
     });
+    return order;
+}
+
+/// Why candidate order[k], `e`, need not be run given the candidates before it (empty: it must be).
+std::string WhySkip(const ModelChoiceResult& result, const std::vector<std::size_t>& order, std::size_t k,
+                    const CandidateEstimate& e, const CandidateSpace& space, double bound) {
+    // Skip what an evaluated candidate of the same family already rules out: one that is no finer in step
+    // and no richer in passes than a candidate that missed the budget (or blew up) misses it too; and a finer
+    // step is predicted, by the candidate's order, from the nearest coarser step of the family with the same
+    // passes that was estimated, when that is the next rung (coarser steps are often outside the asymptotic
+    // range, where an error does not shrink with the step as its order says).
+    std::string why;
+    const CandidateEstimate* nearest = nullptr;
+    for (std::size_t j = 0; j < k && why.empty(); ++j) {
+        const CandidateEstimate& f = result.candidates[order[j]];
+        if (!f.evaluated || f.meets || !SameFamily(f.model, e.model)) continue;
+        if (e.model.step >= f.model.step && Passes(e.model) <= Passes(f.model)) {
+            why = "not run: a finer model of its family missed the budget";
+        } else if (Passes(e.model) == Passes(f.model) && f.stable && std::isfinite(f.estimate) &&
+                   f.model.step > e.model.step && (!nearest || f.model.step < nearest->model.step)) {
+            nearest = &f;
+        } else if (e.model.step == f.model.step && Passes(e.model) > Passes(f.model) && f.stable && !f.partial &&
+                   f.estimate < 64.0 * bound) {
+            // Near the budget, more passes at this step stopped helping (doubling them or more took off less
+            // than a fifth: the step's own error dominates): a
+            // richer candidate at the same step is not run. Far from it, a solve that has not converged at all
+            // says nothing about how the next passes will do.
+            for (std::size_t i = 0; i < j && why.empty(); ++i) {
+                const CandidateEstimate& g = result.candidates[order[i]];
+                if (g.evaluated && !g.meets && g.stable && !g.partial && SameFamily(g.model, f.model) &&
+                    g.model.step == f.model.step && Passes(g.model) < Passes(f.model) &&
+                    f.estimate > 0.8 * g.estimate) {
+                    why = "not run: more passes stopped helping its family at this step";
+                }
+            }
+        }
+    }
+    if (why.empty() && nearest && nearest->model.step <= 2.5 * e.model.step) {
+        const double predicted =
+            nearest->estimate * std::pow(e.model.step / nearest->model.step, OrderOf(e.model, space));
+        if (predicted > 8.0 * bound) {
+            char text[120];
+            std::snprintf(text, sizeof text, "not run: predicted %.3g from its family's dt %g s", predicted,
+                          nearest->model.step);
+            why = text;
+        }
+    }
+    return why;
+}
+
+}  // namespace
+
+ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace& space, const ErrorBudget& budget,
+                              const ChoiceSettings& settings) {
+    ModelChoiceResult result;
+    const std::vector<std::size_t> order = CostOrder(space, &result);
     const double span = SpanFor(settings);
     result.spanSeconds = span;
     const double bound = budget.bound / settings.safety;
@@ -406,47 +460,7 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
             e.note = "not run: the choice's CPU limit was reached";
             continue;
         }
-        // Skip what an evaluated candidate of the same family already rules out: one that is no finer in step
-        // and no richer in passes than a candidate that missed the budget (or blew up) misses it too; and a finer
-        // step is predicted, by the candidate's order, from the nearest coarser step of the family with the same
-        // passes that was estimated, when that is the next rung (coarser steps are often outside the asymptotic
-        // range, where an error does not shrink with the step as its order says).
-        std::string why;
-        const CandidateEstimate* nearest = nullptr;
-        for (std::size_t j = 0; j < k && why.empty(); ++j) {
-            const CandidateEstimate& f = result.candidates[order[j]];
-            if (!f.evaluated || f.meets || !SameFamily(f.model, e.model)) continue;
-            if (e.model.step >= f.model.step && Passes(e.model) <= Passes(f.model)) {
-                why = "not run: a finer model of its family missed the budget";
-            } else if (Passes(e.model) == Passes(f.model) && f.stable && std::isfinite(f.estimate) &&
-                       f.model.step > e.model.step && (!nearest || f.model.step < nearest->model.step)) {
-                nearest = &f;
-            } else if (e.model.step == f.model.step && Passes(e.model) > Passes(f.model) && f.stable && !f.partial &&
-                       f.estimate < 64.0 * bound) {
-                // Near the budget, more passes at this step stopped helping (doubling them or more took off less
-                // than a fifth: the step's own error dominates): a
-                // richer candidate at the same step is not run. Far from it, a solve that has not converged at all
-                // says nothing about how the next passes will do.
-                for (std::size_t i = 0; i < j && why.empty(); ++i) {
-                    const CandidateEstimate& g = result.candidates[order[i]];
-                    if (g.evaluated && !g.meets && g.stable && !g.partial && SameFamily(g.model, f.model) &&
-                        g.model.step == f.model.step && Passes(g.model) < Passes(f.model) &&
-                        f.estimate > 0.8 * g.estimate) {
-                        why = "not run: more passes stopped helping its family at this step";
-                    }
-                }
-            }
-        }
-        if (why.empty() && nearest && nearest->model.step <= 2.5 * e.model.step) {
-            const double predicted =
-                nearest->estimate * std::pow(e.model.step / nearest->model.step, OrderOf(e.model, space));
-            if (predicted > 8.0 * bound) {
-                char text[120];
-                std::snprintf(text, sizeof text, "not run: predicted %.3g from its family's dt %g s", predicted,
-                              nearest->model.step);
-                why = text;
-            }
-        }
+        const std::string why = WhySkip(result, order, k, e, space, bound);
         if (!why.empty()) {
             e.note = why;
             continue;

@@ -9,7 +9,8 @@
 // span, is the estimate at the end of the run. During the run the refinement runs again over short spans from
 // the live state; when the projected end-of-run error leaves the budget, the model is refined and the switch logged.
 //
-// Nothing here knows a scene: the host hands in a ProbeFactory that builds fresh copies of its world. GL-free.
+// Nothing here knows a scene: a probe is a copy of the host's world made in the physics layer (ProbesOf,
+// Physics/WorldCopy.h), or whatever ProbeFactory a caller hands in (the tests). GL-free.
 
 #include <functional>
 #include <memory>
@@ -102,6 +103,11 @@ public:
     /// A factory of probes that start from this probe's world as it is now.
     virtual ProbeFactory Snapshot() const = 0;
 };
+/// Probes over `world` as it is at the factory's first call: that state is copied once (WorldCopy) and each probe
+/// runs its own copy of it. `world` must outlive the factory's first call.
+ProbeFactory ProbesOf(const PhysicsSystem& world);
+/// Probes over `world` as it is now (copied at once): a snapshot the watch keeps for later.
+ProbeFactory ProbesNow(const PhysicsSystem& world);
 /// Every body's position as x, y, z triples: particles and volumes in insertion order, then cloth particles.
 void WorldPositions(const PhysicsSystem& world, std::vector<double>* out);
 /// J: kinetic energy of particles (cloth included) and volumes (linear and angular), gravitational potential
@@ -223,6 +229,9 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
 /// short span every settings.checkEvery seconds, keeps the running estimate (the error of earlier models for their
 /// share of the run plus the current model's span extrapolated with the calibration's growth) and, when it
 /// exceeds the budget itself, refines the model (the next smaller step, else more passes).
+namespace model_choice {
+struct SpanResult;  // Internals.h: one span's run
+}  // namespace model_choice
 class ModelWatch {
 public:
     ModelWatch(const CandidateSpace& space, const ErrorBudget& budget, const ChoiceSettings& settings,
@@ -264,6 +273,14 @@ private:
     ChoiceSettings settings;
     ModelCandidate current;
     double CheckSpan() const;
+    // Check's parts: run the span (false: none left to run), fold it into the running estimate (returns what the
+    // span adds, or its whole-run estimate), keep the model though the estimate is over (true, *log set once), or
+    // refine it (true when it changed).
+    bool RunCheckSpan(double time, bool event, const ProbeFactory& factory, double* fromTime,
+                      model_choice::SpanResult* out);
+    double Account(const model_choice::SpanResult& w, bool event, double fromTime, double time);
+    bool KeepsModel(double time, double latest, std::string* log);
+    bool RefineModel(double time, bool event, double fromTime, const model_choice::SpanResult& w, std::string* log);
 
     double running = 0.0;
     double predicted = 0.0;     // the calibration's estimate for the chosen model over the whole run

@@ -80,16 +80,33 @@ void ModelWatch::Observe(double time, const PhysicsSystem& world) {
 
 bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* log) {
     if (!Due(time)) return false;
-    const double T = settings.runSeconds;
     const bool event = eventPending && snapshot;
+    double fromTime = time;
+    SpanResult w;
+    if (!RunCheckSpan(time, event, factory, &fromTime, &w)) return false;
+    const double latest = Account(w, event, fromTime, time);
+    // The model was chosen with the safety factor's margin; it is changed only when the estimate says the budget
+    // itself will be missed (a margin, so a model chosen near the edge does not flip on span-to-span noise).
+    if (running <= budget.bound) {
+        missed = false;
+        return false;
+    }
+    // Unless the model is refined below, the run misses its budget as things stand (Missed).
+    if (!missed) missedAt = time;
+    missed = true;
+    if (KeepsModel(time, latest, log)) return false;
+    return RefineModel(time, event, fromTime, w, log);
+}
+
+bool ModelWatch::RunCheckSpan(double time, bool event, const ProbeFactory& factory, double* fromTime, SpanResult* out) {
+    const double T = settings.runSeconds;
     // An event is checked from the snapshot taken at least half a span before it, over the rest of the run; a
     // periodic check from the world as it is, for the time since the last check.
-    const ProbeFactory& from = event && previousSnapshot && snapshotTime > eventTime - 0.5 * CheckSpan()
-                                   ? previousSnapshot
-                                   : (event ? snapshot : factory);
-    const double from_time = event ? (&from == &previousSnapshot ? previousSnapshotTime : snapshotTime) : time;
+    const bool previous = event && previousSnapshot && snapshotTime > eventTime - 0.5 * CheckSpan();
+    const ProbeFactory& from = previous ? previousSnapshot : (event ? snapshot : factory);
+    *fromTime = event ? (previous ? previousSnapshotTime : snapshotTime) : time;
     // At least four steps measured, so the span's growth is fitted from more than two samples.
-    const double span = std::min(T - from_time, std::max(CheckSpan(), 4.0 * current.step));
+    const double span = std::min(T - *fromTime, std::max(CheckSpan(), 4.0 * current.step));
     if (event) {
         eventPending = false;
         ++eventChecks;
@@ -102,41 +119,39 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
     SpanOptions o;
     o.warmSteps = warm;
     o.fixedGrowth = budget.quantity == BudgetQuantity::Position ? -1.0 : growth;
-    const SpanResult w = RunSpan(from, current, space, budget, span, o);
-    cpuSeconds += w.probeCpuSeconds;
-    work += w.work;
+    *out = RunSpan(from, current, space, budget, span, o);
+    cpuSeconds += out->probeCpuSeconds;
+    work += out->work;
     ++checks;
+    return true;
+}
+
+double ModelWatch::Account(const SpanResult& w, bool event, double fromTime, double time) {
+    const double T = settings.runSeconds;
     const bool ok = w.stable && std::isfinite(w.observed);
-    double latest = 0.0;  // what this span adds (position) or its whole-run estimate (energy, constraint)
     if (budget.quantity == BudgetQuantity::Position) {
         // A periodic span's rate stands for the time since the last check; an event's difference grows over the
         // rest of the run; the calibration's estimate, scaled for refinements since, stands for the rest.
-        const double rest = event ? T - from_time : time - lastCounted;
+        const double rest = event ? T - fromTime : time - lastCounted;
         if (!event) lastCounted = time;
         // Extrapolated with the span's own growth (a settled stack's jitter does not add up).
-        latest = ok ? w.factor * w.observed * std::pow(std::max(rest / w.length, 1.0), w.growth) : kInf;
+        const double latest = ok ? w.factor * w.observed * std::pow(std::max(rest / w.length, 1.0), w.growth) : kInf;
         measured += latest;
         running = measured + predicted * scale * (T - time) / T;
-    } else {
-        // Energy and constraint: the span's regime taken as the whole run's (with the calibration's growth), for
-        // the current model's share of the run, plus what earlier models left.
-        const double estimate = ok ? (budget.quantity == BudgetQuantity::Constraint
-                                          ? w.observed
-                                          : w.factor * w.observed * std::pow(std::max(T / w.length, 1.0), growth))
-                                   : kInf;
-        lastEstimate = std::max(event ? lastEstimate : 0.0, estimate);
-        latest = estimate;
-        running = carried + lastEstimate * (T - modelStart) / T;
+        return latest;
     }
-    // The model was chosen with the safety factor's margin; it is changed only when the estimate says the budget
-    // itself will be missed (a margin, so a model chosen near the edge does not flip on span-to-span noise).
-    if (running <= budget.bound) {
-        missed = false;
-        return false;
-    }
-    // Unless the model is refined below, the run misses its budget as things stand (Missed).
-    if (!missed) missedAt = time;
-    missed = true;
+    // Energy and constraint: the span's regime taken as the whole run's (with the calibration's growth), for the
+    // current model's share of the run, plus what earlier models left.
+    const double estimate = ok ? (budget.quantity == BudgetQuantity::Constraint
+                                      ? w.observed
+                                      : w.factor * w.observed * std::pow(std::max(T / w.length, 1.0), growth))
+                               : kInf;
+    lastEstimate = std::max(event ? lastEstimate : 0.0, estimate);
+    running = carried + lastEstimate * (T - modelStart) / T;
+    return estimate;
+}
+
+bool ModelWatch::KeepsModel(double time, double latest, std::string* log) {
     // What earlier spans measured (or earlier models left) is made. While it is under three times the budget,
     // refining still keeps the end near it; beyond, no finer model can: say so once and stop refining (it would
     // only cost).
@@ -154,7 +169,7 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
             *log = text;
             lostReported = true;
         }
-        return false;
+        return true;
     }
     // A finer model changes only the current model's part of the estimate: what its latest span adds and the
     // rest of the run it stands for. When that is less than what earlier spans and models left (which no
@@ -174,8 +189,13 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
             *log = text;
             keptReported = true;
         }
-        return false;
+        return true;
     }
+    return false;
+}
+
+bool ModelWatch::RefineModel(double time, bool event, double fromTime, const SpanResult& w, std::string* log) {
+    const double T = settings.runSeconds;
     // Refine within the family: the next smaller step the space allows, else more passes.
     ModelCandidate next = current;
     double smaller = 0.0;
@@ -209,7 +229,7 @@ bool ModelWatch::Check(double time, const ProbeFactory& factory, std::string* lo
                   "t = %.2f s: estimated %s error at the end %.3g exceeds the budget %g (%s %.3g s from t = %.2f s "
                   "differ by %.3g from the refinement): switching from %s to %s",
                   time, ToString(budget.quantity), running, budget.bound, event ? "an impact: the" : "the last",
-                  w.length, from_time, w.observed, current.Describe(space.hasParticles, space.hasVolumes).c_str(),
+                  w.length, fromTime, w.observed, current.Describe(space.hasParticles, space.hasVolumes).c_str(),
                   next.Describe(space.hasParticles, space.hasVolumes).c_str());
     *log = text;
     current = next;
