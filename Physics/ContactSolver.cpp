@@ -239,7 +239,7 @@ void AccumulatedContactSolver::Solve(const std::vector<RigidbodyVolume*>& volume
                 // cone) is solved as one row along its slip instead, so its impulse opposes the slip: the two rows'
                 // masses differ wherever the contact is off the body's axes, and their clamped sum pushed a sliding
                 // box sideways, so a box sliding at a yaw curved and slid too far, by the same amount at every step
-                // (docs/ch15.md, "Convergence of the contact solvers"). Sticking contacts are solved as before.
+                // (docs/soft-solver.md, "Convergence of the contact solvers"). Sticking contacts are solved as before.
                 const vec3 vr = RelativeVelocity(A, B, c.rA, c.rB);
                 const float v1 = Dot(vr, arb.t1), v2 = Dot(vr, arb.t2);
                 const float limit = arb.mu * c.jn;

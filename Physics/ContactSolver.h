@@ -11,7 +11,7 @@
 //   Soft         a soft step (SoftSolver.h): contacts found once per step with feature ids and a speculative
 //                margin, then per substep: integrate velocities, warm start, biased soft solve, integrate
 //                positions, relax without bias; restitution once at the end of the step.
-// docs/ch15.md has the design notes and the measured figures.
+// docs/soft-solver.md has the design notes and the measured figures.
 
 #include <cstddef>
 #include <string>
@@ -43,7 +43,8 @@ constexpr ContactSolver kAllContactSolvers[] = {ContactSolver::Book, ContactSolv
 struct SoftSolverSettings {
     /// Substeps per step, count (each: integrate velocities, warm start, solve, integrate positions, relax). 6 and
     /// 90 Hz at damping ratio 1, not Box2D's 4, 30 Hz and 10: a tower of 20 cubes and a 100 kg cube on a 1 kg one
-    /// need contacts that stiff, and the cap below needs 6 substeps for them (docs/ch15.md, "Why the defaults").
+    /// need contacts that stiff, and the cap below needs 6 substeps for them (docs/soft-solver.md, "What is measured",
+    /// why the defaults).
     int substeps = 6;
     /// Biased solve passes per substep, count (Box2D's soft step: 1).
     int iterations = 1;
@@ -65,10 +66,10 @@ struct SoftSolverSettings {
     float restitutionThreshold = 1.0f;
     /// Fraction (0..1) of last step's matched impulse applied as the warm start.
     float warmStartFactor = 1.0f;
-    /// Shock propagation (docs/ch15.md, "Mass ratios") in every solver block whose moving bodies' masses differ by
-    /// at least this factor (largest / smallest); 0 turns it off. Gauss-Seidel passes converge at a rate of
-    /// heavy / (heavy + light) per pass through a light body under a heavy one, so below this ratio the passes
-    /// hold the load and the shock pass is not run (nor paid for).
+    /// Shock propagation (docs/soft-solver.md, "Mass ratios") in every solver block whose moving bodies' masses differ
+    /// by at least this factor (largest / smallest); 0 turns it off. Gauss-Seidel passes converge at a rate of heavy /
+    /// (heavy + light) per pass through a light body under a heavy one, so below this ratio the passes hold the load
+    /// and the shock pass is not run (nor paid for).
     float shockMassRatio = 10.0f;
 };
 

@@ -81,7 +81,7 @@ void PhysicsSystem::StopAtPairLimit() {
 }
 
 void PhysicsSystem::StepSoftVolumes(StepContext& ctx) {
-    // The soft step (docs/ch15.md, "The soft-step solver"): pairs are found once per step, with every AABB grown
+    // The soft step (docs/soft-solver.md, "The soft-step solver"): pairs are found once per step, with every AABB grown
     // by the speculative margin and the body's travel over the step, so that contacts about to touch are solved
     // before they do; no travel split, no linear projection (the solver's substeps and soft bias replace both).
     const int n = std::max(settings.soft.substeps, 1);

@@ -1,6 +1,6 @@
 #pragma once
-// The soft contact solver's per-contact equations (docs/ch15.md, "The soft-step solver"), written once for both of
-// its paths: the scalar one (a pair at a time: R = float, a direction is a V4, a point is a Contact) and the
+// The soft contact solver's per-contact equations (docs/soft-solver.md, "The soft-step solver"), written once for both
+// of its paths: the scalar one (a pair at a time: R = float, a direction is a V4, a point is a Contact) and the
 // four-wide one (four pairs of one colour at a time: R = Float4, a direction is a Vec4x3, a point is a WidePoint).
 // Each lane of the wide path does the scalar path's operations in the scalar order, so both give the same bits.
 // Only SoftSolver.cpp and SoftSolverWide.cpp include this.
@@ -130,9 +130,9 @@ inline void WarmStartPoint(B& x, R invA, R invB, const D& n, const D& t1, const 
 }
 
 /// Friction (relax pass only): the TOTAL stays inside the Coulomb cone mu jn (book §15, Coulomb clamp), jn from the
-/// last pass without bias (P::support; docs/ch15.md, "Convergence of the contact solvers"). A sticking contact is two
-/// rows, t1 and t2, each with its own effective mass. A sliding one (the two rows would leave the cone) is one row
-/// along its slip, so its impulse opposes the slip: the two rows' masses differ wherever the contact is off the
+/// last pass without bias (P::support; docs/soft-solver.md, "Convergence of the contact solvers"). A sticking contact
+/// is two rows, t1 and t2, each with its own effective mass. A sliding one (the two rows would leave the cone) is one
+/// row along its slip, so its impulse opposes the slip: the two rows' masses differ wherever the contact is off the
 /// body's axes, and their clamped sum pushed a box sliding at a yaw sideways (3.3 cm off the Coulomb stop at every
 /// step; ContactSolver.ABoxSlidingAtAYawStopsWhereCoulombSays). The accumulated solver does the same.
 template <class B, class R, class D, class P>

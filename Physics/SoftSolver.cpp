@@ -1,5 +1,5 @@
 // ContactSolver::Soft (SoftSolver.h): soft contact constraints solved in substeps with a relax pass; the design and
-// the measured figures are in docs/ch15.md, "The soft-step solver".
+// the measured figures are in docs/soft-solver.md, "The soft-step solver".
 #include "Physics/SoftSolver.h"
 
 #include <algorithm>
@@ -56,8 +56,8 @@ inline void StoreMovingVelocities(const PairVelocities& x, const SoftContactSolv
 }  // namespace
 
 Softness MakeSoftness(float hertz, float zeta, float h) {
-    // Implicit spring-damper over one step (docs/ch15.md, "The soft-step solver"): omega = 2 pi f, a1 = 2 zeta + h
-    // omega, a2 = h omega a1, a3 = 1 / (1 + a2); bias rate omega / a1, mass scale a2 a3, impulse scale a3.
+    // Implicit spring-damper over one step (docs/soft-solver.md, "The soft-step solver"): omega = 2 pi f, a1 = 2 zeta +
+    // h omega, a2 = h omega a1, a3 = 1 / (1 + a2); bias rate omega / a1, mass scale a2 a3, impulse scale a3.
     Softness s;
     if (!(hertz > 0.0f) || !(h > 0.0f)) return s;
     const float omega = 2.0f * kPi * hertz;
@@ -127,8 +127,7 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
             for (int k = 0; k < soft.iterations; ++k)
                 Solve(block, ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, true);
             if (!shockPoints.empty())
-                ShockPass(b, ctx.invH, staticSoftness.biasRate,
-                          soft.maxPushoutSpeed, soft.linearSlop, false);
+                ShockPass(b, ctx.invH, staticSoftness.biasRate, soft.maxPushoutSpeed, soft.linearSlop, false);
             IntegratePositions(ctx, block);
             // The first relax pass brings each pair's separations up to date as it reaches the pair (the same
             // values UpdateSeparations gives: poses do not change during a pass); without one, UpdateSeparations
@@ -137,9 +136,7 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
             for (int k = 0; k < soft.relaxIterations; ++k)
                 Solve(block, ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, false, k == 0);
             // Again after the relax pass, without push-out: the velocities the next substep starts from.
-            if (!shockPoints.empty())
-                ShockPass(b, ctx.invH, 0.0f, 0.0f, soft.linearSlop,
-                          true);
+            if (!shockPoints.empty()) ShockPass(b, ctx.invH, 0.0f, 0.0f, soft.linearSlop, true);
         }
     };
     ForEachJob(ctx.jobs, blocks.size(), solveBlock);
@@ -363,9 +360,9 @@ void SoftContactSolver::SolvePair(const Pair& pair, const Softness& softness, fl
     const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
     const V4 n = Load(pair.n), t1 = Load(pair.t1), t2 = Load(pair.t2);
     // Friction only in the relax pass, as Box2D's soft step does since 2026: the biased pass's friction was undone
-    // by the relax pass's anyway, at a third of the solve's rows (docs/ch15.md, "The soft-step solver"). It comes
-    // before the normal rows, so the pass ends on non-penetration: friction's lever arms change the corners' normal
-    // speeds, and solved last it left a cube landing flat at 5 m/s rising at 0.14 m/s (at 6 substeps; 0.008 m/s
+    // by the relax pass's anyway, at a third of the solve's rows (docs/soft-solver.md, "The soft-step solver"). It
+    // comes before the normal rows, so the pass ends on non-penetration: friction's lever arms change the corners'
+    // normal speeds, and solved last it left a cube landing flat at 5 m/s rising at 0.14 m/s (at 6 substeps; 0.008 m/s
     // this way round: SoftSolver.SpeculativeContactStopsFastBodyWithoutPopping).
     if (!useBias)
         for (std::size_t k = pair.first; k < pair.first + pair.count; ++k)

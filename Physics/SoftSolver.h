@@ -1,5 +1,5 @@
 #pragma once
-// ContactSolver::Soft: a soft step for rigid volumes (docs/ch15.md, "The soft-step solver"). Once per step the
+// ContactSolver::Soft: a soft step for rigid volumes (docs/soft-solver.md, "The soft-step solver"). Once per step the
 // candidate pairs are collided with a speculative margin (ContactManifold.h), each point is matched by feature id
 // to last step's contact of the same pair (warm start), and every contact is prepared with anchors fixed for the
 // step. Then per substep of h = dt / substeps: integrate velocities, warm start, biased soft solve, integrate

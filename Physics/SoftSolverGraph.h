@@ -1,7 +1,7 @@
 #pragma once
-// The soft solver's contact graph (docs/ch15.md, "Graph colouring"): its pairs grouped into blocks of whole islands,
-// and inside a block coloured so that the pairs of one colour share no moving body and four of them can be solved
-// at once (SoftSolverWide.cpp). Static and sleeping bodies have no colour (nothing is written to them), so every
+// The soft solver's contact graph (docs/soft-solver.md, "Graph colouring"): its pairs grouped into blocks of whole
+// islands, and inside a block coloured so that the pairs of one colour share no moving body and four of them can be
+// solved at once (SoftSolverWide.cpp). Static and sleeping bodies have no colour (nothing is written to them), so every
 // pair on the ground can share one. Pairs that find no colour, and a colour's last pair when it would be alone in
 // its batch, are solved one by one after the block's batches. Blocks, colours, batches and lanes are filled in pair
 // order, so the solve order is a fixed function of the pairs (deterministic). Storage is kept from step to step.

@@ -1,5 +1,5 @@
-// ContactSolver::Soft, shock propagation for large mass ratios (docs/ch15.md, "Mass ratios"). A light body under a
-// heavy one couples its two contacts so that each Gauss-Seidel pass moves the heavy body by light / (heavy + light)
+// ContactSolver::Soft, shock propagation for large mass ratios (docs/soft-solver.md, "Mass ratios"). A light body under
+// a heavy one couples its two contacts so that each Gauss-Seidel pass moves the heavy body by light / (heavy + light)
 // of what it should: at 1000:1 the passes of a step cannot hold the load and the heavy body sinks through. In
 // blocks whose moving bodies' masses differ by soft.shockMassRatio or more, each substep's biased passes are
 // followed by one pass (and each relax pass by another) that walks the contacts bottom up (by distance from a static
@@ -243,7 +243,7 @@ void SoftContactSolver::ShockFriction(std::size_t first, std::size_t last) {
     const float invU = sim[static_cast<std::size_t>(p.upper)].invMass;
     if (!(invU > 0.0f)) return;
     // The sideways velocity of the centres, not of the points: the light body's rocking (its turn, and the heavy
-    // body's) would otherwise be handed on to the heavy one as a slide, every substep (docs/ch15.md, "Mass
+    // body's) would otherwise be handed on to the heavy one as a slide, every substep (docs/soft-solver.md, "Mass
     // ratios"). A pair with a sphere keeps the turns, so that rolling is not braked.
     vec3 vt = U.v - L.v;
     if (p.rolls) vt = vt + Cross(U.w, p.rU) - Cross(L.w, p.rL);

@@ -1,5 +1,5 @@
-// ContactSolver::Soft, the four-wide path (docs/ch15.md, "Graph colouring"): the pairs of one batch (one colour of
-// the contact graph, SoftSolverGraph.h: no moving body twice) are solved together, one per lane, with the equations
+// ContactSolver::Soft, the four-wide path (docs/soft-solver.md, "Graph colouring"): the pairs of one batch (one colour
+// of the contact graph, SoftSolverGraph.h: no moving body twice) are solved together, one per lane, with the equations
 // of SoftContactKernel.h, the same the scalar path uses, so a lane gives the scalar path's bits.
 #include <algorithm>
 #include <cstddef>

@@ -87,7 +87,7 @@ struct WorldSettings {
     /// (the scene-file limit) has about 13 per body. Not in the book.
     std::size_t maxPairs = 250000;
     /// ContactSolver::Soft solves its pairs in batches of four by constraint-graph colour (pairs of one colour share
-    /// no moving body; docs/ch15.md, "Graph colouring"); false solves them one by one in pair order. The same
+    /// no moving body; docs/soft-solver.md, "Graph colouring"); false solves them one by one in pair order. The same
     /// equations either way, in another order. Not in the book.
     bool softGraphColouring = true;
     /// Threads the volume step may use, count: 1 is the single-thread path, 0 the process default

@@ -1,4 +1,4 @@
-// Solver manifolds (docs/ch15.md, "Solver manifolds"): box-box by SAT over the 15 axes with a face preference,
+// Solver manifolds (docs/soft-solver.md, "Solver manifolds"): box-box by SAT over the 15 axes with a face preference,
 // reference/incident face clipping in the reference box's frame with feature ids, an edge-edge single point,
 // reduction to four points, and speculative points up to `margin`. Fixed-size arrays only: nothing allocates.
 #include "Physics/Geometry/ContactManifold.h"

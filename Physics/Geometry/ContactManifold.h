@@ -1,5 +1,5 @@
 #pragma once
-// Solver manifolds for ContactSolver::Soft (docs/ch15.md, "The soft-step solver"): at most four points per pair,
+// Solver manifolds for ContactSolver::Soft (docs/soft-solver.md, "The soft-step solver"): at most four points per pair,
 // each with its separation (negative when penetrating, up to +margin for a speculative contact) and a feature id
 // that names the pair of features that made it, so a solver can match contacts across steps by id instead of
 // by distance. The book's manifolds (CollisionManifold, Manifolds.cpp) are unchanged and still drive the Book and
@@ -25,9 +25,9 @@ struct ContactManifold {
     ManifoldPoint points[kMaxManifoldPoints];
 };
 
-// Feature ids (docs/ch15.md, "Solver manifolds"). A box-box point's id names the feature of A (bits 8-15) and the
-// feature of B (bits 0-7) that made it, whichever box gave the reference face, so the same corner keeps its id
-// when the reference face changes sides. A feature byte is a kind (bits 4-5) and an index (bits 0-3):
+// Feature ids (docs/soft-solver.md, "Solver manifolds"). A box-box point's id names the feature of A (bits 8-15) and
+// the feature of B (bits 0-7) that made it, whichever box gave the reference face, so the same corner keeps its id when
+// the reference face changes sides. A feature byte is a kind (bits 4-5) and an index (bits 0-3):
 //   vertex: bit i set when the corner is on the negative side of local axis i (0-7);
 //   edge:   4 * axis + 2 (next axis negative) + 1 (the axis after negative), axes in cyclic order (0-11);
 //   face:   2 * axis + 1 on the negative side (0-5, the order of GetPlanes).
