@@ -8,7 +8,8 @@
 
 namespace {
 
-/// Spins the caller makes, waiting for a worker to finish its last job, before it yields its core.
+/// Spins the caller makes, waiting for a worker to finish its last job, before it yields its core; and the spins a
+/// worker makes before it starts yielding its core between looks at the clock.
 constexpr int kSpinsBeforeSleep = 4000;
 /// How long a worker spins, waiting for the next job, before it sleeps. The jobs of one step follow each other
 /// within microseconds to a few tenths of a millisecond (the serial passes: the grid's counting sort, the graph),
@@ -114,7 +115,9 @@ void JobPool::WorkerLoop() {
         for (int spins = 1; g == seen || (g & 1u) != 0u; ++spins) {
             Pause();
             g = generation.load();
-            if (spins % kPausesPerClockRead == 0 && std::chrono::steady_clock::now() > spinEnd) break;
+            if (spins % kPausesPerClockRead != 0 || spins < kSpinsBeforeSleep) continue;
+            if (std::chrono::steady_clock::now() > spinEnd) break;
+            std::this_thread::yield();  // past the first 0.1 ms: let a thread that waits for this core run
         }
         if (g == seen || (g & 1u) != 0u) {
             std::unique_lock<std::mutex> lock(mutex);
