@@ -176,48 +176,55 @@ void Broadphase::BuildGrid(int n, JobPool* jobs) {
         cellCounts[static_cast<std::size_t>(i)] = cells;
     });
     wide.clear();
+    entryFirst.resize(static_cast<std::size_t>(n) + 1);
     std::size_t entryCount = 0;
     for (int i = 0; i < n; ++i) {
         if (bodies[static_cast<std::size_t>(i)].wide) wide.push_back(i);
+        entryFirst[static_cast<std::size_t>(i)] = entryCount;
         entryCount += cellCounts[static_cast<std::size_t>(i)];
     }
+    entryFirst[static_cast<std::size_t>(n)] = entryCount;
+    SortEntries(n, entryCount, jobs);
+}
 
-    // Counting sort of the (cell, body) entries by a hash of the cell, filled backwards so that each bucket lists
-    // its bodies in increasing index order. An entry's flags say on which axes the body's range starts at this
-    // cell (bits 0-2) and whether the body moves (bit 3).
+void Broadphase::SortEntries(int n, std::size_t entryCount, JobPool* jobs) {
+    // Counting sort of the (cell, body) entries by a hash of the cell, so that each bucket lists its bodies in
+    // increasing index order. An entry's flags say on which axes the body's range starts at this cell (bits 0-2)
+    // and whether the body moves (bit 3). Each body's entries and their buckets are made first, in chunks of bodies
+    // on the step's threads (body i's at entryFirst[i]); the count and the placing stay on one thread, and read
+    // them in order: the same buckets, in the same order, as one pass computing them gives.
     int bucketBits = 4;
     while ((std::size_t{1} << bucketBits) < entryCount) ++bucketBits;
     const std::size_t bucketCount = std::size_t{1} << bucketBits;
-    auto bucketOf = [bucketBits](std::uint64_t key) {
-        return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> (64 - bucketBits));
-    };
-    bucketStart.assign(bucketCount + 1, 0);
-    auto forEachCell = [](const CellRange& range, auto&& visit) {
+    if (stagedEntries.size() < entryCount) GrowTo(&stagedEntries, entryCount);
+    if (entryBuckets.size() < entryCount) GrowTo(&entryBuckets, entryCount);
+    ForEachBody(jobs, n, [&](int i) {
+        const Body& body = bodies[static_cast<std::size_t>(i)];
+        if (body.wide) return;
+        const CellRange& range = cellRanges[static_cast<std::size_t>(i)];
+        const unsigned moving = body.moving ? 8u : 0u;
+        std::size_t e = entryFirst[static_cast<std::size_t>(i)];
         for (std::uint64_t z = range.max[2] + 1; z-- > range.min[2];)
             for (std::uint64_t y = range.max[1] + 1; y-- > range.min[1];)
                 for (std::uint64_t x = range.max[0] + 1; x-- > range.min[0];) {
                     const unsigned starts = static_cast<unsigned>(x == range.min[0]) |
                                             static_cast<unsigned>(y == range.min[1]) << 1 |
                                             static_cast<unsigned>(z == range.min[2]) << 2;
-                    visit(CellKey(x, y, z), starts);
+                    const std::uint64_t key = CellKey(x, y, z);
+                    stagedEntries[e] = {key, i, starts | moving};
+                    entryBuckets[e++] = static_cast<std::uint32_t>((key * 0x9E3779B97F4A7C15ull) >> (64 - bucketBits));
                 }
-    };
-    for (int i = 0; i < n; ++i)
-        if (!bodies[static_cast<std::size_t>(i)].wide)
-            forEachCell(cellRanges[static_cast<std::size_t>(i)],
-                        [&](std::uint64_t key, unsigned) { ++bucketStart[bucketOf(key)]; });
+    });
+    bucketStart.assign(bucketCount + 1, 0);
+    for (std::size_t e = 0; e < entryCount; ++e) ++bucketStart[entryBuckets[e]];
     for (std::size_t b = 1; b <= bucketCount; ++b) bucketStart[b] += bucketStart[b - 1];
     if (cellEntries.size() < entryCount) GrowTo(&cellEntries, entryCount);
+    // Filled backwards by body (each body's own entries in their order), so each bucket lists its bodies in
+    // increasing index order.
     for (int i = n - 1; i >= 0; --i) {
-        const Body& body = bodies[static_cast<std::size_t>(i)];
-        if (body.wide) continue;
-        const unsigned moving = body.moving ? 8u : 0u;
-        forEachCell(cellRanges[static_cast<std::size_t>(i)], [&](std::uint64_t key, unsigned starts) {
-            CellEntry& entry = cellEntries[static_cast<std::size_t>(--bucketStart[bucketOf(key)])];
-            entry.key = key;
-            entry.body = i;
-            entry.flags = starts | moving;
-        });
+        const std::size_t last = entryFirst[static_cast<std::size_t>(i) + 1];
+        for (std::size_t e = entryFirst[static_cast<std::size_t>(i)]; e < last; ++e)
+            cellEntries[static_cast<std::size_t>(--bucketStart[entryBuckets[e]])] = stagedEntries[e];
     }
     // bucketStart[b] is now the first entry of bucket b, bucketStart[bucketCount] the entry count.
 }

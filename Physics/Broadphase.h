@@ -50,6 +50,8 @@ private:
         unsigned flags = 0;  // bit k (0-2): the body's range starts at this cell on axis k; bit 3: the body moves
     };
     void BuildGrid(int n, JobPool* jobs);
+    /// The grid's cell entries grouped by hash bucket into cellEntries and bucketStart (BuildGrid's last part).
+    void SortEntries(int n, std::size_t entryCount, JobPool* jobs);
     /// Pairs found in the cells of hash buckets [begin, end), appended to *out; stops once `found` (shared by every
     /// chunk of buckets) passes maxPairs (false then).
     bool PairsInBuckets(std::size_t begin, std::size_t end, std::vector<std::pair<int, int>>* out,
@@ -60,14 +62,17 @@ private:
     /// Appends to *pairs and stops once it holds more than maxPairs (false then).
     bool PairsWithWideBodies(int n, std::vector<std::pair<int, int>>* pairs, std::size_t maxPairs) const;
 
-    std::vector<Body> bodies;              // by volume index
-    std::vector<CellRange> cellRanges;     // by volume index (grid bodies only)
-    std::vector<float> extents;            // scratch: each body's largest AABB side, for the cell size
-    std::vector<int> wide;                 // indices of the bodies kept out of the grid, increasing
-    std::vector<int> bucketStart;          // per hash bucket: first slot in cellEntries (counting sort), + 1 end
-    std::vector<CellEntry> cellEntries;    // (cell, body) for every covered cell, grouped by hash bucket
-    std::vector<std::pair<int, int>> raw;  // pairs as found, before ordering
-    std::vector<int> firstCount;           // scratch: pairs per first index, for the counting sort
-    std::vector<std::size_t> cellCounts;   // per body: cells its range covers (0 for a wide body)
+    std::vector<Body> bodies;                 // by volume index
+    std::vector<CellRange> cellRanges;        // by volume index (grid bodies only)
+    std::vector<float> extents;               // scratch: each body's largest AABB side, for the cell size
+    std::vector<int> wide;                    // indices of the bodies kept out of the grid, increasing
+    std::vector<int> bucketStart;             // per hash bucket: first slot in cellEntries (counting sort), + 1 end
+    std::vector<CellEntry> cellEntries;       // (cell, body) for every covered cell, grouped by hash bucket
+    std::vector<std::pair<int, int>> raw;     // pairs as found, before ordering
+    std::vector<int> firstCount;              // scratch: pairs per first index, for the counting sort
+    std::vector<std::size_t> cellCounts;      // per body: cells its range covers (0 for a wide body)
+    std::vector<std::size_t> entryFirst;      // per body: its first entry in stagedEntries, + 1 end
+    std::vector<CellEntry> stagedEntries;     // every body's entries in body order, before the counting sort
+    std::vector<std::uint32_t> entryBuckets;  // per staged entry: its hash bucket
     std::vector<std::vector<std::pair<int, int>>> chunkPairs;  // per chunk of buckets: its pairs, capacity reused
 };

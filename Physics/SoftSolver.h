@@ -221,7 +221,9 @@ private:
     /// One pass over a block's batches; `updateSeparations`: each batch first brings its separations up to date
     /// (the first relax pass after IntegratePositions does UpdateSeparations' work on the batches it visits anyway).
     void WideSolve(const Block& block, float invH, float maxPushout, float slop, bool useBias, bool updateSeparations);
-    void StoreBatchImpulses();
+    void StoreBatchImpulses(const Block& block);
+    /// blockOrder: the blocks, most rows first (the order the step's threads claim them in).
+    void OrderBlocks();
     /// One pair of the scalar passes (the overflow, or every pair without colouring).
     void WarmStartPair(const Pair& pair);
     void SolvePair(const Pair& pair, const Softness& softness, float invH, float maxPushout, float slop, bool useBias);
@@ -292,6 +294,7 @@ private:
     std::vector<unsigned char> moving;          // per body: it moves this step (BodySim::dynamic), the graph's input
     SoftContactGraph graph;                     // blocks, colours and batches of the pairs
     std::vector<WideBatch> batches;             // the graph's batches, filled
+    std::vector<std::size_t> blockOrder;        // OrderBlocks: block indices, most rows first
     std::vector<ShockPoint> shockPoints;
     std::vector<std::size_t> shockBlockStart;  // per block: its first shock point (one more entry at the end)
     std::vector<int> bodyLayer, bodyBlock, layerQueue, adjacencyStart, adjacency;  // BuildShock's scratch

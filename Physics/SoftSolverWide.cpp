@@ -199,8 +199,9 @@ void SoftContactSolver::WideSolve(const Block& block, float invH, float maxPusho
     }
 }
 
-void SoftContactSolver::StoreBatchImpulses() {
-    for (const WideBatch& batch : batches) {
+void SoftContactSolver::StoreBatchImpulses(const Block& block) {
+    for (std::size_t b = block.batchBegin; b < block.batchEnd; ++b) {
+        const WideBatch& batch = batches[b];
         for (int lane = 0; lane < 4; ++lane) {
             if (batch.pair[lane] < 0) continue;
             const Pair& pair = pairs[static_cast<std::size_t>(batch.pair[lane])];

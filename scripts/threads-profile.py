@@ -16,14 +16,15 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BEGIN, END = "<!-- threads-profile:begin -->", "<!-- threads-profile:end -->"
 
-# Passes of the soft step, by the function that runs each (the block solve is the rest of SoftContactSolver::Step).
+# Passes of the soft step, by the function that runs each (the block solve is the rest of SoftContactSolver::Step,
+# the batches' impulses back to the contacts included: each block stores its own at the end of its job).
 PASSES = [
     ("pair search (Broadphase::FindPairs)", "Broadphase::FindPairs("),
     ("body load (LoadBodies)", "SoftContactSolver::LoadBodies("),
     ("manifolds and warm-start match (Collide)", "SoftContactSolver::Collide("),
     ("islands, blocks and colours (SoftContactGraph::Build)", "SoftContactGraph::Build("),
     ("batch fill (BuildBatches)", "SoftContactSolver::BuildBatches("),
-    ("impulses back, restitution (StoreBatchImpulses, ApplyRestitution)", None),
+    ("restitution (ApplyRestitution)", "SoftContactSolver::ApplyRestitution("),
     ("body store (StoreBodies)", "SoftContactSolver::StoreBodies("),
 ]
 
@@ -84,18 +85,14 @@ def main():
     step = find(inclusive, "SoftContactSolver::Step(")
     rows, named = [], 0
     for label, prefix in PASSES:
-        if prefix is None:
-            ir = find(inclusive, "SoftContactSolver::StoreBatchImpulses(") + find(
-                inclusive, "SoftContactSolver::ApplyRestitution(")
-            par = 0
-        else:
-            ir = find(inclusive, prefix)
-            # Chunks run from the function itself or from the helpers it calls (the grid, the cell scan).
-            # The cell scan runs its buckets directly on one thread and in chunks on more (PairsInCells).
-            par = run_inside(edges, prefix) + (run_inside(edges, "Broadphase::BuildGrid(") +
-                                               find(inclusive, "Broadphase::PairsInBuckets(")
-                                               if prefix.startswith("Broadphase") else 0)
-        named += ir if not prefix or not prefix.startswith("Broadphase") else 0
+        ir = find(inclusive, prefix)
+        # Chunks run from the function itself or from the helpers it calls (the grid, its entries, the cell scan).
+        # The cell scan runs its buckets directly on one thread and in chunks on more (PairsInCells).
+        par = run_inside(edges, prefix) + (run_inside(edges, "Broadphase::BuildGrid(") +
+                                           run_inside(edges, "Broadphase::SortEntries(") +
+                                           find(inclusive, "Broadphase::PairsInBuckets(")
+                                           if prefix.startswith("Broadphase") else 0)
+        named += ir if not prefix.startswith("Broadphase") else 0
         rows.append((label, ir, par))
     pair_search = rows[0][1]
     solve_in_step = run_inside(edges, "SoftContactSolver::Step(")
