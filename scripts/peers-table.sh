@@ -20,6 +20,7 @@ for sleep in "" "--sleep"; do
     if [ -f "$out" ]; then tail -n +2 "$tmp/one.csv" >> "$out"; else cp "$tmp/one.csv" "$out"; fi
   done
 done
+mkdir -p "$root/docs/data"
 mv "$out" "$root/docs/data/peers.csv"
 python3 "$root/scripts/gen-results.py" --stamp "$root/docs/data/peers.csv" \
   --command "scripts/peers-table.sh (psb-peer-bench SCENE N --solver soft [--sleep] --csv)"
