@@ -42,6 +42,13 @@ double EncoderStallSeconds() {
     return *end == '\0' && std::isfinite(seconds) && seconds > 0.0 ? seconds : 60.0;
 }
 
+std::string FfmpegNumber(double v) {
+    std::ostringstream out;
+    out.precision(10);
+    out << v;
+    return out.str();
+}
+
 bool ProgramOnPath(const std::string& program) {
     const char* pathEnv = std::getenv("PATH");
     std::stringstream dirs(pathEnv ? pathEnv : "/usr/bin:/bin");

@@ -47,6 +47,9 @@ std::string LastLineOf(const std::string& outputPath);
 /// True if an executable named program is on PATH.
 bool ProgramOnPath(const std::string& program);
 
+/// A number as an ffmpeg argument: up to 10 significant digits ("-framerate 60", "-framerate 29.97").
+std::string FfmpegNumber(double v);
+
 /// One ffmpeg of a recording (the recorders' process wrapper): started with StartChild, its output appended to
 /// a log, waited for with WaitForFfmpeg, killed with KillChild. Not owning: a recorder hands its pid and input on
 /// (a GIF part keeps them) and kills what still runs when it aborts.

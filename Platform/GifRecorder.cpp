@@ -16,13 +16,6 @@
 
 namespace {
 
-std::string Number(double v) {
-    std::ostringstream out;
-    out.precision(10);
-    out << v;
-    return out.str();
-}
-
 bool WriteAll(int fd, const std::uint8_t* data, std::size_t size, std::string* error, const char* what) {
     while (size > 0) {
         const ssize_t n = write(fd, data, size);
@@ -257,7 +250,7 @@ std::vector<std::string> GifRecorder::RawInput(const std::string& raw, const cha
     return {"-f",          "rawvideo",
             "-pix_fmt",    pixelFormat,
             "-video_size", std::to_string(t.width) + "x" + std::to_string(t.height),
-            "-framerate",  Number(FramesPerSecond()),
+            "-framerate",  FfmpegNumber(FramesPerSecond()),
             "-i",          raw};
 }
 

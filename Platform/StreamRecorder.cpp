@@ -1,27 +1,14 @@
 #include "Platform/StreamRecorder.h"
 
-#include <sstream>
-
 #include "Platform/VideoFileCheck.h"
 #include "Platform/Yuv420.h"
-
-namespace {
-
-std::string Number(double v) {
-    std::ostringstream out;
-    out.precision(10);
-    out << v;
-    return out.str();
-}
-
-}  // namespace
 
 bool StreamRecorder::Start(std::string* error) {
     std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y", "-f", "rawvideo",
                                      // Frames arrive as yuv420p, converted by Record (Platform/Yuv420.h).
                                      "-pix_fmt", "yuv420p", "-video_size",
                                      std::to_string(EvenSide(t.width)) + "x" + std::to_string(EvenSide(t.height)),
-                                     "-framerate", Number(t.fps), "-i", "pipe:0"};
+                                     "-framerate", FfmpegNumber(t.fps), "-i", "pipe:0"};
     // Tagged as what Yuv420 makes, BT.601 in the limited range: untagged, players take frames of HD sizes for
     // BT.709.
     for (const char* a :
