@@ -1,7 +1,7 @@
-// Large mass ratios with ContactSolver::Soft at its defaults (docs/soft-solver.md, "Mass ratios"), on the shipped scene files
-// scenes/mass-*.json: 1000:1 heavy on light and light on heavy, a column of 1, 1000 and 1 kg, and 100 kg on a column
-// of ten 1 kg cubes (cubes of half extent 0.5, friction 0.6, restitution 0, no damping, on a static ground). Each
-// runs 10 s at 60 Hz and at the book's 0.03 s; the deepest penetration any contact reaches (Collisions()) and the
+// Large mass ratios with ContactSolver::Soft at its defaults (docs/soft-solver.md, "Mass ratios"), on the shipped scene
+// files scenes/mass-*.json: 1000:1 heavy on light and light on heavy, a column of 1, 1000 and 1 kg, and 100 kg on a
+// column of ten 1 kg cubes (cubes of half extent 0.5, friction 0.6, restitution 0, no damping, on a static ground).
+// Each runs 10 s at 60 Hz and at the book's 0.03 s; the deepest penetration any contact reaches (Collisions()) and the
 // largest sideways distance of any body from its start over the run are bounded. The shock pass's friction sweep
 // must hold them without braking a slide harder than Coulomb: a box launched along the top one stops where
 // v^2 / (2 mu g) says.
