@@ -28,7 +28,6 @@
 #include "Demos/Scenes/AutoModel.h"
 #include "Demos/Scenes/SceneExport.h"
 #include "Demos/Scenes/SceneFile.h"
-#include "Physics/JobPool.h"
 #include "Platform/Files/AtomicFile.h"
 #include "Platform/Files/TempRegistry.h"
 #include "Platform/HeadlessContext.h"

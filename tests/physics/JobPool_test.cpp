@@ -7,12 +7,15 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstring>
+#include <thread>
 #include <vector>
 
 #include "Demos/Scenes/WorldBuilder.h"
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
+#include "tests/support/Volumes.h"
 
 namespace {
 
@@ -26,6 +29,21 @@ TEST(JobPool, RunsEveryJobExactlyOnceOnAnyThreadCount) {
             for (std::size_t i = 0; i < count; ++i) EXPECT_EQ(runs[i].load(), 3) << threads << " threads, job " << i;
         }
     }
+}
+
+// A pool of two really runs two jobs at once: each job waits (up to 10 s) until the other has started, which a pool
+// that ran its jobs one after the other on the caller would never let happen.
+TEST(JobPool, TwoThreadsRunTwoJobsAtOnce) {
+    JobPool pool(2);
+    std::atomic<int> started{0};
+    std::atomic<int> metTheOther{0};
+    pool.ForEach(2, [&](std::size_t) {
+        ++started;
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+        while (started.load() < 2 && std::chrono::steady_clock::now() < deadline) std::this_thread::yield();
+        if (started.load() == 2) ++metTheOther;
+    });
+    EXPECT_EQ(metTheOther.load(), 2);
 }
 
 TEST(JobPool, OneThreadRunsTheJobsInOrderOnTheCaller) {
@@ -64,16 +82,7 @@ std::vector<unsigned char> StateAfter(const std::vector<BodySpec>& specs, Contac
     world.system.settings.contactSolver = solver;
     world.system.settings.threads = threads;
     for (int s = 0; s < steps; ++s) world.system.Update(1.0f / 60.0f);
-    std::vector<unsigned char> bytes;
-    for (std::size_t i = 0; i < world.Bodies().size(); ++i) {
-        const RigidbodyVolume& b = world.Body(i);
-        const float values[13] = {b.position.x,    b.position.y,    b.position.z, b.orientation.x, b.orientation.y,
-                                  b.orientation.z, b.orientation.w, b.velocity.x, b.velocity.y,    b.velocity.z,
-                                  b.angVel.x,      b.angVel.y,      b.angVel.z};
-        const unsigned char* p = reinterpret_cast<const unsigned char*>(values);
-        bytes.insert(bytes.end(), p, p + sizeof values);
-    }
-    return bytes;
+    return Snapshot(world.Bodies());
 }
 
 void ExpectSameBitsOnOneTwoAndThreeThreads(const std::vector<BodySpec>& specs, ContactSolver solver, int steps) {
