@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <string>
 
 namespace {
 
@@ -51,6 +52,77 @@ bool ParseHeader(const std::vector<std::uint8_t>& b, Part* p) {
     return b.size() >= p->tableEnd;
 }
 
+/// How one part's blocks are copied into the joined file.
+struct PartCopy {
+    const std::vector<std::uint8_t>& b;
+    const Part& part;
+    bool isFirst;
+    bool sameTable;  // the part's global table equals the first part's
+    std::string name;
+    std::vector<std::uint8_t>* out;
+    std::string* error;
+
+    bool Fail(const char* what) const {
+        *error = name + " " + what;
+        return false;
+    }
+    void Copy(std::size_t from, std::size_t to) const {
+        out->insert(out->end(), b.begin() + std::ptrdiff_t(from), b.begin() + std::ptrdiff_t(to));
+    }
+
+    /// An extension: label, then sub-blocks. Later parts' application extensions (the loop count) are dropped.
+    bool Extension(Reader& r, std::size_t start) const {
+        if (!r.Has(1)) return Fail("ends inside an extension");
+        const std::uint8_t label = r.Byte();
+        if (!r.SkipSubBlocks()) return Fail("ends inside an extension");
+        if (isFirst || label != 0xFF) Copy(start, r.At());
+        return true;
+    }
+
+    /// An image: descriptor, optional local table, LZW code size, sub-blocks.
+    bool Image(Reader& r, std::size_t start) const {
+        if (!r.Has(9)) return Fail("ends inside an image descriptor");
+        r.Skip(8);
+        const std::uint8_t packed = r.Byte();
+        const std::size_t local = ColourTableSize(packed);
+        if (!r.Has(local + 1)) return Fail("ends inside an image");
+        r.Skip(local + 1);
+        if (!r.SkipSubBlocks()) return Fail("ends inside an image");
+        if (isFirst || local > 0 || sameTable || !part.hasTable) {
+            Copy(start, r.At());
+            return true;
+        }
+        // A later part's images need its own palette: the descriptor with a local table announced (bit 7, the
+        // part's table size in bits 0-2; interlace, bit 6, kept), the part's global table, then the image data.
+        Copy(start, start + 9);
+        out->push_back(std::uint8_t((packed & 0x40) | 0x80 | part.tableBits));
+        Copy(kHeaderSize, part.tableEnd);
+        Copy(start + 10, r.At());
+        return true;
+    }
+
+    /// Every block after the header up to the trailer.
+    bool Blocks() const {
+        Reader r(b, part.tableEnd);
+        for (;;) {
+            if (!r.Has(1)) return Fail("ends before its trailer");
+            const std::size_t start = r.At();
+            const std::uint8_t kind = r.Byte();
+            if (kind == 0x3B) return true;
+            const bool ok = kind == 0x21   ? Extension(r, start)
+                            : kind == 0x2C ? Image(r, start)
+                                           : UnknownBlock(kind, start);
+            if (!ok) return false;
+        }
+    }
+
+    bool UnknownBlock(std::uint8_t kind, std::size_t start) const {
+        *error = name + " has an unknown block (byte " + std::to_string(int(kind)) + " at offset " +
+                 std::to_string(start) + ")";
+        return false;
+    }
+};
+
 }  // namespace
 
 bool JoinGifs(const std::vector<std::vector<std::uint8_t>>& parts, std::vector<std::uint8_t>* out, std::string* error) {
@@ -75,66 +147,11 @@ bool JoinGifs(const std::vector<std::vector<std::uint8_t>>& parts, std::vector<s
             *error = name + " has another screen size than the first";
             return false;
         }
-        // A later part's images need its own palette unless the first part's global table is the same.
         const bool sameTable = part.hasTable == first.hasTable && part.tableEnd == first.tableEnd &&
                                std::equal(b.begin() + kHeaderSize, b.begin() + std::ptrdiff_t(part.tableEnd),
                                           parts[0].begin() + kHeaderSize);
-        Reader r(b, part.tableEnd);
-        bool ended = false;
-        while (!ended) {
-            if (!r.Has(1)) {
-                *error = name + " ends before its trailer";
-                return false;
-            }
-            const std::size_t start = r.At();
-            const std::uint8_t kind = r.Byte();
-            if (kind == 0x3B) {
-                ended = true;
-            } else if (kind == 0x21) {  // extension: label, then sub-blocks
-                if (!r.Has(1)) {
-                    *error = name + " ends inside an extension";
-                    return false;
-                }
-                const std::uint8_t label = r.Byte();
-                if (!r.SkipSubBlocks()) {
-                    *error = name + " ends inside an extension";
-                    return false;
-                }
-                if (k == 0 || label != 0xFF)  // later parts' application extensions (the loop count) go
-                    out->insert(out->end(), b.begin() + std::ptrdiff_t(start), b.begin() + std::ptrdiff_t(r.At()));
-            } else if (kind == 0x2C) {  // image: descriptor, optional local table, LZW code size, sub-blocks
-                if (!r.Has(9)) {
-                    *error = name + " ends inside an image descriptor";
-                    return false;
-                }
-                r.Skip(8);
-                const std::uint8_t packed = r.Byte();
-                const std::size_t local = ColourTableSize(packed);
-                if (!r.Has(local + 1)) {
-                    *error = name + " ends inside an image";
-                    return false;
-                }
-                r.Skip(local + 1);
-                if (!r.SkipSubBlocks()) {
-                    *error = name + " ends inside an image";
-                    return false;
-                }
-                if (k == 0 || local > 0 || sameTable || !part.hasTable) {
-                    out->insert(out->end(), b.begin() + std::ptrdiff_t(start), b.begin() + std::ptrdiff_t(r.At()));
-                } else {
-                    // The descriptor with a local table announced (bit 7, the part's table size in bits 0-2;
-                    // interlace, bit 6, kept), the part's global table, then the image data as it was.
-                    out->insert(out->end(), b.begin() + std::ptrdiff_t(start), b.begin() + std::ptrdiff_t(start + 9));
-                    out->push_back(std::uint8_t((packed & 0x40) | 0x80 | part.tableBits));
-                    out->insert(out->end(), b.begin() + kHeaderSize, b.begin() + std::ptrdiff_t(part.tableEnd));
-                    out->insert(out->end(), b.begin() + std::ptrdiff_t(start + 10), b.begin() + std::ptrdiff_t(r.At()));
-                }
-            } else {
-                *error = name + " has an unknown block (byte " + std::to_string(int(kind)) + " at offset " +
-                         std::to_string(start) + ")";
-                return false;
-            }
-        }
+        const PartCopy copy{b, part, k == 0, sameTable, name, out, error};
+        if (!copy.Blocks()) return false;
     }
     out->push_back(0x3B);
     return true;

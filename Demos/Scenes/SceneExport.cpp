@@ -253,17 +253,10 @@ SceneDescription DescribeWorld(const PhysicsSystem& system, const std::string& n
     return describer.d;
 }
 
-std::string WriteSceneText(const SceneDescription& d) {
-    Json root = Json::object();
-    root["format"] = d.format;
-    root["name"] = d.name;
-    root["duration"] = J(d.duration);
-    if (d.autoModel.Auto()) {  // a fixed model writes neither key, so exports without auto stay as they were
-        root["model"] = "auto";
-        root["budget"] = {{"quantity", ToString(static_cast<BudgetQuantity>(d.autoModel.quantity))},
-                          {"bound", J(d.autoModel.bound)}};
-    }
-    const SceneWorld& w = d.world;
+namespace {
+
+/// The scene file's "world" object.
+Json WorldJson(const SceneWorld& w) {
     Json world = {{"gravity", J(w.gravity)},
                   {"integrator", ToString(w.integrator)},
                   {"contactSolver", ToString(w.contactSolver)},
@@ -281,40 +274,70 @@ std::string WriteSceneText(const SceneDescription& d) {
     // Written only where they differ from the defaults (docs/scenes.md, "Export").
     if (const Json soft = SoftObject(w.soft); !soft.empty()) world["soft"] = soft;
     if (const Json sleep = SleepValue(w.sleep); !sleep.is_null()) world["sleep"] = sleep;
-    root["world"] = world;
+    return world;
+}
+
+/// One body's object in the scene file's "bodies" list.
+Json BodyJson(const SceneBody& b) {
+    Json o = {{"id", b.id}, {"position", J(b.position)}};
+    o["velocity"] = J(b.velocity);
+    o["mass"] = J(b.mass);
+    o["restitution"] = J(b.restitution);
+    o["velocityRetention"] = J(b.velocityRetention);
+    if (b.kind == SceneBodyKind::Particle) {
+        o["type"] = "particle";
+    } else {
+        o["type"] = b.kind == SceneBodyKind::Sphere ? "sphere" : "box";
+        if (b.kind == SceneBodyKind::Sphere) {
+            o["radius"] = J(b.radius);
+        } else {
+            o["halfExtents"] = J(b.halfExtents);
+        }
+        if (b.hasQuaternion) {
+            const quat& q = b.orientation;
+            o["quaternion"] = Json::array({Shortest(q.x), Shortest(q.y), Shortest(q.z), Shortest(q.w)});
+        } else {
+            o["euler"] = J(b.eulerDegrees);
+        }
+        o["angularVelocity"] = J(b.angularVelocity);
+        o["friction"] = J(b.friction);
+        // Only where it differs from the engine's default, so the shipped exports keep their text.
+        if (b.velocityEpsilon != SceneBody().velocityEpsilon) o["velocityEpsilon"] = J(b.velocityEpsilon);
+    }
+    if (b.hasColor) o["color"] = J(b.color);
+    return o;
+}
+
+/// One cloth's object in the scene file's "cloths" list.
+Json ClothJson(const SceneCloth& c) {
+    return {{"gridSize", c.gridSize},
+            {"spacing", J(c.spacing)},
+            {"position", J(c.position)},
+            {"particleMass", J(c.particleMass)},
+            {"velocityRetention", J(c.velocityRetention)},
+            {"structural", {{"stiffness", J(c.structuralStiffness)}, {"damping", J(c.structuralDamping)}}},
+            {"shear", {{"stiffness", J(c.shearStiffness)}, {"damping", J(c.shearDamping)}}},
+            {"bend", {{"stiffness", J(c.bendStiffness)}, {"damping", J(c.bendDamping)}}}};
+}
+
+}  // namespace
+
+std::string WriteSceneText(const SceneDescription& d) {
+    Json root = Json::object();
+    root["format"] = d.format;
+    root["name"] = d.name;
+    root["duration"] = J(d.duration);
+    if (d.autoModel.Auto()) {  // a fixed model writes neither key, so exports without auto stay as they were
+        root["model"] = "auto";
+        root["budget"] = {{"quantity", ToString(static_cast<BudgetQuantity>(d.autoModel.quantity))},
+                          {"bound", J(d.autoModel.bound)}};
+    }
+    root["world"] = WorldJson(d.world);
     root["camera"] = {{"target", J(d.camera.target)},
                       {"rotation", Json::array({Shortest(d.camera.rotation.x), Shortest(d.camera.rotation.y)})},
                       {"zoom", J(d.camera.zoom)}};
     Json bodies = Json::array();
-    for (const SceneBody& b : d.bodies) {
-        Json o = {{"id", b.id}, {"position", J(b.position)}};
-        o["velocity"] = J(b.velocity);
-        o["mass"] = J(b.mass);
-        o["restitution"] = J(b.restitution);
-        o["velocityRetention"] = J(b.velocityRetention);
-        if (b.kind == SceneBodyKind::Particle) {
-            o["type"] = "particle";
-        } else {
-            o["type"] = b.kind == SceneBodyKind::Sphere ? "sphere" : "box";
-            if (b.kind == SceneBodyKind::Sphere) {
-                o["radius"] = J(b.radius);
-            } else {
-                o["halfExtents"] = J(b.halfExtents);
-            }
-            if (b.hasQuaternion) {
-                const quat& q = b.orientation;
-                o["quaternion"] = Json::array({Shortest(q.x), Shortest(q.y), Shortest(q.z), Shortest(q.w)});
-            } else {
-                o["euler"] = J(b.eulerDegrees);
-            }
-            o["angularVelocity"] = J(b.angularVelocity);
-            o["friction"] = J(b.friction);
-            // Only where it differs from the engine's default, so the shipped exports keep their text.
-            if (b.velocityEpsilon != SceneBody().velocityEpsilon) o["velocityEpsilon"] = J(b.velocityEpsilon);
-        }
-        if (b.hasColor) o["color"] = J(b.color);
-        bodies.push_back(o);
-    }
+    for (const SceneBody& b : d.bodies) bodies.push_back(BodyJson(b));
     root["bodies"] = bodies;
     Json constraints = Json::array();
     for (const SceneConstraint& c : d.constraints) {
@@ -337,17 +360,7 @@ std::string WriteSceneText(const SceneDescription& d) {
     }
     root["joints"] = joints;
     Json cloths = Json::array();
-    for (const SceneCloth& c : d.cloths) {
-        cloths.push_back(
-            {{"gridSize", c.gridSize},
-             {"spacing", J(c.spacing)},
-             {"position", J(c.position)},
-             {"particleMass", J(c.particleMass)},
-             {"velocityRetention", J(c.velocityRetention)},
-             {"structural", {{"stiffness", J(c.structuralStiffness)}, {"damping", J(c.structuralDamping)}}},
-             {"shear", {{"stiffness", J(c.shearStiffness)}, {"damping", J(c.shearDamping)}}},
-             {"bend", {{"stiffness", J(c.bendStiffness)}, {"damping", J(c.bendDamping)}}}});
-    }
+    for (const SceneCloth& c : d.cloths) cloths.push_back(ClothJson(c));
     root["cloths"] = cloths;
     return root.dump(2) + "\n";
 }

@@ -25,6 +25,35 @@ std::string OneLine(std::string text) {
     return text;
 }
 
+/// Checks the file before tinyobjloader reads it: it opens, it is not a directory, and every face has at least 3
+/// vertices (tinyobjloader silently drops shorter faces). False with *error set otherwise.
+bool PrecheckObj(const std::string& path, std::string* error) {
+    std::ifstream probe(path, std::ios::in | std::ios::binary);
+    if (!probe) return Fail(error, path, std::string("cannot open: ") + std::strerror(errno));
+    std::string line;
+    int lineNumber = 0;
+    while (std::getline(probe, line)) {
+        ++lineNumber;
+        std::istringstream tokens(line);
+        std::string keyword, vertex;
+        if (!(tokens >> keyword) || keyword != "f") continue;
+        int count = 0;
+        while (tokens >> vertex) ++count;
+        if (count < 3) {
+            std::ostringstream s;
+            s << "malformed: line " << lineNumber << " is a face with " << count << " vertices (at least 3)";
+            return Fail(error, path, s.str());
+        }
+    }
+    if (probe.bad() || lineNumber == 0) {
+        probe.clear();
+        probe.seekg(0);
+        char c;
+        if (!probe.get(c) && !probe.eof()) return Fail(error, path, "cannot read (is it a directory?)");
+    }
+    return true;
+}
+
 }  // namespace
 
 /// Loads every face of `path` (triangulated) into out->triangles and builds the BVH. Returns false with
@@ -32,32 +61,7 @@ std::string OneLine(std::string text) {
 /// non-finite coordinate, face with fewer than 3 vertices, no faces); *out is left untouched on failure.
 bool LoadMesh(const std::string& path, Mesh* out, std::string* error) {
     if (out == nullptr) return Fail(error, path, "no output mesh given");
-    {
-        std::ifstream probe(path, std::ios::in | std::ios::binary);
-        if (!probe) return Fail(error, path, std::string("cannot open: ") + std::strerror(errno));
-        // tinyobjloader silently drops faces with fewer than 3 vertices: find them here, with a line number.
-        std::string line;
-        int lineNumber = 0;
-        while (std::getline(probe, line)) {
-            ++lineNumber;
-            std::istringstream tokens(line);
-            std::string keyword, vertex;
-            if (!(tokens >> keyword) || keyword != "f") continue;
-            int count = 0;
-            while (tokens >> vertex) ++count;
-            if (count < 3) {
-                std::ostringstream s;
-                s << "malformed: line " << lineNumber << " is a face with " << count << " vertices (at least 3)";
-                return Fail(error, path, s.str());
-            }
-        }
-        if (probe.bad() || lineNumber == 0) {
-            probe.clear();
-            probe.seekg(0);
-            char c;
-            if (!probe.get(c) && !probe.eof()) return Fail(error, path, "cannot read (is it a directory?)");
-        }
-    }
+    if (!PrecheckObj(path, error)) return false;
 
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
