@@ -23,8 +23,10 @@ static_assert(sizeof(vec3) == 12 && offsetof(SoftContactSolver::BodyState, v) ==
                   offsetof(SoftContactSolver::BodyState, w) == 16 && offsetof(SoftContactSolver::BodyState, dp) == 32,
               "BodyState's v, w and dp must each fill 16 bytes with their padding (Load4, Scatter)");
 
-/// The lanes' body velocities (zero for an empty lane).
-WideVelocities Gather(const std::vector<SoftContactSolver::BodyState>& state, const WideBatch& batch) {
+/// The lanes' body velocities (zero for an empty lane). Gather and Scatter are inlined into every pass: called, they
+/// handed the twelve lane vectors over through memory (1.6 % of tower 10's step, callgrind).
+__attribute__((always_inline)) inline WideVelocities Gather(const std::vector<SoftContactSolver::BodyState>& state,
+                                                            const WideBatch& batch) {
     const Float4 zero = Wide(0.0f);
     Float4 vA[4], wA[4], vB[4], wB[4];
     for (int lane = 0; lane < 4; ++lane) {
@@ -44,7 +46,8 @@ WideVelocities Gather(const std::vector<SoftContactSolver::BodyState>& state, co
 }
 
 /// Writes the lanes' velocities back to their moving bodies (static and sleeping ones are never written).
-void Scatter(std::vector<SoftContactSolver::BodyState>& state, const WideBatch& batch, const WideVelocities& s) {
+__attribute__((always_inline)) inline void Scatter(std::vector<SoftContactSolver::BodyState>& state,
+                                                   const WideBatch& batch, const WideVelocities& s) {
     Float4 vA[4], wA[4], vB[4], wB[4];
     Untranspose(s.vA, vA);
     Untranspose(s.wA, wA);
