@@ -145,32 +145,31 @@ void SoftContactSolver::FillBatch(const SoftContactGraph::Batch& lanes, const So
 
 void SoftContactSolver::UpdateBatchSeparations(WideBatch& batch) const {
     // UpdatePairSeparations four wide: s = s_base + n . ((dpB - dpA) + rB dRB - rA dRA), rows of dR as vectors.
-    // The lanes' dp and dR rows, each a padded 16-byte row of BodyState, transposed (an empty lane: zeros).
-    const Float4 zero = Wide(0.0f);
-    Float4 rows[2][4][4];  // [A, B][dp, dR row 0, 1, 2][lane]
+    // The lanes' dp and dR rows, each a padded 16-byte row of BodyState, transposed straight from the bodies. An empty
+    // lane reads a body at rest (zero dp, identity dR): its anchors are zero, so its separation stays 0 as with zero
+    // rows, and no pass reads it.
+    static const BodyState kRest;
+    const BodyState* A[4];
+    const BodyState* B[4];
     for (int lane = 0; lane < 4; ++lane) {
-        if (batch.pair[lane] < 0) {
-            for (auto& body : rows)
-                for (auto& row : body) row[lane] = zero;
-            continue;
-        }
-        const BodyState* bodies[2] = {&state[static_cast<std::size_t>(batch.a[lane])],
-                                      &state[static_cast<std::size_t>(batch.b[lane])]};
-        for (int i = 0; i < 2; ++i) {
-            rows[i][0][lane] = Load4(bodies[i]->dp);
-            for (int r = 0; r < 3; ++r) std::memcpy(&rows[i][r + 1][lane], bodies[i]->dR[r], sizeof(Float4));
-        }
+        const bool empty = batch.pair[lane] < 0;
+        A[lane] = empty ? &kRest : &state[static_cast<std::size_t>(batch.a[lane])];
+        B[lane] = empty ? &kRest : &state[static_cast<std::size_t>(batch.b[lane])];
     }
-    auto lanes = [&rows](int body, int row) {
-        const Float4(&r)[4] = rows[body][row];
-        return Transpose(r[0], r[1], r[2], r[3]);
+    auto dp = [](const BodyState* const(&s)[4]) {
+        return Transpose(Load4(s[0]->dp), Load4(s[1]->dp), Load4(s[2]->dp), Load4(s[3]->dp));
     };
-    const Vec4x3 RA[3] = {lanes(0, 1), lanes(0, 2), lanes(0, 3)};
-    const Vec4x3 RB[3] = {lanes(1, 1), lanes(1, 2), lanes(1, 3)};
-    const Vec4x3 dp = Sub(lanes(1, 0), lanes(0, 0));
+    auto row = [](const BodyState* const(&s)[4], int r) {
+        Float4 l[4];
+        for (int lane = 0; lane < 4; ++lane) std::memcpy(&l[lane], s[lane]->dR[r], sizeof(Float4));
+        return Transpose(l[0], l[1], l[2], l[3]);
+    };
+    const Vec4x3 RA[3] = {row(A, 0), row(A, 1), row(A, 2)};
+    const Vec4x3 RB[3] = {row(B, 0), row(B, 1), row(B, 2)};
+    const Vec4x3 d0 = Sub(dp(B), dp(A));
     for (int k = 0; k < batch.pointCount; ++k) {
         WidePoint& p = batch.points[k];
-        const Vec4x3 d = Sub(Add(dp, Mul(p.rB, RB)), Mul(p.rA, RA));
+        const Vec4x3 d = Sub(Add(d0, Mul(p.rB, RB)), Mul(p.rA, RA));
         p.current = Dot(d, batch.n) + p.baseSeparation;
     }
 }
