@@ -86,9 +86,15 @@ void SoftContactSolver::FillBatch(const SoftContactGraph::Batch& lanes, const So
                                   const Softness& staticSoftness, WideBatch* out) {
     WideBatch& batch = *out;
     batch.colour = lanes.colour;
-    Vec4x3 IA[3] = {}, IB[3] = {};  // the lanes' world inverse inertias, by rows
-    Mask4 valid[4] = {};            // point k of lane l exists
+    // The lanes' vectors as padded 16-byte rows (an empty lane or a missing point: zeros), transposed once below
+    // rather than written lane by lane into the batch and read back at once.
+    const Float4 zero = Wide(0.0f);
+    Float4 n[4], t1[4], t2[4], iA[3][4], iB[3][4], rA[4][4], rB[4][4];  // [lane]; [row or point][lane]
+    Mask4 valid[4] = {};                                                // point k of lane l exists
     for (int lane = 0; lane < 4; ++lane) {
+        n[lane] = t1[lane] = t2[lane] = zero;
+        for (int r = 0; r < 3; ++r) iA[r][lane] = iB[r][lane] = zero;
+        for (int k = 0; k < 4; ++k) rA[k][lane] = rB[k][lane] = zero;
         batch.pair[lane] = batch.a[lane] = batch.b[lane] = -1;
         const int index = lanes.pair[lane];
         if (index < 0) continue;
@@ -98,9 +104,9 @@ void SoftContactSolver::FillBatch(const SoftContactGraph::Batch& lanes, const So
         batch.b[lane] = pair.b;
         if (sim[pair.a].dynamic) batch.movesA |= static_cast<std::uint8_t>(1u << lane);
         if (sim[pair.b].dynamic) batch.movesB |= static_cast<std::uint8_t>(1u << lane);
-        SetLane(&batch.n, lane, pair.n);
-        SetLane(&batch.t1, lane, pair.t1);
-        SetLane(&batch.t2, lane, pair.t2);
+        n[lane] = Load4(pair.n);
+        t1[lane] = Load4(pair.t1);
+        t2[lane] = Load4(pair.t2);
         batch.invMassA[lane] = sim[pair.a].invMass;
         batch.invMassB[lane] = sim[pair.b].invMass;
         batch.friction[lane] = pair.friction;
@@ -112,8 +118,8 @@ void SoftContactSolver::FillBatch(const SoftContactGraph::Batch& lanes, const So
         for (std::size_t k = 0; k < pair.count; ++k) {
             const Contact& c = contacts[pair.first + k];
             WidePoint& p = batch.points[k];
-            SetLane(&p.rA, lane, c.rA);
-            SetLane(&p.rB, lane, c.rB);
+            rA[k][lane] = Load4(c.rA);  // the fourth lane (separation, id) is dropped by the transpose
+            rB[k][lane] = Load4(c.rB);
             p.normal.impulse[lane] = c.normal.impulse;  // the warm start Collide matched
             p.support[lane] = c.support;
             p.tangent1.impulse[lane] = c.tangent1.impulse;
@@ -121,12 +127,20 @@ void SoftContactSolver::FillBatch(const SoftContactGraph::Batch& lanes, const So
             p.baseSeparation[lane] = c.separation;  // minus n . (rB - rA) below
             valid[k][lane] = -1;
         }
-        const auto& iA = sim[pair.a].invI;
-        const auto& iB = sim[pair.b].invI;
         for (int r = 0; r < 3; ++r) {
-            SetLane(&IA[r], lane, vec3(iA[r][0], iA[r][1], iA[r][2]));
-            SetLane(&IB[r], lane, vec3(iB[r][0], iB[r][1], iB[r][2]));
+            std::memcpy(&iA[r][lane], sim[pair.a].invI[r], sizeof(Float4));
+            std::memcpy(&iB[r][lane], sim[pair.b].invI[r], sizeof(Float4));
         }
+    }
+    auto lanes4 = [](const Float4(&l)[4]) { return Transpose(l[0], l[1], l[2], l[3]); };
+    batch.n = lanes4(n);
+    batch.t1 = lanes4(t1);
+    batch.t2 = lanes4(t2);
+    const Vec4x3 IA[3] = {lanes4(iA[0]), lanes4(iA[1]), lanes4(iA[2])};  // world inverse inertias, by rows
+    const Vec4x3 IB[3] = {lanes4(iB[0]), lanes4(iB[1]), lanes4(iB[2])};
+    for (int k = 0; k < batch.pointCount; ++k) {
+        batch.points[k].rA = lanes4(rA[k]);
+        batch.points[k].rB = lanes4(rB[k]);
     }
     // PreparePair four wide: rows, base separation, normal speed before solving.
     const Float4 invSum = batch.invMassA + batch.invMassB;
