@@ -1,12 +1,19 @@
 #include "Physics/Islands.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "Physics/RigidbodyVolume.h"
 
 namespace {
 
 bool SameVec(const vec3& a, const vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+/// sin^2 of half the angle turned from orientation a to b (unit quaternions): 1 - (a . b)^2.
+float TurnSinSq(const quat& a, const quat& b) {
+    const float d = a.x * b.x + a.y * b.y + a.z * b.z + a.w * b.w;
+    return 1.0f - d * d;
+}
 
 }  // namespace
 
@@ -54,6 +61,7 @@ bool Islands::BeginStep(const std::vector<RigidbodyVolume*>& volumes, const Slee
         parent.assign(n, 0);
         islandTime.assign(n, 0.0f);
         snapshots.assign(n, Snapshot());
+        windowStart.assign(n, Pose());
     }
     inUse = true;
 
@@ -119,12 +127,21 @@ int Islands::WakeTouchedPair(int a, int b) {
 void Islands::BeginIslands(const std::vector<RigidbodyVolume*>& volumes, float dt, const SleepSettings& settings) {
     const float linearSq = settings.linearSpeed * settings.linearSpeed;
     const float angularSq = settings.angularSpeed * settings.angularSpeed;
+    // The ball a still body stays in over its window: what a body at the sleep speeds would cover in timeToSleep.
+    const float reach = std::max(settings.timeToSleep, 0.0f);
+    const float radius = settings.linearSpeed * reach;
+    const float halfTurn = std::sin(std::min(0.5f * settings.angularSpeed * reach, 1.5f));
+    const float radiusSq = radius * radius, halfTurnSq = halfTurn * halfTurn;
     for (std::size_t i = 0; i < volumes.size(); ++i) {
         parent[i] = static_cast<int>(i);
         if (!active[i]) continue;
         RigidbodyVolume& body = *volumes[i];
+        Pose& start = windowStart[i];
+        if (body.sleepTime == 0.0f) start = Pose{body.position, body.orientation};  // a window starts here
         const bool slow = MagnitudeSq(body.velocity) < linearSq && MagnitudeSq(body.angVel) < angularSq;
-        body.sleepTime = slow ? body.sleepTime + dt : 0.0f;
+        const bool still = body.sleepTime > 0.0f && MagnitudeSq(body.position - start.position) < radiusSq &&
+                           TurnSinSq(start.orientation, body.orientation) < halfTurnSq;
+        body.sleepTime = slow || still ? body.sleepTime + dt : 0.0f;
     }
 }
 

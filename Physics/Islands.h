@@ -1,8 +1,11 @@
 #pragma once
 // Islands and sleep for rigid volumes (WorldSettings::sleep, docs/sleep.md). An island is a set of dynamic volumes
 // linked by this step's contact pairs (static bodies link nothing). A body is slow while |v| < linearSpeed and
-// |w| < angularSpeed; its sleep time grows by dt while slow and restarts otherwise. When every body of an island has
-// been slow for timeToSleep, the island sleeps: velocities zeroed, no forces, no integration, and no pair is tested
+// |w| < angularSpeed, and still while it stays within linearSpeed * timeToSleep of where its sleep time started and
+// turned less than angularSpeed * timeToSleep from there (a stack swaying in place: its speed peaks above the
+// thresholds while it goes nowhere); its sleep time grows by dt while slow or still and restarts otherwise (the
+// window then starts again from the body's present pose). When every body of an island has been slow or still for
+// timeToSleep, the island sleeps: velocities zeroed, no forces, no integration, and no pair is tested
 // unless one of its bodies is awake and dynamic. A sleeping island wakes as a whole on a contact with an awake
 // dynamic body, on a velocity change or impulse through the body's API (RigidbodyVolume::WakeUp), on a changed
 // property (mass, friction, restitution, size, position, orientation, velocity, gravity, torque: compared with a
@@ -60,7 +63,8 @@ public:
         return woken;
     }
 
-    /// Once per step, after integration: advances every active body's sleep time by dt (or restarts it), builds
+    /// Once per step, after integration: advances every active body's sleep time by dt while it is slow or still (else
+    /// restarts it), builds
     /// islands by union-find over the pairs of two active bodies in pairs[0..count) and puts to sleep every island
     /// whose bodies have all been slow for settings.timeToSleep (and for at least this step, so timeToSleep <= 0
     /// puts an island to sleep at the first step all its bodies are slow, never a moving one).
@@ -115,6 +119,11 @@ private:
     std::vector<int> parent;              // union-find over active bodies, this Update only
     std::vector<float> islandTime;        // per root: the smallest sleep time of its island
     std::vector<Snapshot> snapshots;      // per sleeping body
+    struct Pose {
+        vec3 position;
+        quat orientation;
+    };
+    std::vector<Pose> windowStart;  // per active body: its pose when its sleep time last started from 0
     std::size_t sleepingCount = 0;
     std::size_t islandCount = 0;
     std::size_t islandsSlept = 0;

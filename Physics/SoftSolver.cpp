@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "Physics/Geometry/ContactManifold.h"
 #include "Physics/JobPool.h"
@@ -25,18 +26,12 @@ inline vec3 Mul(const vec3& v, const mat3& m) {
             v.x * m[0][2] + v.y * m[1][2] + v.z * m[2][2]};
 }
 
-/// Below this square of half a substep's turn (x = |w| h / 2 < 0.1 rad), SmallTurn replaces Integrate.
-constexpr float kSmallHalfTurnSq = 0.01f;
-
-/// Integrate (Math/quaternion.h: q' = exp(w h / 2) q, normalised) for an isotropic body's small turn, with sin x / x
+/// Below this square of half a substep's turn (x = |w| h / 2 < 0.1 rad), SmallTurns replaces Integrate: Integrate
+/// (Math/quaternion.h: q' = exp(w h / 2) q, normalised) for an isotropic body's small turn, with (h / 2) sin x / x
 /// and cos x of the half angle from their Taylor series to x^6 and x^8 (the first terms left out are below 3e-15
 /// at x = 0.1, far under float's rounding): the substep loop then pays no sin, cos or square root of the axis for
-/// the small turns a substep makes (they were a tenth of a 100-box pile's step). x2 = x^2.
-inline quat SmallTurn(const quat& q, const vec3& w, float h, float x2) {
-    const float k = 0.5f * h * (1.0f - x2 / 6.0f * (1.0f - x2 / 20.0f * (1.0f - x2 / 42.0f)));  // (h / 2) sin x / x
-    const float c = 1.0f - x2 / 2.0f * (1.0f - x2 / 12.0f * (1.0f - x2 / 30.0f * (1.0f - x2 / 56.0f)));  // cos x
-    return Normalized(quat(w.x * k, w.y * k, w.z * k, c) * q);
-}
+/// the small turns a substep makes (they were a tenth of a 100-box pile's step).
+constexpr float kSmallHalfTurnSq = 0.01f;
 
 /// A pair's velocities back to its moving bodies only. A static or sleeping body keeps its zero velocities (a pass
 /// leaves them unchanged, bit for bit); not writing them lets blocks that share the ground run on different threads.
@@ -295,8 +290,11 @@ void SoftContactSolver::IntegrateVelocities(const StepContext& ctx, const Block&
 
 void SoftContactSolver::IntegratePositions(const StepContext& ctx, const Block& block) {
     const float h = ctx.h;
+    int turns[4];  // bodies waiting for SmallTurns, which does four at once
+    int waiting = 0;
     for (std::size_t k = block.bodyBegin; k < block.bodyEnd; ++k) {
-        const std::size_t i = static_cast<std::size_t>(graph.BlockBodies()[k]);
+        const int index = graph.BlockBodies()[k];
+        const std::size_t i = static_cast<std::size_t>(index);
         BodySim& bs = sim[i];
         BodyState& st = state[i];
         st.dp += st.v * h;
@@ -304,16 +302,82 @@ void SoftContactSolver::IntegratePositions(const StepContext& ctx, const Block& 
         // Orientation advanced by the world angular velocity (exponential map, normalised), keeping the world
         // angular momentum of a body whose principal moments differ (AdvanceRotation: between contacts a box turns
         // as a free body does, not at a constant w); the rotation since the step began moves the fixed anchors
-        // (Solve).
+        // (Solve). Each body's turn depends on its own state only, so the order bodies are turned in changes no bit.
         const float w2 = MagnitudeSq(st.w);
-        if (w2 > 0.0f) {
-            const float x2 = 0.25f * h * h * w2;  // the square of half the substep's turn, rad^2
-            bs.q = bs.isotropic && x2 < kSmallHalfTurnSq ? SmallTurn(bs.q, st.w, h, x2)
-                                                         : AdvanceRotation(bs.q, &st.w, bs.inertia, h);
-            const mat3 dR = ToMat3(bs.q * Conjugate(bs.q0));
-            for (int r = 0; r < 3; ++r)
-                for (int k = 0; k < 3; ++k) st.dR[r][k] = dR[r][k];
+        if (!(w2 > 0.0f)) continue;
+        const float x2 = 0.25f * h * h * w2;  // the square of half the substep's turn, rad^2
+        if (bs.isotropic && x2 < kSmallHalfTurnSq) {
+            turns[waiting++] = index;
+            if (waiting == 4) {
+                SmallTurns(turns, waiting, h);
+                waiting = 0;
+            }
+            continue;
         }
+        bs.q = AdvanceRotation(bs.q, &st.w, bs.inertia, h);
+        const mat3 dR = ToMat3(bs.q * Conjugate(bs.q0));
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) st.dR[r][c] = dR[r][c];
+    }
+    if (waiting > 0) SmallTurns(turns, waiting, h);
+}
+
+void SoftContactSolver::SmallTurns(const int* bodies, int count, float h) {
+    // SmallTurn, Normalized and ToMat3(q q0*) of up to four bodies, one per lane; each lane does the scalar
+    // functions' operations in their order (Math/Simd4.h), so the bits are theirs. An empty lane turns nothing.
+    using simd4::Float4;
+    alignas(16) float in[11][4] = {{}, {}, {}, {}, {}, {}, {1, 1, 1, 1}, {}, {}, {}, {1, 1, 1, 1}};  // w, q, q0*
+    for (int l = 0; l < count; ++l) {
+        const BodySim& bs = sim[static_cast<std::size_t>(bodies[l])];
+        const vec3& w = state[static_cast<std::size_t>(bodies[l])].w;
+        const float lane[11] = {w.x, w.y, w.z, bs.q.x, bs.q.y, bs.q.z, bs.q.w, -bs.q0.x, -bs.q0.y, -bs.q0.z, bs.q0.w};
+        for (int f = 0; f < 11; ++f) in[f][l] = lane[f];
+    }
+    Float4 v[11];
+    std::memcpy(v, in, sizeof in);
+    const Float4 wx = v[0], wy = v[1], wz = v[2], qx = v[3], qy = v[4], qz = v[5], qw = v[6];
+    const Float4 ox = v[7], oy = v[8], oz = v[9], ow = v[10];
+    const Float4 x2 = 0.25f * h * h * (wx * wx + wy * wy + wz * wz);
+    const Float4 k = 0.5f * h * (1.0f - x2 / 6.0f * (1.0f - x2 / 20.0f * (1.0f - x2 / 42.0f)));
+    const Float4 c = 1.0f - x2 / 2.0f * (1.0f - x2 / 12.0f * (1.0f - x2 / 30.0f * (1.0f - x2 / 56.0f)));
+    const Float4 ax = wx * k, ay = wy * k, az = wz * k;  // the turn quat(ax, ay, az, c), then times q
+    Float4 rx = c * qx + ax * qw + ay * qz - az * qy, ry = c * qy - ax * qz + ay * qw + az * qx;
+    Float4 rz = c * qz + ax * qy - ay * qx + az * qw, rw = c * qw - ax * qx - ay * qy - az * qz;
+    const Float4 len = simd4::Sqrt(rx * rx + ry * ry + rz * rz + rw * rw), inv = 1.0f / len;
+    rx = rx * inv, ry = ry * inv, rz = rz * inv, rw = rw * inv;
+    const Float4 dx = rw * ox + rx * ow + ry * oz - rz * oy, dy = rw * oy - rx * oz + ry * ow + rz * ox;
+    const Float4 dz = rw * oz + rx * oy - ry * ox + rz * ow, dw = rw * ow - rx * ox - ry * oy - rz * oz;
+    const Float4 xx = dx * dx, yy = dy * dy, zz = dz * dz, xy = dx * dy, xz = dx * dz, yz = dy * dz;
+    const Float4 wxd = dw * dx, wyd = dw * dy, wzd = dw * dz;
+    const Float4 out[14] = {rx,
+                            ry,
+                            rz,
+                            rw,
+                            len,  // q, then dR by rows
+                            1.0f - 2.0f * (yy + zz),
+                            2.0f * (xy + wzd),
+                            2.0f * (xz - wyd),
+                            2.0f * (xy - wzd),
+                            1.0f - 2.0f * (xx + zz),
+                            2.0f * (yz + wxd),
+                            2.0f * (xz + wyd),
+                            2.0f * (yz - wxd),
+                            1.0f - 2.0f * (xx + yy)};
+    alignas(16) float o[14][4];
+    std::memcpy(o, out, sizeof o);
+    for (int l = 0; l < count; ++l) {
+        const std::size_t i = static_cast<std::size_t>(bodies[l]);
+        BodyState& st = state[i];
+        if (!(o[4][l] > 0.0f) || !std::isfinite(o[4][l])) {  // Normalized's identity; ToMat3 of q0* then
+            sim[i].q = quat();
+            const mat3 dR = ToMat3(sim[i].q * Conjugate(sim[i].q0));
+            for (int r = 0; r < 3; ++r)
+                for (int col = 0; col < 3; ++col) st.dR[r][col] = dR[r][col];
+            continue;
+        }
+        sim[i].q = quat(o[0][l], o[1][l], o[2][l], o[3][l]);
+        for (int r = 0; r < 3; ++r)
+            for (int col = 0; col < 3; ++col) st.dR[r][col] = o[5 + 3 * r + col][l];
     }
 }
 

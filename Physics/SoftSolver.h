@@ -259,6 +259,8 @@ private:
     // The two per-body loops of a substep: each lives here only.
     void IntegrateVelocities(const StepContext& ctx, const Block& block);
     void IntegratePositions(const StepContext& ctx, const Block& block);
+    /// IntegratePositions' small turn of `count` (1..4) isotropic bodies at once, four wide (SoftSolver.cpp).
+    void SmallTurns(const int* bodies, int count, float h);
     void WarmStart(const Block& block);
     void Solve(const Block& block, float invH, const Softness& softness, const Softness& staticSoftness,
                float maxPushout, float slop, bool useBias, bool updateSeparations = false);

@@ -31,7 +31,8 @@ struct SleepSettings {
     /// sleeps (no integration, no pair tests among its bodies) until a new contact, an impulse or a changed
     /// property wakes it.
     bool enabled = false;
-    /// s a body must stay slow before its island may sleep.
+    /// s a body must stay slow (or still: within linearSpeed * timeToSleep and angularSpeed * timeToSleep of its pose
+    /// at the start of that time, docs/sleep.md) before its island may sleep.
     float timeToSleep = 0.5f;
     /// m/s: a body is slow while its linear speed is below this.
     float linearSpeed = 0.05f;

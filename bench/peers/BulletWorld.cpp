@@ -88,6 +88,13 @@ void BulletWorld::Step(float dt) { impl->world.stepSimulation(dt, 0); }
 
 std::size_t BulletWorld::BodyCount() const { return impl->bodies.size(); }
 
+std::size_t BulletWorld::AwakeCount() const {
+    std::size_t awake = 0;
+    for (const auto& b : impl->bodies)
+        if (!b->isStaticObject() && b->isActive()) ++awake;
+    return awake;
+}
+
 BodyState BulletWorld::State(std::size_t i) const {
     const btRigidBody& b = *impl->bodies[i];
     const btTransform& t = b.getWorldTransform();

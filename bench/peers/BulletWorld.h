@@ -37,6 +37,8 @@ public:
     /// Exactly one internal Bullet step of dt seconds (stepSimulation(dt, 0): no substeps, no interpolation).
     void Step(float dt);
     std::size_t BodyCount() const;
+    /// Dynamic bodies Bullet counts as active (not deactivated) after the last step.
+    std::size_t AwakeCount() const;
     /// Body i's state after the last step (its world transform, not a motion-state interpolation).
     BodyState State(std::size_t i) const;
 

@@ -32,7 +32,7 @@ constexpr int kPenetrationWindow = 60;
 
 const char kUsage[] =
     "Usage: psb-peer-bench SCENE N [--solver book|accumulated|soft] [--steps S] [--warmup W] [--repeat R]\n"
-    "                      [--sleep] [--csv FILE] [--threads T]\n"
+    "                      [--sleep] [--csv FILE] [--threads T] [--trace FILE]\n"
     "  SCENE N      boxpile N (cubes, 1..100000), pyramid N (base, 1..300) or tower N (height, 1..1000)\n"
     "  --solver S   this engine's contact solver (default accumulated; 10 iterations for accumulated)\n"
     "  --steps S    steps per run at 1/60 s (default 600)\n"
@@ -45,6 +45,8 @@ const char kUsage[] =
     "  --threads T  also run this engine on T threads (1..256) in every round, beside its one-thread run, and\n"
     "               print threads, psb_threads_ms (wall), speedup (psb_ms / psb_threads_ms) and same_state\n"
     "               (1 when both runs end in the same bits); this engine otherwise runs on one thread\n"
+    "  --trace FILE also write FILE: header engine,round,step,cpu_us,awake and one row per step of every run\n"
+    "               (awake: dynamic bodies not asleep after the step; the ground is not counted)\n"
     "Builds the scene in Bullet and in this engine from one definition and prints one line of key=value pairs:\n"
     "scene, n, solver, sleep (on|off); bullet_ms, psb_ms, ratio (psb / bullet): medians of wall ms per step after the "
     "warm-up,\n"
@@ -64,6 +66,17 @@ struct Options {
     bool sleep = false;  // both engines at their default sleeping (--sleep)
     std::string csv;     // --csv FILE, empty: none
     int threads = 0;     // 0: no threaded run
+    std::string trace;   // --trace FILE, empty: none
+};
+
+/// --trace: one row per step of every run (engine, round, step, CPU microseconds, awake dynamic bodies), for
+/// finding where a run spends its time and when each engine's bodies fall asleep.
+struct Trace {
+    std::FILE* file = nullptr;
+    int round = 0;
+    void Row(const char* engine, int step, double cpuMs, std::size_t awake) const {
+        if (file != nullptr) std::fprintf(file, "%s,%d,%d,%.3f,%zu\n", engine, round, step, 1e3 * cpuMs, awake);
+    }
 };
 
 /// Quality figures of one run, computed the same way for both engines (Probe).
@@ -153,6 +166,13 @@ public:
     }
     void Step() { world.system.Update(kDt); }
     std::size_t BodyCount() const { return world.Bodies().size(); }
+    static const char* Name() { return "psb"; }
+    std::size_t AwakeCount() const {
+        std::size_t awake = 0;
+        for (const RigidbodyVolume& b : world.Bodies())
+            if (b.mass > 0.0f && !b.IsSleeping()) ++awake;
+        return awake;
+    }
     BodyState State(std::size_t i) const {
         const RigidbodyVolume& b = world.Body(i);
         return BodyState{b.position, b.orientation, b.velocity, b.angVel};
@@ -171,6 +191,8 @@ public:
     BulletEngine(const std::vector<BodySpec>& specs, bool sleep) : world(specs, 10, sleep) {}
     void Step() { world.Step(kDt); }
     std::size_t BodyCount() const { return world.BodyCount(); }
+    static const char* Name() { return "bullet"; }
+    std::size_t AwakeCount() const { return world.AwakeCount(); }
     BodyState State(std::size_t i) const { return world.State(i); }
 
 private:
@@ -205,7 +227,7 @@ struct RunResult {
 /// One full run of `engine`: every step timed on its own; after each of the last kPenetrationWindow steps (not
 /// timed) the probe takes the poses and measures penetration.
 template <typename Engine>
-RunResult Run(Engine& engine, Probe& probe, const Options& o) {
+RunResult Run(Engine& engine, Probe& probe, const Options& o, const Trace& trace) {
     std::vector<double> ms(static_cast<std::size_t>(o.steps)), cpuMs(ms.size());
     float penetration = 0.0f;
     const std::size_t count = engine.BodyCount();
@@ -217,6 +239,7 @@ RunResult Run(Engine& engine, Probe& probe, const Options& o) {
         const double c1 = ThreadCpuMs();
         ms[static_cast<std::size_t>(s)] = std::chrono::duration<double, std::milli>(t1 - t0).count();
         cpuMs[static_cast<std::size_t>(s)] = c1 - c0;
+        if (trace.file != nullptr) trace.Row(Engine::Name(), s, c1 - c0, engine.AwakeCount());
         if (s >= o.steps - kPenetrationWindow) {
             for (std::size_t i = 0; i < count; ++i) probe.Set(i, engine.State(i));
             penetration = std::fmax(penetration, probe.DeepestPenetration());
@@ -279,6 +302,9 @@ int Parse(int argc, char** argv, Options* o, bool* help) {
         } else if (std::strcmp(arg, "--csv") == 0) {
             if (*value == '\0') return Usage("--csv needs a file name, got", value);
             o->csv = value;
+        } else if (std::strcmp(arg, "--trace") == 0) {
+            if (*value == '\0') return Usage("--trace needs a file name, got", value);
+            o->trace = value;
         } else if (std::strcmp(arg, "--threads") == 0) {
             if (!ParseInt(value, &o->threads) || o->threads < 1 || o->threads > 256)
                 return Usage("--threads must be an integer in 1..256, got", value);
@@ -390,16 +416,28 @@ int main(int argc, char** argv) {
     }
     CsvOutput csv;
     if (!o.csv.empty() && !csv.Open(o.csv)) return 2;
+    Trace trace;
+    if (!o.trace.empty()) {
+        trace.file = std::fopen(o.trace.c_str(), "w");
+        if (trace.file == nullptr) {
+            std::fprintf(stderr, "psb-peer-bench: cannot write --trace '%s': %s\n", o.trace.c_str(),
+                         std::strerror(errno));
+            if (!o.csv.empty()) csv.Abandon();
+            return 2;
+        }
+        std::fputs("engine,round,step,cpu_us,awake\n", trace.file);
+    }
     const std::vector<BodySpec> specs = Scene(o);
     Probe probe(specs);
     std::vector<double> bulletMs, psbMs, bulletCpuMs, psbCpuMs, threadedMs;
     RunResult bullet, psb, threaded;
     for (int round = 0; round < o.repeat; ++round) {
+        trace.round = round;
         // Alternate which engine goes first, so neither always runs on a warmer (or busier) machine.
         for (int k = 0; k < 2; ++k) {
             if ((k == 0) == (round % 2 == 0)) {
                 BulletEngine engine(specs, o.sleep);
-                bullet = Run(engine, probe, o);
+                bullet = Run(engine, probe, o, trace);
                 bulletMs.push_back(bullet.msPerStep);
                 bulletCpuMs.push_back(bullet.cpuMsPerStep);
             } else {
@@ -409,17 +447,18 @@ int main(int argc, char** argv) {
                     std::fprintf(stderr, "psb-peer-bench: the scene was refused: %s\n", engine.Error().c_str());
                     return 1;
                 }
-                psb = Run(engine, probe, o);
+                psb = Run(engine, probe, o, trace);
                 psbMs.push_back(psb.msPerStep);
                 psbCpuMs.push_back(psb.cpuMsPerStep);
             }
         }
         if (o.threads > 0) {  // right after this round's one-thread run, on the same scene
             PsbEngine engine(specs, o.solver, o.sleep, o.threads);
-            threaded = Run(engine, probe, o);
+            threaded = Run(engine, probe, o, Trace());
             threadedMs.push_back(threaded.msPerStep);
         }
     }
+    if (trace.file != nullptr) std::fclose(trace.file);
     const double bMs = Median(bulletMs), pMs = Median(psbMs);
     const double bCpu = Median(bulletCpuMs), pCpu = Median(psbCpuMs);
     if (!o.csv.empty()) {

@@ -124,4 +124,14 @@ awk -F, -v c="$cpu" 'NR == 2 { exit !($6 + 0 > 0.999 * c && $6 + 0 < 1.001 * c) 
 "$bench" tower 5 --solver soft --steps 30 --warmup 5 --repeat 1 --csv "$dir/t.csv" >"$out" 2>"$err" || fail "second --csv run"
 [ "$(value sleep)" = off ] || fail "sleep not echoed as off: $(cat "$out")"
 [ "$(awk -F, 'NR == 2 { print $3 }' "$dir/t.csv")" = off ] || fail "CSV not replaced: $(cat "$dir/t.csv")"
+# --- --trace: a header and one row per step of each engine's run; the soft tower falls asleep in both engines
+"$bench" tower 5 --solver soft --sleep --steps 200 --warmup 10 --repeat 1 --trace "$dir/trace.csv" >"$out" 2>"$err" ||
+  fail "--trace exited $?"
+[ "$(sed -n 1p "$dir/trace.csv")" = "engine,round,step,cpu_us,awake" ] || fail "trace header: $(sed -n 1p "$dir/trace.csv")"
+[ "$(wc -l <"$dir/trace.csv")" -eq 401 ] || fail "trace has $(wc -l <"$dir/trace.csv") lines, expected 401"
+for e in bullet psb; do
+  awk -F, -v e="$e" '$1 == e && $3 == 0 && $5 != 5 { exit 1 } $1 == e && $3 == 199 { last = $5 } END { exit last != 0 }' \
+    "$dir/trace.csv" || fail "$e: not 5 awake at step 0 and 0 at step 199 in the trace"
+done
+refused "'$dir/none/t.csv'" tower 5 --trace "$dir/none/t.csv"
 echo "peers.smoke: ok"

@@ -4,10 +4,12 @@
 // solver keeps stacks jittering above the sleep speeds, so only a lone box is tested with it.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
 #include "Demos/Scenes/WorldBuilder.h"
+#include "Physics/Islands.h"
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
 #include "tests/support/TestWorld.h"
@@ -294,4 +296,46 @@ TEST(Sleep, SoftStepNearbyTowersSleep) {
     w.system.settings.contactSolver = ContactSolver::Soft;
     ASSERT_GT(StepUntilAsleep(w, 1, 4, 900), 0) << "the two towers kept each other awake";
     EXPECT_EQ(w.system.SleepIslands().SleepingCount(), 4u);
+}
+
+namespace {
+
+/// Steps of `dt` of one free box (no contacts) moved by hand along x by `amplitude` m at `omega` rad/s and turned
+/// about z by `turn` rad at the same rate, through Islands alone; the step it first sleeps, or -1 after `steps`.
+int StepsUntilOscillationSleeps(float amplitude, float turn, float omega, int steps) {
+    RigidbodyVolume box = MakeBody(BoxSpec(vec3(0.0f, 5.0f, 0.0f)));
+    const std::vector<RigidbodyVolume*> volumes = {&box};
+    SleepSettings settings;
+    settings.enabled = true;
+    Islands islands;
+    for (int step = 1; step <= steps; ++step) {
+        if (!islands.BeginStep(volumes, settings)) return -2;
+        const float t = static_cast<float>(step) * kDt;
+        box.position.x = amplitude * std::sin(omega * t);
+        box.velocity.x = amplitude * omega * std::cos(omega * t);
+        box.orientation = AngleAxis(vec3(0.0f, 0.0f, 1.0f), turn * std::sin(omega * t));
+        box.angVel.z = turn * omega * std::cos(omega * t);
+        islands.BeginUpdate(volumes, kDt, settings);
+        islands.EndUpdate(volumes, settings);
+        if (box.IsSleeping()) return step;
+    }
+    return -1;
+}
+
+}  // namespace
+
+// A body that sways in place sleeps although its speed peaks above the thresholds (docs/sleep.md, "still"): moving
+// 5 mm either way at 0.1 m/s (twice linearSpeed), or turning 0.005 rad either way at 0.1 rad/s (three times
+// angularSpeed), it stays inside the window's ball (linearSpeed * timeToSleep = 2.5 cm, angularSpeed * timeToSleep =
+// 0.0175 rad) and sleeps after timeToSleep; the speed test alone restarts its sleep time every half period. Swaying
+// 3 cm either way (or 0.05 rad) it leaves the ball and never sleeps.
+TEST(Sleep, BodySwayingInPlaceSleepsThoughItsSpeedPeaksAboveTheThresholds) {
+    const int linear = StepsUntilOscillationSleeps(0.005f, 0.0f, 20.0f, 600);
+    EXPECT_GT(linear, 30) << "slept before timeToSleep";
+    EXPECT_LE(linear, 60) << "a body swaying within the ball never slept";
+    const int angular = StepsUntilOscillationSleeps(0.0f, 0.005f, 20.0f, 600);
+    EXPECT_GT(angular, 30) << "slept before timeToSleep";
+    EXPECT_LE(angular, 60) << "a body rocking within the ball never slept";
+    EXPECT_EQ(StepsUntilOscillationSleeps(0.03f, 0.0f, 10.0f, 600), -1) << "slept while swaying 6 cm";
+    EXPECT_EQ(StepsUntilOscillationSleeps(0.0f, 0.05f, 10.0f, 600), -1) << "slept while rocking 0.1 rad";
 }
