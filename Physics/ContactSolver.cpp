@@ -7,18 +7,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
+#include "Physics/VolumeStages.h"
 #include "Physics/WorldSettings.h"
 
 namespace {
-
-struct IdName {
-    ContactSolver solver;
-    const char* id;
-};
-constexpr IdName kIds[] = {
-    {ContactSolver::Book, "book"}, {ContactSolver::Accumulated, "accumulated"}, {ContactSolver::Soft, "soft"}};
 
 /// Orthonormal t1, t2 with n x t1 = t2, a fixed function of n: the same normal gives the same basis every step.
 void TangentBasis(const vec3& n, vec3* t1, vec3* t2) {
@@ -53,30 +46,6 @@ bool KeyLess(const AccumulatedContactSolver::Arbiter& arbiter, const std::pair<i
 }
 
 }  // namespace
-
-const char* ToString(ContactSolver solver) {
-    for (const IdName& e : kIds)
-        if (e.solver == solver) return e.id;
-    return "unknown";
-}
-
-bool ParseContactSolver(const std::string& text, ContactSolver* out) {
-    for (const IdName& e : kIds)
-        if (text == e.id) {
-            if (out != nullptr) *out = e.solver;
-            return true;
-        }
-    return false;
-}
-
-std::string ContactSolverIds() {
-    std::string ids;
-    for (const IdName& e : kIds) {
-        if (!ids.empty()) ids += ", ";
-        ids += e.id;
-    }
-    return ids;
-}
 
 void AccumulatedContactSolver::Clear() {
     arbiters.clear();
