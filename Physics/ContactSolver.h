@@ -21,7 +21,7 @@ struct StepContext;
 class AccumulatedContactSolver {
 public:
     /// Solves the velocities of `volumes` for pairs[0..count), which must be sorted by (indexA, indexB) as
-    /// PhysicsSystem::FindCollisions writes them, over one volume substep of ctx.h seconds (the Baumgarte bias)
+    /// VolumeStages::FindCollisions writes them, over one volume substep of ctx.h seconds (the Baumgarte bias)
     /// with ctx.settings' solverIterations, penetrationSlop and accumulated. Impulses are carried over only from
     /// the substep just before (ctx.substepSerial is one more than at the last Solve), not from an older one.
     void Solve(const std::vector<RigidbodyVolume*>& volumes, const CollisionPair* pairs, std::size_t count,
