@@ -54,6 +54,12 @@ public:
     };
 
 private:
+    /// Per-body inverse masses and world inverse inertias of `volumes`; this step's buffers become last step's
+    /// (forgotten unless carryOver).
+    void BeginPrepare(const std::vector<RigidbodyVolume*>& volumes, bool carryOver);
+    /// Warm start of contact c (its point set) from the nearest unclaimed contact of `old` (last step's arbiter of
+    /// the same pair) within sqrt(matchSq) m, in arb's basis; false (c untouched) when there is none.
+    bool Inherit(const Arbiter& old, const Arbiter& arb, float matchSq, float warmStartFactor, Contact* c);
     void Prepare(const std::vector<RigidbodyVolume*>& volumes, const CollisionPair* pairs, std::size_t count, float dt,
                  float slop, bool carryOver, const AccumulatedSolverSettings& settings);
 
