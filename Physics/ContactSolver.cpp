@@ -7,18 +7,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
+#include "Physics/VolumeStages.h"
 #include "Physics/WorldSettings.h"
 
 namespace {
-
-struct IdName {
-    ContactSolver solver;
-    const char* id;
-};
-constexpr IdName kIds[] = {
-    {ContactSolver::Book, "book"}, {ContactSolver::Accumulated, "accumulated"}, {ContactSolver::Soft, "soft"}};
 
 /// Orthonormal t1, t2 with n x t1 = t2, a fixed function of n: the same normal gives the same basis every step.
 void TangentBasis(const vec3& n, vec3* t1, vec3* t2) {
@@ -54,30 +47,6 @@ bool KeyLess(const AccumulatedContactSolver::Arbiter& arbiter, const std::pair<i
 
 }  // namespace
 
-const char* ToString(ContactSolver solver) {
-    for (const IdName& e : kIds)
-        if (e.solver == solver) return e.id;
-    return "unknown";
-}
-
-bool ParseContactSolver(const std::string& text, ContactSolver* out) {
-    for (const IdName& e : kIds)
-        if (text == e.id) {
-            if (out != nullptr) *out = e.solver;
-            return true;
-        }
-    return false;
-}
-
-std::string ContactSolverIds() {
-    std::string ids;
-    for (const IdName& e : kIds) {
-        if (!ids.empty()) ids += ", ";
-        ids += e.id;
-    }
-    return ids;
-}
-
 void AccumulatedContactSolver::Clear() {
     arbiters.clear();
     contacts.clear();
@@ -93,9 +62,7 @@ float AccumulatedContactSolver::TotalNormalImpulse() const {
     return sum;
 }
 
-void AccumulatedContactSolver::Prepare(const std::vector<RigidbodyVolume*>& volumes, const CollisionPair* pairs,
-                                       std::size_t count, float dt, float slop, bool carryOver,
-                                       const AccumulatedSolverSettings& settings) {
+void AccumulatedContactSolver::BeginPrepare(const std::vector<RigidbodyVolume*>& volumes, bool carryOver) {
     // Per-body data once per step: inverse mass and the world inverse inertia R^T I^-1 R.
     if (invMass.size() < volumes.size()) {
         invMass.resize(volumes.size());
@@ -116,6 +83,37 @@ void AccumulatedContactSolver::Prepare(const std::vector<RigidbodyVolume*>& volu
         previousContacts.clear();
     }
     warmStarted = 0;
+}
+
+bool AccumulatedContactSolver::Inherit(const Arbiter& old, const Arbiter& arb, float matchSq, float warmStartFactor,
+                                       Contact* c) {
+    // Warm start: the nearest unclaimed contact of last step within matchDistance (first wins a tie). Its total
+    // impulse is re-expressed in this step's basis, so a slowly turning normal keeps most of it.
+    std::size_t best = old.count;
+    float bestSq = matchSq;
+    for (std::size_t k = 0; k < old.count; ++k) {
+        if (matchedScratch[k]) continue;
+        const float d = DistanceSq(c->point, previousContacts[old.first + k].point);
+        if (d <= matchSq && (best == old.count || d < bestSq)) {
+            best = k;
+            bestSq = d;
+        }
+    }
+    if (best == old.count) return false;
+    matchedScratch[best] = 1;
+    const Contact& o = previousContacts[old.first + best];
+    const vec3 P = (old.n * o.jn + old.t1 * o.jt1 + old.t2 * o.jt2) * warmStartFactor;
+    c->jn = std::fmax(Dot(P, arb.n), 0.0f);
+    c->jt1 = Dot(P, arb.t1);
+    c->jt2 = Dot(P, arb.t2);
+    ClampToCone(arb.mu * c->jn, &c->jt1, &c->jt2);
+    return true;
+}
+
+void AccumulatedContactSolver::Prepare(const std::vector<RigidbodyVolume*>& volumes, const CollisionPair* pairs,
+                                       std::size_t count, float dt, float slop, bool carryOver,
+                                       const AccumulatedSolverSettings& settings) {
+    BeginPrepare(volumes, carryOver);
     const float baumgarte = dt > 0.0f ? settings.baumgarte / dt : 0.0f;
     const float matchSq = settings.matchDistance * settings.matchDistance;
 
@@ -165,31 +163,7 @@ void AccumulatedContactSolver::Prepare(const std::vector<RigidbodyVolume*>& volu
             const float restitutionBias = -vn > settings.restitutionThreshold ? -e * vn : 0.0f;
             c.bias = std::fmax(restitutionBias, positionBias);
             c.jn = c.jt1 = c.jt2 = 0.0f;
-
-            // Warm start: the nearest unclaimed contact of last step within matchDistance (first wins a tie). Its
-            // total impulse is re-expressed in this step's basis, so a slowly turning normal keeps most of it.
-            if (old != nullptr) {
-                std::size_t best = old->count;
-                float bestSq = matchSq;
-                for (std::size_t k = 0; k < old->count; ++k) {
-                    if (matchedScratch[k]) continue;
-                    const float d = DistanceSq(point, previousContacts[old->first + k].point);
-                    if (d <= matchSq && (best == old->count || d < bestSq)) {
-                        best = k;
-                        bestSq = d;
-                    }
-                }
-                if (best < old->count) {
-                    matchedScratch[best] = 1;
-                    const Contact& o = previousContacts[old->first + best];
-                    const vec3 P = (old->n * o.jn + old->t1 * o.jt1 + old->t2 * o.jt2) * settings.warmStartFactor;
-                    c.jn = std::fmax(Dot(P, arb.n), 0.0f);
-                    c.jt1 = Dot(P, arb.t1);
-                    c.jt2 = Dot(P, arb.t2);
-                    ClampToCone(arb.mu * c.jn, &c.jt1, &c.jt2);
-                    ++warmStarted;
-                }
-            }
+            if (old != nullptr && Inherit(*old, arb, matchSq, settings.warmStartFactor, &c)) ++warmStarted;
             contacts.push_back(c);
         }
         arbiters.push_back(arb);

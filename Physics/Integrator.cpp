@@ -3,7 +3,7 @@
 #include "Physics/Integrator.h"
 
 #include "Physics/Particle.h"
-#include "Physics/WorldSettings.h"
+#include "Physics/StepFactor.h"
 
 namespace {
 

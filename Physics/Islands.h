@@ -26,7 +26,7 @@
 
 #include "Math/quaternion.h"
 #include "Math/vectors.h"
-#include "Physics/WorldSettings.h"
+#include "Physics/SleepSettings.h"
 
 class RigidbodyVolume;
 

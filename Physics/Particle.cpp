@@ -5,7 +5,7 @@
 #include <cfloat>
 #include <cmath>
 
-#include "Physics/WorldSettings.h"
+#include "Physics/StepFactor.h"
 
 namespace {
 

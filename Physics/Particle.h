@@ -8,23 +8,8 @@
 #include <vector>
 
 #include "Physics/Geometry/Geometry3D.h"
-#include "Physics/Integrator.h"
+#include "Physics/ParticleContact.h"
 #include "Physics/Rigidbody.h"
-
-/// How a particle meets an OBB constraint (WorldSettings::particleContact; docs/ch14.md "Contact that converges").
-enum class ParticleContact {
-    /// The book's: the segment is tested against the box and the particle put Particle::kContactOffset off the
-    /// surface. Each hit lifts it by that offset with no energy taken for it, so a particle at rest keeps hopping
-    /// (a limit cycle of about sqrt(2 g offset / (1 - e^2)) m/s) whatever the step: its error does not shrink.
-    Book,
-    /// The box is inflated by kContactOffset and the particle put on the inflated surface where it crossed it: the
-    /// same resting height, no lift beyond the step's own travel, so it converges as the step shrinks.
-    Skin,
-};
-/// "book" or "skin".
-const char* ToString(ParticleContact contact);
-/// Parses an id from ToString; false (output untouched) for anything else.
-bool ParseParticleContact(const std::string& text, ParticleContact* out);
 
 /// An OBB constraint prepared once per step for particle tests: its world AABB (a cheap reject) and the box.
 struct ParticleConstraint {
@@ -83,8 +68,6 @@ public:
 
 protected:
     friend class PhysicsSystem;
-    friend void IntegrateParticleStates(Integrator, Particle* const*, std::size_t, IntegratorScratch*, float, float,
-                                        ForceEvaluator, void*);
     friend struct ParticleIntegrators;  // IntegrateParticleStates' one function per method (Physics/Integrator.cpp)
     vec3 position;
     vec3 oldPosition;

@@ -5,56 +5,72 @@
 
 #include "Physics/Cloth.h"
 #include "Physics/DistanceJoint.h"
+#include "Physics/ImpulseSolvers.h"
 #include "Physics/JobPool.h"
 #include "Physics/Particle.h"
 #include "Physics/RigidbodyVolume.h"
+#include "Physics/SoftStepSolver.h"
 #include "Physics/Spring.h"
 
-PhysicsSystem::PhysicsSystem() = default;
+namespace {
+
+/// The one place a solver setting becomes a solver object.
+std::unique_ptr<IContactSolver> MakeContactSolver(ContactSolver kind) {
+    switch (kind) {
+        case ContactSolver::Accumulated:
+            return std::make_unique<AccumulatedImpulseSolver>();
+        case ContactSolver::Soft:
+            return std::make_unique<SoftStepSolver>();
+        case ContactSolver::Book:
+            break;
+    }
+    return std::make_unique<BookImpulseSolver>();
+}
+
+}  // namespace
+
+PhysicsSystem::PhysicsSystem() : solver(MakeContactSolver(settings.contactSolver)) {}
 PhysicsSystem::~PhysicsSystem() = default;
 
+void PhysicsSystem::MatchSolverToSettings() {
+    // Settings are a public struct that scenes write between steps: the world compares once per step and makes a new
+    // object only when the setting changed. The old one's kept contacts go with it, as they would have gone cold
+    // anyway (each solver warm-starts only from the step or substep just before its own last one).
+    if (solver->Kind() != settings.contactSolver) solver = MakeContactSolver(settings.contactSolver);
+}
+
+const AccumulatedContactSolver& PhysicsSystem::AccumulatedSolver() const {
+    static const AccumulatedContactSolver empty;
+    const auto* accumulated = dynamic_cast<const AccumulatedImpulseSolver*>(solver.get());
+    return accumulated != nullptr ? accumulated->State() : empty;
+}
+
+const SoftContactSolver& PhysicsSystem::SoftSolver() const {
+    static const SoftContactSolver empty;
+    const auto* soft = dynamic_cast<const SoftStepSolver*>(solver.get());
+    return soft != nullptr ? soft->State() : empty;
+}
+
 void PhysicsSystem::Update(float deltaTime) {
-    if (!(deltaTime > 0.0f) || !std::isfinite(deltaTime) || !stopReason.empty()) return;
+    if (!(deltaTime > 0.0f) || !std::isfinite(deltaTime) || !stages.stopReason.empty()) return;
+    MatchSolverToSettings();
     StepContext ctx{settings};
     // The process keeps one pool per thread count (JobPool::Shared): worlds asking for the same count share it.
     ctx.jobs = &JobPool::Shared(settings.threads);
     ctx.dt = deltaTime;
     ctx.invDt = 1.0f / deltaTime;
     ctx.step = stepCount;
-    softCollisionsPending = false;  // set again by a soft step
+    stages.collisionsPending = false;  // set again by a solver that fills Collisions() on demand
 
     // Book order (docs/book-reference.md §3.4): collisions, forces, impulses, integrate, linear projection,
     // constraints. Spring forces are evaluated inside particle integration (erratum 5.2-20: a force over the step, not
     // a dt-free impulse after it), so every integrator sees them at its own intermediate states.
-    // Volumes step in n equal substeps when one step would carry a volume through another (VolumeSubsteps);
-    // n = 1 is the book's single step, with dt passed through unchanged.
-    if (!volumes.empty() && settings.contactSolver == ContactSolver::Soft) {
-        StepSoftVolumes(ctx);
-        if (!stopReason.empty()) return;
-    } else if (!volumes.empty()) {
-        const int n = VolumeSubsteps(deltaTime);
-        ctx.substepCount = n;
-        ctx.h = n == 1 ? deltaTime : deltaTime / static_cast<float>(n);
-        ctx.invH = 1.0f / ctx.h;
-        lastVolumeSubsteps = n;
-        // Islands and sleep (Islands.h): null while settings.sleep is off, and then nothing below changes.
-        Islands* sleep = islands.BeginStep(volumes, settings.sleep) ? &islands : nullptr;
-        for (int s = 0; s < n; ++s) {
-            ctx.substep = s;
-            ctx.substepSerial = volumeSubstepSerial;
-            FindCollisions(ctx, sleep);
-            if (!stopReason.empty()) return;  // over settings.maxPairs: the world stays as it is
-            ApplyVolumeForces(ctx, sleep);
-            if (resultCount > 0) ApplyImpulses(ctx);
-            IntegrateVolumes(ctx, sleep);
-            if (settings.linearProjection && resultCount > 0) ApplyLinearProjection(ctx);
-            ++volumeSubstepSerial;
-        }
-        if (sleep != nullptr) islands.Update(volumes, results.data(), resultCount, deltaTime, settings.sleep);
+    // The volumes: the world's contact solver steps them with the shared stages (IContactSolver.h).
+    if (!volumes.empty()) {
+        solver->StepVolumes(stages, ctx);
+        if (!stages.stopReason.empty()) return;  // over settings.maxPairs: the world stays as it is
     } else {
-        resultCount = 0;
-        lastVolumeSubsteps = 1;
-        ++volumeSubstepSerial;
+        stages.SkipStep();
     }
     for (Rigidbody* body : others) body->ApplyForces();
     for (Rigidbody* body : others) body->Update(deltaTime);
@@ -157,10 +173,8 @@ void PhysicsSystem::ClearRigidbodys() {
     volumes.clear();
     joints.clear();
     others.clear();
-    resultCount = 0;
-    softCollisionsPending = false;
-    softSolver.Clear();
-    stopReason.clear();  // a new world may run again
+    stages.Reset();  // a new world may run again
+    solver->Clear();
     RebuildParticleList();
 }
 void PhysicsSystem::ClearConstraints() { constraints.clear(); }

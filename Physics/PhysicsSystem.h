@@ -8,21 +8,24 @@
 //
 // Stages live in the file of the chapter that introduced them:
 //   PhysicsSystemParticles.cpp (ch14)  particle forces, integration, constraint solving
-//   PhysicsSystemVolumes.cpp   (ch15)  broadphase + manifolds, impulses, volume integration, projection; the
-//                                      soft step's pair search (SoftSolver.h does the rest)
+//   settings.contactSolver     (ch15)  the volumes: the world's contact solver object (IContactSolver.h), made
+//                                      when the setting changes, steps them with the shared VolumeStages.h
 //   PhysicsSystemSprings.cpp   (ch16)  spring and cloth forces, distance joints
 
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "Physics/Broadphase.h"
 #include "Physics/ContactSolver.h"
 #include "Physics/Geometry/Geometry3D.h"
+#include "Physics/IContactSolver.h"
 #include "Physics/Integrator.h"
 #include "Physics/Islands.h"
 #include "Physics/Rigidbody.h"
 #include "Physics/SoftSolver.h"
+#include "Physics/VolumeStages.h"
 #include "Physics/WorldSettings.h"
 
 class Particle;
@@ -31,14 +34,6 @@ class RigidbodyVolume;
 class Spring;
 class Cloth;
 class DistanceJoint;
-
-/// A colliding pair found this step, with its manifold (normal from a to b).
-struct CollisionPair {
-    RigidbodyVolume* a = nullptr;
-    RigidbodyVolume* b = nullptr;
-    int indexA = -1, indexB = -1;  ///< positions of a and b in PhysicsSystem::Volumes() (indexA < indexB)
-    CollisionManifold manifold;
-};
 
 class PhysicsSystem {
 public:
@@ -84,32 +79,35 @@ public:
     /// Every solver fills them. ContactSolver::Soft: the soft step's pairs with a touching point (separation
     /// <= 0; speculative points are left out), the points where the step found them, the pair's normal, and the
     /// deepest of those points' penetrations as depth; built from the solver's own contacts on the first call
-    /// after a step (the step itself pays nothing; FillSoftCollisions).
+    /// after a step (the step itself pays nothing; SoftStepSolver::FillCollisions).
     const std::vector<CollisionPair>& Collisions() const {
-        if (softCollisionsPending) FillSoftCollisions();
-        return results;
+        if (stages.collisionsPending) solver->FillCollisions(stages);
+        return stages.results;
     }
     std::size_t CollisionCount() const {
-        if (softCollisionsPending) FillSoftCollisions();
-        return resultCount;
+        if (stages.collisionsPending) solver->FillCollisions(stages);
+        return stages.resultCount;
     }
-    /// The Accumulated solver's kept contacts and impulses (empty while settings.contactSolver is Book).
-    const AccumulatedContactSolver& AccumulatedSolver() const { return accumulatedSolver; }
+    /// The contact solver object that steps the volumes: made for settings.contactSolver at construction and again
+    /// at the start of the first Update after the setting changed (its kept contacts go with it); never null.
+    const IContactSolver& Solver() const { return *solver; }
+    /// The Accumulated solver's kept contacts and impulses (empty unless Solver() is the Accumulated one).
+    const AccumulatedContactSolver& AccumulatedSolver() const;
     /// Islands and sleep of the volumes (settings.sleep; untouched while it is off).
-    const Islands& SleepIslands() const { return islands; }
-    /// The Soft solver's contacts and impulses of the last step (empty unless settings.contactSolver is Soft).
-    const SoftContactSolver& SoftSolver() const { return softSolver; }
+    const Islands& SleepIslands() const { return stages.islands; }
+    /// The Soft solver's contacts and impulses of the last step (empty unless Solver() is the Soft one).
+    const SoftContactSolver& SoftSolver() const;
     /// Number of Update calls that advanced the world.
     long long StepCount() const { return stepCount; }
     /// Volume substeps the last Update took (1 unless it had to subdivide; see WorldSettings::maxVolumeSubsteps).
-    int LastVolumeSubsteps() const { return lastVolumeSubsteps; }
+    int LastVolumeSubsteps() const { return stages.lastVolumeSubsteps; }
     /// The last refusal (AddRigidbody) or warning (a step that needed more than maxVolumeSubsteps substeps),
     /// naming the bad value; empty if none since construction or ClearError().
     const std::string& LastError() const { return lastError; }
     void ClearError() { lastError.clear(); }
     /// Why the world stopped, naming the limit: a pair search found more than settings.maxPairs candidate volume
     /// pairs (WorldSettings.h). Empty while it runs; once set, Update does nothing (the world stays as it was).
-    const std::string& StopReason() const { return stopReason; }
+    const std::string& StopReason() const { return stages.stopReason; }
 
 private:
     // ---- ch14: PhysicsSystemParticles.cpp
@@ -121,31 +119,9 @@ private:
     /// Free particles, then joints, then cloth particles against the constraints (book order).
     void SolveParticleConstraints();
 
-    // ---- ch15: PhysicsSystemVolumes.cpp (each runs once per volume substep of ctx.h seconds). `sleep` is null
-    // with settings.sleep off; otherwise sleeping volumes are not moved and only pairs with an active body are tested.
-    /// Pair search over volumes only; fills results[0..resultCount). With sleep, a contact between an active and a
-    /// sleeping body wakes the sleeping island and the search runs again.
-    void FindCollisions(const StepContext& ctx, Islands* sleep);
-    /// One pair search: every pair that can interact and, when `active` is given (one byte per volume), has an active
-    /// body; fills results[0..resultCount) in increasing (indexA, indexB) order. Over settings.maxPairs: no
-    /// results, and stopReason set.
-    void FindPairs(const StepContext& ctx, const unsigned char* active);
-    /// Sets stopReason for a search that passed settings.maxPairs.
-    void StopAtPairLimit();
-    /// Gravity on every volume, turned into this substep's velocity change before the impulses (ch15 note N1).
-    void ApplyVolumeForces(const StepContext& ctx, const Islands* sleep);
-    void ApplyImpulses(const StepContext& ctx);
-    void IntegrateVolumes(const StepContext& ctx, const Islands* sleep);
-    void ApplyLinearProjection(const StepContext& ctx);
-    /// Number of equal volume substeps for a step of dt (1..settings.maxVolumeSubsteps); records a warning when
-    /// clamped.
-    int VolumeSubsteps(float dt);
-    /// ContactSolver::Soft: the whole volume step (pair search with AABBs grown by the speculative margin, then
-    /// SoftContactSolver::Step in settings.soft.substeps substeps). Fills ctx's substep fields.
-    void StepSoftVolumes(StepContext& ctx);
-    /// Writes the soft step's touching contacts into results[0..resultCount) (Collisions()); const because the
-    /// readers are: it only turns the solver's kept contacts into the book's form.
-    void FillSoftCollisions() const;
+    // ---- ch15: the contact solver (IContactSolver.h) with the shared stages (VolumeStages.h)
+    /// Makes a new solver object when settings.contactSolver no longer matches the one the world has.
+    void MatchSolverToSettings();
 
     // ---- ch16: PhysicsSystemSprings.cpp
     /// Adds the force of every spring (system and cloth) to its particles' `forces`.
@@ -167,22 +143,8 @@ private:
     std::vector<IntegratorScratch> integratorScratch;     // ch14: one per allParticles entry, grown only
     std::vector<ParticleConstraint> preparedConstraints;  // ch14: constraints with AABBs, rebuilt per step
 
-    // Capacity reused; only [0, resultCount) is valid. Mutable: after a soft step Collisions() fills them.
-    mutable std::vector<CollisionPair> results;
-    mutable std::size_t resultCount = 0;
-    mutable bool softCollisionsPending = false;       // the last step was a soft one and results are not yet filled
-    Broadphase broadphase;                            // used only from settings.broadphaseMinVolumes volumes up
-    std::vector<std::pair<int, int>> candidatePairs;  // broadphase output, capacity reused
-    struct GrownBounds {
-        vec3 min, max;
-    };
-    std::vector<GrownBounds> smallWorldBounds;  // soft step below broadphaseMinVolumes: grown boxes, capacity reused
-    long long stepCount = 0;
-    AccumulatedContactSolver accumulatedSolver;  // ch15: arbiter state of ContactSolver::Accumulated
-    Islands islands;                             // settings.sleep: islands, sleep times, sleeping bodies
-    SoftContactSolver softSolver;                // ch15: contacts and body state of ContactSolver::Soft
-    long long volumeSubstepSerial = 0;           // volume substeps so far (one per Update without volumes): StepContext
-    int lastVolumeSubsteps = 1;
     std::string lastError;
-    std::string stopReason;
+    VolumeStages stages{volumes, lastError};  // ch15: pairs, islands and the stages every contact solver uses
+    std::unique_ptr<IContactSolver> solver;   // ch15: made for settings.contactSolver (MatchSolverToSettings)
+    long long stepCount = 0;
 };

@@ -8,7 +8,7 @@
 #include "Math/quaternion.h"
 #include "Physics/Geometry/Geometry3D.h"
 #include "Physics/Rigidbody.h"
-#include "Physics/WorldSettings.h"
+#include "Physics/StepFactor.h"
 
 /// The book's GRAVITY_CONST, m/s^2.
 constexpr vec3 kVolumeGravity{0.0f, -9.82f, 0.0f};

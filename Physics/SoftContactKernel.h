@@ -7,13 +7,13 @@
 #include <cmath>
 
 #include "Math/Simd4.h"
-#include "Physics/SoftSolver.h"
+#include "Physics/SoftSolverRows.h"
 
 namespace softkernel {
 
 using namespace simd4;
-using Row = SoftContactSolver::Row;
-using WideRow = SoftContactSolver::WideRow;
+using Row = SoftRow;
+using WideRow = SoftWideRow;
 
 /// A pair's two bodies' velocities while its contacts are solved (scalar path).
 struct PairVelocities {
@@ -24,10 +24,10 @@ struct WideVelocities {
     Vec4x3 vA, wA, vB, wB;
 };
 
-inline PairVelocities LoadVelocities(const SoftContactSolver::BodyState& A, const SoftContactSolver::BodyState& B) {
+inline PairVelocities LoadVelocities(const SoftBodyState& A, const SoftBodyState& B) {
     return {Load(A.v), Load(A.w), Load(B.v), Load(B.w)};
 }
-inline void StoreVelocities(const PairVelocities& x, SoftContactSolver::BodyState& A, SoftContactSolver::BodyState& B) {
+inline void StoreVelocities(const PairVelocities& x, SoftBodyState& A, SoftBodyState& B) {
     Store(A.v, x.vA);
     Store(A.w, x.wA);
     Store(B.v, x.vB);

@@ -19,6 +19,7 @@
 #include "Math/vectors.h"
 #include "Physics/Geometry/ContactManifold.h"
 #include "Physics/SoftSolverGraph.h"
+#include "Physics/SoftSolverRows.h"
 
 class JobPool;
 class RigidbodyVolume;
@@ -61,22 +62,10 @@ public:
     /// Deepest penetration (m, >= 0) over the contacts found at the start of the last Step.
     float DeepestPenetration() const;
 
-    // The solver's hot data keeps every vec3 on a 16-byte boundary followed by a fourth float, so the inner loops
-    // work on four lanes at once (the fourth lane never reaches a result); each lane does the scalar operations
-    // in the scalar order, so results are the same bits as plain vec3 arithmetic.
-
-    /// One row of a contact (normal or tangent direction d): the angular Jacobians and their images under the
-    /// world inverse inertias, so solving needs no matrix product.
-    struct alignas(16) Row {
-        vec3 rAxD;             // rA x d
-        float mass = 0.0f;     // 1 / effective inverse mass along d, kg
-        vec3 rBxD;             // rB x d
-        float impulse = 0.0f;  // accumulated this substep, N s
-        vec3 iArAxD;           // IA^-1 (rA x d)
-        float padA = 0.0f;
-        vec3 iBrBxD;  // IB^-1 (rB x d)
-        float padB = 0.0f;
-    };
+    // The rows and the per-body velocity state (SoftSolverRows.h; 16-byte aligned, four lanes wide).
+    using Row = SoftRow;
+    using BodyState = SoftBodyState;
+    using WideRow = SoftWideRow;
     struct Contact {
         Row normal, tangent1, tangent2;
         float current = 0.0f;           // separation at the bodies' present poses (UpdateSeparations), m
@@ -105,17 +94,6 @@ public:
         std::size_t first = 0, count = 0;  // contacts[first, first + count)
         bool touchesStatic = false;        // one body is static: the stiffer static softness applies
     };
-    /// Per-body solver state of the step (hot: read and written every pass).
-    struct alignas(16) BodyState {
-        vec3 v;  // linear velocity, world, m/s
-        float padV = 0.0f;
-        vec3 w;  // angular velocity, world, rad/s
-        float padW = 0.0f;
-        vec3 dp;  // position change since the step began, m
-        float padP = 0.0f;
-        // Rotation since the step began (row-vector form), rows padded to four floats.
-        float dR[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
-    };
     /// Per-body constants of the step and its pose.
     struct alignas(16) BodySim {
         float invI[3][4];   // world inverse inertia at the start of the step (zero for static), rows padded to four
@@ -134,11 +112,6 @@ public:
     /// Four floats, one per lane of a wide batch, and a vector per lane (Math/Simd4.h).
     using Float4 = simd4::Float4;
     using Vec4x3 = simd4::Vec4x3;
-    /// One row of a point in every lane (Row, four wide).
-    struct WideRow {
-        Vec4x3 rAxD, rBxD, iArAxD, iBrBxD;
-        Float4 mass, impulse;
-    };
     /// Point k of every lane's pair (a lane whose pair has fewer points holds zero masses there: no effect).
     struct WidePoint {
         Vec4x3 rA, rB;

@@ -3,42 +3,15 @@
 // and the book's default; the book's own name, where ours differs, is given in the comment and listed in
 // docs/STYLE.md, "Renames in the engine".
 
-#include <cmath>
 #include <cstddef>
 
-#include "Physics/ContactSolver.h"
+#include "Physics/ContactSolverSettings.h"
 #include "Physics/Integrator.h"
-#include "Physics/Particle.h"
+#include "Physics/ParticleContact.h"
+#include "Physics/SleepSettings.h"
+#include "Physics/StepFactor.h"
 
 class JobPool;
-
-/// The book's fixed step, s (GetFixedFPS()/1000, docs/book-reference.md §1.2). The per-step factors the book
-/// defines (a particle's velocity retention 0.95) are defined at this step.
-constexpr float kBookStep = 0.03f;
-
-/// Per-step factor for a step of dt seconds from a factor defined per step of referenceStep seconds: the same
-/// per-second rate, factor^(dt / referenceStep). Exactly `factor` when dt == referenceStep (the book's path
-/// stays bit-identical) or when referenceStep <= 0 (applied per step at every dt).
-inline float FactorOverStep(float factor, float referenceStep, float dt) {
-    if (!(referenceStep > 0.0f) || dt == referenceStep) return factor;
-    return std::pow(factor, dt / referenceStep);
-}
-
-/// Islands and sleep for rigid volumes (WorldSettings::sleep). Off by default (the book has no sleep), in the
-/// benchmarks and in the sweep.
-struct SleepSettings {
-    /// On: an island of touching dynamic volumes that all stay slower than the speeds below for timeToSleep
-    /// sleeps (no integration, no pair tests among its bodies) until a new contact, an impulse or a changed
-    /// property wakes it.
-    bool enabled = false;
-    /// s a body must stay slow (or still: within linearSpeed * timeToSleep and angularSpeed * timeToSleep of its pose
-    /// at the start of that time, docs/sleep.md) before its island may sleep.
-    float timeToSleep = 0.5f;
-    /// m/s: a body is slow while its linear speed is below this.
-    float linearSpeed = 0.05f;
-    /// rad/s: ... and its angular speed below this (2 degrees per second).
-    float angularSpeed = 0.035f;
-};
 
 /// Engine settings of one PhysicsSystem (its `settings`), read by every stage of every step.
 struct WorldSettings {
@@ -54,7 +27,8 @@ struct WorldSettings {
     ParticleContact particleContact = ParticleContact::Book;
 
     // ---- rigid volumes (ch15)
-    /// How contact impulses are solved (ContactSolver.h). Book: its per-contact solver.
+    /// How contact impulses are solved (ContactSolverSettings.h; the world makes its IContactSolver from it). Book: its
+    /// per-contact solver.
     ContactSolver contactSolver = ContactSolver::Book;
     /// Passes over every contact per (sub)step, count. Book: ImpulseIteration = 5.
     int solverIterations = 5;

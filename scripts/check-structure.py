@@ -8,7 +8,9 @@ Fails (exit 1) on
 Reports, without failing, every function over 80 lines (its file, first line and length), longest first.
 
 Usage: check-structure.py REPO_ROOT [--functions]. Prints one line per problem; --functions also lists the long
-functions (by default only their count is printed). KNOWN_CIRCLES below lists the circles that predate the check.
+functions (by default only their count is printed). No circle is allowed: the last known one (Physics/'s core:
+WorldSettings <-> Particle, the solvers <-> PhysicsSystem) was cut when the contact solvers went behind
+IContactSolver.h.
 """
 import os
 import re
@@ -20,16 +22,6 @@ FREE = ("tests/", "bench/")
 MAX_FILE_LINES = 600
 MAX_FUNCTION_LINES = 80
 INCLUDE = re.compile(r'\s*#\s*include\s*"([^"]+)"')
-# Circles that were there when this check came, each listed by its units. A circle found is this known one when at
-# least half its units are listed (it may gain a new file of the same knot, or lose one); any other circle fails,
-# and so does an entry here that no longer matches a circle (so the list only shrinks). Physics/'s
-# core: WorldSettings.h names the solver and integrator enums and Particle.h reads WorldSettings; the solvers'
-# .cpp files include PhysicsSystem.h, which includes them.
-KNOWN_CIRCLES = [
-    {"Physics/Broadphase", "Physics/Cloth", "Physics/ContactSolver", "Physics/DistanceJoint", "Physics/Integrator",
-     "Physics/Islands", "Physics/Particle", "Physics/PhysicsSystem", "Physics/RigidbodyVolume", "Physics/SoftSolver",
-     "Physics/Spring", "Physics/WorldSettings"},
-]
 
 
 def source_files(root):
@@ -187,17 +179,8 @@ def main():
     list_functions = "--functions" in sys.argv
     files = list(source_files(root))
     problems = []
-    known_seen = set()
     for component in circles(include_graph(root, files)):
-        known = [i for i, k in enumerate(KNOWN_CIRCLES) if 2 * len(set(component) & k) >= len(component)]
-        if known:
-            known_seen.add(known[0])
-            print("known include circle (to be removed): " + " -> ".join(component))
-        else:
-            problems.append("include circle: " + " -> ".join(component) + " (each includes another of them)")
-    for i, k in enumerate(KNOWN_CIRCLES):
-        if i not in known_seen and all(os.path.isfile(os.path.join(root, u + ".h")) for u in k):
-            problems.append("KNOWN_CIRCLES entry %d is no longer a circle: remove it from the list" % i)
+        problems.append("include circle: " + " -> ".join(component) + " (each includes another of them)")
     long_ones = []
     for rel in files:
         if rel.startswith(FREE):

@@ -20,25 +20,6 @@ int ContactSolverIndex(ContactSolver solver) {
     return 0;
 }
 
-void AddContactSolverParameters(ParameterSet* set, int* solverIndex, SoftSolverSettings* soft, bool* sleep,
-                                const std::string& solverHelp, const std::function<void()>& onChange) {
-    using L = SoftSolverLimits;
-    set->AddChoice("solver", solverIndex, ContactSolverChoices(), solverHelp, onChange);
-    set->AddInt("soft-substeps", &soft->substeps, 1, L::kMaxSubsteps, "soft solver: substeps per step", onChange);
-    set->AddInt("soft-iterations", &soft->iterations, 1, L::kMaxIterations,
-                "soft solver: biased solve passes per substep", onChange);
-    set->AddInt("soft-relax-iterations", &soft->relaxIterations, 0, L::kMaxIterations,
-                "soft solver: relax passes (no bias) per substep", onChange);
-    set->AddFloat("soft-contact-hertz", &soft->contactHertz, L::kMinContactHertz, L::kMaxContactHertz,
-                  "soft solver: contact stiffness (Hz), capped at a quarter of the substep rate", onChange);
-    set->AddFloat("soft-contact-damping-ratio", &soft->contactDampingRatio, 0.0f, L::kMaxDampingRatio,
-                  "soft solver: damping ratio of the contact spring (1 critical)", onChange);
-    set->AddFloat("soft-max-pushout-speed", &soft->maxPushoutSpeed, 0.0f, L::kMaxPushoutSpeed,
-                  "soft solver: fastest push-out of a penetrating contact (m/s)", onChange);
-    set->AddBool("sleep", sleep, "islands of slow bodies sleep until touched, pushed or changed (docs/sleep.md)",
-                 onChange);
-}
-
 std::string ContactSolverRow(ContactSolver solver, const SoftSolverSettings& soft) {
     if (solver == ContactSolver::Book) return "";
     if (solver != ContactSolver::Soft) return std::string("Contact solver: ") + ToString(solver);
@@ -56,5 +37,20 @@ void ContactSolverChoice::ApplyTo(WorldSettings* settings) const {
 
 void AddContactSolverParameters(ParameterSet* set, ContactSolverChoice* choice, const std::string& solverHelp,
                                 const std::function<void()>& onChange) {
-    AddContactSolverParameters(set, &choice->solver, &choice->soft, &choice->sleep, solverHelp, onChange);
+    using L = SoftSolverLimits;
+    SoftSolverSettings* soft = &choice->soft;
+    set->AddChoice("solver", &choice->solver, ContactSolverChoices(), solverHelp, onChange);
+    set->AddInt("soft-substeps", &soft->substeps, 1, L::kMaxSubsteps, "soft solver: substeps per step", onChange);
+    set->AddInt("soft-iterations", &soft->iterations, 1, L::kMaxIterations,
+                "soft solver: biased solve passes per substep", onChange);
+    set->AddInt("soft-relax-iterations", &soft->relaxIterations, 0, L::kMaxIterations,
+                "soft solver: relax passes (no bias) per substep", onChange);
+    set->AddFloat("soft-contact-hertz", &soft->contactHertz, L::kMinContactHertz, L::kMaxContactHertz,
+                  "soft solver: contact stiffness (Hz), capped at a quarter of the substep rate", onChange);
+    set->AddFloat("soft-contact-damping-ratio", &soft->contactDampingRatio, 0.0f, L::kMaxDampingRatio,
+                  "soft solver: damping ratio of the contact spring (1 critical)", onChange);
+    set->AddFloat("soft-max-pushout-speed", &soft->maxPushoutSpeed, 0.0f, L::kMaxPushoutSpeed,
+                  "soft solver: fastest push-out of a penetrating contact (m/s)", onChange);
+    set->AddBool("sleep", &choice->sleep,
+                 "islands of slow bodies sleep until touched, pushed or changed (docs/sleep.md)", onChange);
 }

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "Demos/Scenes/Parameters.h"
-#include "Physics/ContactSolver.h"
+#include "Physics/ContactSolverSettings.h"
 #include "Physics/WorldSettings.h"
 
 /// Solver ids in kAllContactSolvers order ("book", "accumulated", "soft"): the "solver" choice list, so a
@@ -29,18 +29,11 @@ struct SoftSolverLimits {
     static constexpr float kMaxPushoutSpeed = 100.0f;  ///< m/s
 };
 
-/// Registers "solver" (a choice bound to *solverIndex, help `solverHelp`) and the soft solver's settings a user
-/// tunes: soft-substeps, soft-iterations, soft-relax-iterations, soft-contact-hertz, soft-contact-damping-ratio,
-/// soft-max-pushout-speed (bound to *soft), and "sleep" (islands and sleep on or off, bound to *sleep,
-/// WorldSettings::sleep.enabled; docs/sleep.md). onChange runs after each successful --set.
-void AddContactSolverParameters(ParameterSet* set, int* solverIndex, SoftSolverSettings* soft, bool* sleep,
-                                const std::string& solverHelp, const std::function<void()>& onChange);
-
-/// The contact-solver choice of a rigid-volume scene (ch15, linear-impulse, momentum): the one place for the
-/// "solver" index, the soft solver's settings and sleep. Not book widgets; off (the book's) by default.
+/// The contact-solver choice of a rigid-volume scene (ch15, linear-impulse, momentum, scene files): the one place
+/// for the "solver" index, the soft solver's settings and sleep. Not book widgets; off (the book's) by default.
 struct ContactSolverChoice {
     /// An index of ContactSolverChoices(), so the enum's value: 0 the book's per-contact solver, 1 accumulated
-    /// impulses, 2 the soft step (ContactSolver.h); `--set solver=`.
+    /// impulses, 2 the soft step (ContactSolverSettings.h); `--set solver=`.
     int solver = 0;
     /// WorldSettings::soft, used when solver is soft (`--set soft-substeps=...`).
     SoftSolverSettings soft;
@@ -51,7 +44,10 @@ struct ContactSolverChoice {
     void ApplyTo(WorldSettings* settings) const;
 };
 
-/// AddContactSolverParameters bound to a ContactSolverChoice.
+/// Registers "solver" (a choice bound to choice->solver, help `solverHelp`) and the soft solver's settings a user
+/// tunes: soft-substeps, soft-iterations, soft-relax-iterations, soft-contact-hertz, soft-contact-damping-ratio,
+/// soft-max-pushout-speed (bound to choice->soft), and "sleep" (islands and sleep on or off, bound to
+/// choice->sleep, WorldSettings::sleep.enabled; docs/sleep.md). onChange runs after each successful --set.
 void AddContactSolverParameters(ParameterSet* set, ContactSolverChoice* choice, const std::string& solverHelp,
                                 const std::function<void()>& onChange);
 

@@ -35,7 +35,9 @@ FileScene::FileScene(const SceneDescription& d) : description(d) {
     for (std::size_t i = 0; i < std::size(kAllIntegrators); ++i) {
         if (kAllIntegrators[i] == d.world.integrator) integratorChoice = static_cast<int>(i);
     }
-    solverChoice = ContactSolverIndex(d.world.contactSolver);
+    contact.solver = ContactSolverIndex(d.world.contactSolver);
+    contact.soft = d.world.soft;
+    contact.sleep = d.world.sleep.enabled;
     Reset();
 }
 
@@ -44,7 +46,9 @@ void FileScene::AddParameters(ParameterSet* set) {
     SceneWorld& w = description.world;
     auto apply = [this] {
         description.world.integrator = kAllIntegrators[integratorChoice];
-        description.world.contactSolver = ContactSolverAt(solverChoice);
+        description.world.contactSolver = ContactSolverAt(contact.solver);
+        description.world.soft = contact.soft;
+        description.world.sleep.enabled = contact.sleep;
         ApplyWorldSettings();
     };
     std::vector<std::string> integrators;
@@ -55,9 +59,8 @@ void FileScene::AddParameters(ParameterSet* set) {
         description.world.particleContact = ParticleContactAt(contactChoice);
         ApplyWorldSettings();
     });
-    AddContactSolverParameters(set, &solverChoice, &w.soft, &w.sleep.enabled,
-                               "contact solver: the book's per-contact impulses, accumulated impulses or the soft step",
-                               apply);
+    AddContactSolverParameters(
+        set, &contact, "contact solver: the book's per-contact impulses, accumulated impulses or the soft step", apply);
     set->AddInt("iterations", &w.iterations, 1, SceneLimits::kMaxIterations, "contact solver passes per step", apply);
     set->AddFloat("slop", &w.penetrationSlop, 0.0f, 1.0f, "penetration left uncorrected (m)", apply);
     set->AddBool("linear-projection", &w.linearProjection, "positional correction after integration", apply);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "Demos/Scenes/ContactSolverParameters.h"
 #include "Demos/Scenes/Parameters.h"
 #include "Demos/Scenes/Scene.h"
 #include "Demos/Scenes/SceneFile.h"
@@ -58,7 +59,9 @@ private:
     SceneDescription description;
     int integratorChoice = 0;  // index into kAllIntegrators, mirrors description.world.integrator
     int contactChoice = 0;     // the "particle-contact" choice (0 book, 1 skin)
-    int solverChoice = 0;      // index of ContactSolverChoices(), mirrors description.world.contactSolver
+    // The "solver", soft-solver and "sleep" keys (the type every rigid-volume scene uses); each change is written
+    // into description.world (contactSolver, soft, sleep.enabled) before the world's settings are applied.
+    ContactSolverChoice contact;
     std::unique_ptr<PhysicsSystem> system;
     std::vector<Particle> particles;       // never resized after Reset: the system and springs point in
     std::vector<RigidbodyVolume> volumes;  // likewise

@@ -23,15 +23,14 @@ TEST(ContactSolverParameters, ChoicesFollowTheEnumOrder) {
 }
 
 TEST(ContactSolverParameters, KeysAreBoundToTheSettingsWithTheirRanges) {
-    int solver = 0;
-    SoftSolverSettings soft;
-    bool sleep = false;
+    ContactSolverChoice choice;
+    const SoftSolverSettings& soft = choice.soft;
     int changes = 0;
     ParameterSet set;
-    AddContactSolverParameters(&set, &solver, &soft, &sleep, "help", [&changes] { ++changes; });
+    AddContactSolverParameters(&set, &choice, "help", [&changes] { ++changes; });
     std::string error;
     ASSERT_TRUE(set.Set("solver", "soft", &error)) << error;
-    EXPECT_EQ(ContactSolverAt(solver), ContactSolver::Soft);
+    EXPECT_EQ(ContactSolverAt(choice.solver), ContactSolver::Soft);
     ASSERT_TRUE(set.Set("soft-substeps", "64", &error)) << error;
     ASSERT_TRUE(set.Set("soft-contact-hertz", "0.1", &error)) << error;  // the bounds are inclusive
     EXPECT_EQ(soft.substeps, 64);
@@ -43,7 +42,7 @@ TEST(ContactSolverParameters, KeysAreBoundToTheSettingsWithTheirRanges) {
     EXPECT_FALSE(set.Set("soft-max-pushout-speed", "nan", &error));
     EXPECT_EQ(changes, 3);
     ASSERT_TRUE(set.Set("sleep", "1", &error)) << error;
-    EXPECT_TRUE(sleep);
+    EXPECT_TRUE(choice.sleep);
     EXPECT_EQ(changes, 4);
     for (const char* key : {"solver", "soft-substeps", "soft-iterations", "soft-relax-iterations", "soft-contact-hertz",
                             "soft-contact-damping-ratio", "soft-max-pushout-speed", "sleep"}) {

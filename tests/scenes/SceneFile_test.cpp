@@ -558,9 +558,15 @@ TEST(FileScene, AppliesSoftSettingsAndSleepAndOffersTheSoftSolver) {
     EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Book);
     ASSERT_TRUE(set.Set("solver", "soft", &error)) << error;
     EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Soft);
+    ASSERT_TRUE(set.Set("sleep", "0", &error)) << error;
+    EXPECT_FALSE(scene.Description().world.sleep.enabled);
+    EXPECT_EQ(scene.Description().world.sleep.timeToSleep, 0.25f) << "only the on/off goes through the choice";
     scene.Reset();  // the settings are the description's, so a rebuild keeps them
     EXPECT_EQ(scene.System().settings.soft.substeps, 3);
     EXPECT_EQ(scene.System().settings.contactSolver, ContactSolver::Soft);
+    EXPECT_FALSE(scene.System().settings.sleep.enabled);
+    EXPECT_TRUE(scene.Step(1.0f / 60.0f));
+    EXPECT_EQ(scene.System().Solver().Kind(), ContactSolver::Soft) << "the world steps with the chosen solver";
 }
 
 TEST(FileScene, StepsUnderTheFilesGravity) {

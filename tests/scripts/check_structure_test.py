@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """scripts/check-structure.py on small made-up trees: a clean tree passes; an include circle between two units
-(one through a .cpp, as Runner.cpp and AutoModelHost.cpp once were) fails and is named; a file over 600 lines
+(one through a .cpp, as Runner.cpp and AutoModelHost.cpp once were) fails and is named, and so does the Physics
+circle the check once let through as known; a file over 600 lines
 fails; a function over 80 lines is reported without failing.
 Usage: check_structure_test.py PATH/TO/check-structure.py"""
 import os
@@ -44,6 +45,17 @@ def main():
         write(root, "App/Low.cpp", '#include "App/Low.h"\n#include "App/High.h"\nint Low() { return 1; }\n')
         code, out = run(script, root)
         expect(code == 1 and "include circle: App/High -> App/Low" in out, "a circle through a .cpp fails", out)
+
+    with tempfile.TemporaryDirectory() as root:
+        # The circle this check once let through as known (Physics/'s WorldSettings <-> Particle, a header-only unit
+        # among them): no circle is allowed, whatever its files.
+        write(root, "Physics/WorldSettings.h", '#pragma once\n#include "Physics/Particle.h"\nstruct WorldSettings {};\n')
+        write(root, "Physics/Particle.h", '#pragma once\nstruct Particle {};\n')
+        write(root, "Physics/Particle.cpp", '#include "Physics/Particle.h"\n#include "Physics/WorldSettings.h"\n')
+        code, out = run(script, root)
+        expect(code == 1 and "include circle: Physics/Particle -> Physics/WorldSettings" in out,
+               "the once-known Physics circle fails like any other", out)
+        expect("known" not in out, "no circle is reported as known", out)
 
     with tempfile.TemporaryDirectory() as root:
         clean_tree(root)

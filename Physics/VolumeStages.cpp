@@ -1,12 +1,14 @@
-// Rigid-volume stages of PhysicsSystem::Update (docs/book-reference.md §3.4 steps 1-5): pair search with manifolds,
-// forces, settings.solverIterations passes of ApplyImpulse over every contact, integration, linear projection.
+// The rigid-volume stages the contact solvers share (VolumeStages.h; docs/book-reference.md §3.4 steps 1, 2, 4, 5):
+// pair search with manifolds, forces, integration, linear projection; the soft step's grown-box search.
+#include "Physics/VolumeStages.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
-#include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
+#include "Physics/WorldSettings.h"
 
 namespace {
 
@@ -23,7 +25,7 @@ bool CanInteract(const RigidbodyVolume& a, const RigidbodyVolume& b) {
 
 }  // namespace
 
-void PhysicsSystem::FindCollisions(const StepContext& ctx, Islands* sleep) {
+void VolumeStages::FindCollisions(const StepContext& ctx, Islands* sleep) {
     if (sleep == nullptr) {
         FindPairs(ctx, nullptr);
         return;
@@ -34,7 +36,7 @@ void PhysicsSystem::FindCollisions(const StepContext& ctx, Islands* sleep) {
     while (sleep->WakeTouched(results.data(), resultCount) > 0) FindPairs(ctx, sleep->ActiveMask());
 }
 
-void PhysicsSystem::FindPairs(const StepContext& ctx, const unsigned char* active) {
+void VolumeStages::FindPairs(const StepContext& ctx, const unsigned char* active) {
     resultCount = 0;
     // Test one pair, writing into the next slot of `results`; a slot is kept (with its contact capacity) even
     // when the pair does not collide, so the steady state allocates nothing.
@@ -62,7 +64,7 @@ void PhysicsSystem::FindPairs(const StepContext& ctx, const unsigned char* activ
         return;
     }
     if (!broadphase.FindPairs(volumes, &candidatePairs, active, 0.0f, 0.0f, ctx.settings.maxPairs, ctx.jobs)) {
-        StopAtPairLimit();
+        StopAtPairLimit(ctx);
         return;
     }
     for (const std::pair<int, int>& p : candidatePairs) {
@@ -71,39 +73,35 @@ void PhysicsSystem::FindPairs(const StepContext& ctx, const unsigned char* activ
     }
 }
 
-void PhysicsSystem::StopAtPairLimit() {
+void VolumeStages::StopAtPairLimit(const StepContext& ctx) {
     char text[256];
     std::snprintf(text, sizeof text,
                   "step %lld: more than %zu pairs of volumes overlap, the limit of one pair search "
                   "(WorldSettings::maxPairs); stopped before allocating them (%zu volumes)",
-                  stepCount + 1, settings.maxPairs, volumes.size());
+                  ctx.step + 1, ctx.settings.maxPairs, volumes.size());
     stopReason = text;
 }
 
-void PhysicsSystem::StepSoftVolumes(StepContext& ctx) {
-    // The soft step (docs/soft-solver.md, "The soft-step solver"): pairs are found once per step, with every AABB grown
-    // by the speculative margin and the body's travel over the step, so that contacts about to touch are solved
-    // before they do; no travel split, no linear projection (the solver's substeps and soft bias replace both).
-    const int n = std::max(settings.soft.substeps, 1);
-    ctx.substepCount = n;
-    ctx.h = ctx.dt / static_cast<float>(n);
-    ctx.invH = 1.0f / ctx.h;
-    ctx.substep = 0;
-    ctx.substepSerial = volumeSubstepSerial;
-    lastVolumeSubsteps = n;
-    resultCount = 0;  // Collisions() turns the soft step's contacts into the book's form when asked
-
-    // Islands and sleep (Islands.h): null while settings.sleep is off. Sleeping bodies are held like static ones;
-    // a pair is searched only when one body is active, and a sleeping island whose grown AABB meets an active
-    // body's is woken before the solve (then the search runs again for its own pairs).
-    Islands* sleep = islands.BeginStep(volumes, settings.sleep) ? &islands : nullptr;
-    const unsigned char* active = sleep != nullptr ? sleep->ActiveMask() : nullptr;
-    const float margin = std::max(settings.soft.speculativeMargin, 0.0f);
-    const std::size_t count = volumes.size();
+void VolumeStages::FindGrownPairs(const StepContext& ctx, const unsigned char* active, float margin) {
     // The all-pairs loop asks for overlapping grown boxes, as the broadphase does: so a small world and a large
     // one find the same pairs, and the solver collides only pairs that can touch this step (in a column of 20
     // cubes, 19 + 1 of its 210 pairs). With sleep on, these pairs also decide which islands wake.
+    candidatePairs.clear();
+    const std::size_t count = volumes.size();
+    if (count >= ctx.settings.broadphaseMinVolumes) {
+        if (!broadphase.FindPairs(volumes, &candidatePairs, active, margin, ctx.dt, ctx.settings.maxPairs, ctx.jobs))
+            StopAtPairLimit(ctx);
+        return;
+    }
     // Each body's box grown by the margin and its travel over the step, once per search (not once per pair).
+    smallWorldBounds.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        GrownBounds& g = smallWorldBounds[i];
+        VolumeBounds(*volumes[i], &g.min, &g.max);
+        const float grow = margin + Magnitude(volumes[i]->velocity) * ctx.dt;
+        g.min -= vec3(grow, grow, grow);
+        g.max += vec3(grow, grow, grow);
+    }
     auto near = [&](std::size_t i, std::size_t j) {
         const GrownBounds& a = smallWorldBounds[i];
         const GrownBounds& b = smallWorldBounds[j];
@@ -111,85 +109,13 @@ void PhysicsSystem::StepSoftVolumes(StepContext& ctx) {
             if (a.min[k] > b.max[k] || b.min[k] > a.max[k]) return false;
         return true;
     };
-    auto search = [&] {
-        candidatePairs.clear();
-        if (count < settings.broadphaseMinVolumes) {
-            smallWorldBounds.resize(count);
-            for (std::size_t i = 0; i < count; ++i) {
-                GrownBounds& g = smallWorldBounds[i];
-                VolumeBounds(*volumes[i], &g.min, &g.max);
-                const float grow = margin + Magnitude(volumes[i]->velocity) * ctx.dt;
-                g.min -= vec3(grow, grow, grow);
-                g.max += vec3(grow, grow, grow);
-            }
-            for (std::size_t i = 0; i < count; ++i)
-                for (std::size_t j = i + 1; j < count; ++j)
-                    if (CanInteract(*volumes[i], *volumes[j]) && (active == nullptr || active[i] || active[j]) &&
-                        near(i, j))
-                        candidatePairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
-        } else if (!broadphase.FindPairs(volumes, &candidatePairs, active, margin, ctx.dt, settings.maxPairs,
-                                         ctx.jobs)) {
-            StopAtPairLimit();
-        }
-    };
-    // With every body asleep (or static) no pair can have an active body and nothing moves: the search and the
-    // solver's pass over every body are skipped, and the solver only forgets its (already empty) contacts, which
-    // is what its Step would leave. A settled world then costs the wake checks and the island update.
-    if (sleep != nullptr && std::find(active, active + count, 1) == active + count) {
-        candidatePairs.clear();
-        softSolver.Clear();
-    } else {
-        search();
-        if (sleep != nullptr)
-            while (stopReason.empty() && sleep->WakeTouched(candidatePairs.data(), candidatePairs.size()) > 0) search();
-        if (!stopReason.empty()) return;
-        softSolver.Step(volumes, candidatePairs, ctx, active);
-    }
-    if (sleep != nullptr) {
-        // Islands are linked over the same candidate pairs that wake them (grown boxes that meet), not only over
-        // pairs with contact points: two islands near enough to wake each other are one island, so they fall
-        // asleep together instead of waking each other in turn.
-        islands.BeginUpdate(volumes, ctx.dt, settings.sleep);
-        for (const std::pair<int, int>& p : candidatePairs) islands.LinkPair(p.first, p.second);
-        islands.EndUpdate(volumes, settings.sleep);
-    }
-    volumeSubstepSerial += n;
-    softCollisionsPending = true;
+    for (std::size_t i = 0; i < count; ++i)
+        for (std::size_t j = i + 1; j < count; ++j)
+            if (CanInteract(*volumes[i], *volumes[j]) && (active == nullptr || active[i] || active[j]) && near(i, j))
+                candidatePairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
 }
 
-void PhysicsSystem::FillSoftCollisions() const {
-    softCollisionsPending = false;
-    resultCount = 0;
-    const std::vector<SoftContactSolver::Pair>& pairs = softSolver.Pairs();
-    const std::vector<SoftContactSolver::Contact>& contacts = softSolver.Contacts();
-    for (const SoftContactSolver::Pair& pair : pairs) {
-        const std::size_t a = static_cast<std::size_t>(pair.a), b = static_cast<std::size_t>(pair.b);
-        if (b >= volumes.size() || volumes[a] != pair.bodyA || volumes[b] != pair.bodyB) continue;
-        if (resultCount == results.size()) results.emplace_back();
-        CollisionPair& slot = results[resultCount];
-        CollisionManifold& m = slot.manifold;
-        ResetCollisionManifold(&m);
-        m.normal = pair.n;
-        m.depth = 0.0f;
-        // The anchors are from body a's centre at the start of the step, as the manifold found them.
-        const vec3 start = softSolver.StartPosition(pair.a);
-        for (std::size_t k = pair.first; k < pair.first + pair.count; ++k) {
-            const SoftContactSolver::Contact& c = contacts[k];
-            if (c.separation > 0.0f) continue;
-            m.contacts.push_back(start + c.rA);
-            m.depth = std::max(m.depth, -c.separation);
-        }
-        if (m.contacts.empty()) continue;
-        m.colliding = true;
-        slot.a = volumes[a];
-        slot.b = volumes[b];
-        slot.indexA = pair.a;
-        slot.indexB = pair.b;
-        ++resultCount;
-    }
-}
-
-void PhysicsSystem::ApplyVolumeForces(const StepContext& ctx, const Islands* sleep) {
+void VolumeStages::ApplyVolumeForces(const StepContext& ctx, const Islands* sleep) {
     // ch15 note N1 (docs/ERRATA.md, Chapter 15): the book applies the impulses to the velocity of the previous step
     // and only then adds this step's gravity and moves the body, so the tangential part of g dt always
     // reaches the position before friction can see it: a box creeps down any incline at about g sin(theta) dt
@@ -205,24 +131,7 @@ void PhysicsSystem::ApplyVolumeForces(const StepContext& ctx, const Islands* sle
     }
 }
 
-void PhysicsSystem::ApplyImpulses(const StepContext& ctx) {
-    if (ctx.settings.contactSolver == ContactSolver::Accumulated) {
-        // Sequential impulses with an arbiter (ContactSolver.h); results are in increasing (indexA, indexB)
-        // order, which the arbiter's lookup relies on.
-        // Impulses carry over between consecutive substeps (ctx.substepSerial).
-        accumulatedSolver.Solve(volumes, results.data(), resultCount, ctx);
-        return;
-    }
-    for (int k = 0; k < ctx.settings.solverIterations; ++k) {
-        for (std::size_t i = 0; i < resultCount; ++i) {
-            const CollisionPair& pair = results[i];
-            const int contacts = static_cast<int>(pair.manifold.contacts.size());
-            for (int c = 0; c < contacts; ++c) ApplyImpulse(*pair.a, *pair.b, pair.manifold, c);
-        }
-    }
-}
-
-int PhysicsSystem::VolumeSubsteps(float dt) {
+int VolumeStages::VolumeSubsteps(const StepContext& ctx) {
     // Volumes have no continuous collision: contacts are found at the start of a step, so a body that moves
     // further than its own half extent plus the other's in one step passes a slab's mid plane, and the manifold
     // then pushes it out of the far side (a 0.5 s step drops a resting box 1.2 m). Per dynamic
@@ -230,6 +139,8 @@ int PhysicsSystem::VolumeSubsteps(float dt) {
     // extent in the world (the thinnest thing it could meet); n keeps every substep's travel within
     // settings.substepTravelFraction of that sum. Spin is not counted. One pass over the volumes; n = 1 at the book's
     // 0.03 s in all its demos (ch15: ratio 0.23, momentum: 0.52 at the 20 m/s launch).
+    const WorldSettings& settings = ctx.settings;
+    const float dt = ctx.dt;
     const int maxSubsteps = settings.maxVolumeSubsteps;
     if (maxSubsteps <= 1) return 1;
     float thinnest = std::numeric_limits<float>::infinity();
@@ -252,7 +163,7 @@ int PhysicsSystem::VolumeSubsteps(float dt) {
     return maxSubsteps;
 }
 
-void PhysicsSystem::IntegrateVolumes(const StepContext& ctx, const Islands* sleep) {
+void VolumeStages::IntegrateVolumes(const StepContext& ctx, const Islands* sleep) {
     if (sleep == nullptr) {
         for (RigidbodyVolume* body : volumes) body->IntegratePosition(ctx.h);
         return;
@@ -261,7 +172,7 @@ void PhysicsSystem::IntegrateVolumes(const StepContext& ctx, const Islands* slee
         if (sleep->IsAwake(static_cast<int>(i))) volumes[i]->IntegratePosition(ctx.h);
 }
 
-void PhysicsSystem::ApplyLinearProjection(const StepContext& ctx) {
+void VolumeStages::ApplyLinearProjection(const StepContext& ctx) {
     // Positional correction (docs/book-reference.md §3.4 step 5) with the manifolds found before integration. Depth is
     // the full penetration for every pair type (CollisionManifold::depth).
     for (std::size_t i = 0; i < resultCount; ++i) {
@@ -281,4 +192,16 @@ void PhysicsSystem::ApplyLinearProjection(const StepContext& ctx) {
         a.SynchCollisionVolumes();
         b.SynchCollisionVolumes();
     }
+}
+
+void VolumeStages::SkipStep() {
+    resultCount = 0;
+    lastVolumeSubsteps = 1;
+    ++substepSerial;
+}
+
+void VolumeStages::Reset() {
+    resultCount = 0;
+    collisionsPending = false;
+    stopReason.clear();  // a new world may run again
 }
