@@ -118,9 +118,16 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
         const std::size_t b = blockOrder[job];
         const Block& block = blocks[b];
         UpdateSeparations(block);
+        // The warm start re-applies the impulses the contacts ended the last substep with. Rows are fixed for the
+        // step and every pass applies only its change to a row's total, so after the first substep that is each
+        // body's velocity change from the contacts over the last substep (BodyState::v0), re-applied per body
+        // (IntegrateVelocities) rather than row by row: no pass over the contacts. Not in a block with shock points:
+        // the shock pass moves velocities by impulses that are not the rows'.
+        const bool shock = !shockBlockStart.empty() && shockBlockStart[b + 1] > shockBlockStart[b];
         for (int s = 0; s < ctx.substepCount; ++s) {
-            IntegrateVelocities(ctx, block);
-            WarmStart(block);
+            const bool perBody = s > 0 && !shock;
+            IntegrateVelocities(ctx, block, perBody);
+            if (!perBody) WarmStart(block);
             for (int k = 0; k < soft.iterations; ++k)
                 Solve(block, ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, true);
             if (!shockPoints.empty())
@@ -270,21 +277,28 @@ void SoftContactSolver::PreparePair(const Pair& pair) {
     }
 }
 
-void SoftContactSolver::IntegrateVelocities(const StepContext& ctx, const Block& block) {
+void SoftContactSolver::IntegrateVelocities(const StepContext& ctx, const Block& block, bool warm) {
     const float h = ctx.h;
     for (std::size_t k = block.bodyBegin; k < block.bodyEnd; ++k) {
         const std::size_t i = static_cast<std::size_t>(graph.BlockBodies()[k]);
         const BodySim& bs = sim[i];
         BodyState& st = state[i];
         // Semi-implicit Euler, then the body's velocity retention and threshold per substep (RigidbodyVolume).
-        st.v = (st.v + bs.gravity * h) * bs.retention;
-        st.w = (st.w + bs.angularAccel * h) * bs.retention;
+        vec3 v = (st.v + bs.gravity * h) * bs.retention;
+        vec3 w = (st.w + bs.angularAccel * h) * bs.retention;
         if (bs.epsilon > 0.0f) {
             for (int a = 0; a < 3; ++a) {
-                if (std::fabs(st.v[a]) < bs.epsilon) st.v[a] = 0.0f;
-                if (std::fabs(st.w[a]) < bs.epsilon) st.w[a] = 0.0f;
+                if (std::fabs(v[a]) < bs.epsilon) v[a] = 0.0f;
+                if (std::fabs(w[a]) < bs.epsilon) w[a] = 0.0f;
             }
         }
+        // The warm start: what the contacts gave the body over the last substep (the velocities it ended with minus
+        // those it started from after this step), on top of the new ones.
+        const vec3 dv = warm ? st.v - st.v0 : vec3(), dw = warm ? st.w - st.w0 : vec3();
+        st.v0 = v;
+        st.w0 = w;
+        st.v = warm ? v + dv : v;
+        st.w = warm ? w + dw : w;
     }
 }
 
@@ -314,7 +328,9 @@ void SoftContactSolver::IntegratePositions(const StepContext& ctx, const Block& 
             }
             continue;
         }
+        const vec3 before = st.w;
         bs.q = AdvanceRotation(bs.q, &st.w, bs.inertia, h);
+        st.w0 = st.w0 + (st.w - before);  // a free body's change of w is no contact's (IntegrateVelocities' warm start)
         const mat3 dR = ToMat3(bs.q * Conjugate(bs.q0));
         for (int r = 0; r < 3; ++r)
             for (int c = 0; c < 3; ++c) st.dR[r][c] = dR[r][c];

@@ -115,6 +115,12 @@ public:
         float padP = 0.0f;
         // Rotation since the step began (row-vector form), rows padded to four floats.
         float dR[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+        // v and w as this substep's IntegrateVelocities left them, before any contact impulse: v - v0 and w - w0 at
+        // the substep's end are what its contacts gave (the next substep's warm start, IntegrateVelocities).
+        vec3 v0;
+        float padV0 = 0.0f;
+        vec3 w0;
+        float padW0 = 0.0f;
     };
     /// Per-body constants of the step and its pose.
     struct alignas(16) BodySim {
@@ -257,7 +263,9 @@ private:
     };
     void Prepare(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx);
     // The two per-body loops of a substep: each lives here only.
-    void IntegrateVelocities(const StepContext& ctx, const Block& block);
+    /// Gravity, retention and threshold of one substep; `warm`: then the velocity change the block's contacts gave
+    /// each body over the last substep, again (the warm start of every substep after the first; Step).
+    void IntegrateVelocities(const StepContext& ctx, const Block& block, bool warm);
     void IntegratePositions(const StepContext& ctx, const Block& block);
     /// IntegratePositions' small turn of `count` (1..4) isotropic bodies at once, four wide (SoftSolver.cpp).
     void SmallTurns(const int* bodies, int count, float h);
