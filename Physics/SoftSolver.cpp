@@ -432,8 +432,7 @@ void SoftContactSolver::WarmStartPair(const Pair& pair) {
     PairVelocities x = LoadVelocities(A, B);
     const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
     const V4 n = Load(pair.n), t1 = Load(pair.t1), t2 = Load(pair.t2);
-    for (std::size_t k = pair.first; k < pair.first + pair.count; ++k)
-        WarmStartPoint(x, invA, invB, n, t1, t2, contacts[k]);
+    WarmStartPoints(x, invA, invB, n, t1, t2, &contacts[pair.first], pair.count);
     StoreMovingVelocities(x, pair, moving, state);
 }
 
