@@ -48,6 +48,16 @@ inline void StoreMovingVelocities(const PairVelocities& x, const SoftContactSolv
     }
 }
 
+/// |x| lane by lane (the sign bit cleared, as std::fabs).
+inline simd4::Float4 Abs(simd4::Float4 x) {
+    using Bits = decltype(simd4::Float4{} < simd4::Float4{});
+    Bits b;
+    std::memcpy(&b, &x, sizeof b);
+    b &= Bits{0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff};
+    std::memcpy(&x, &b, sizeof x);
+    return x;
+}
+
 /// A 4x4 transpose: out[c][r] = in[r][c] (data moves only).
 inline void Transpose4(const simd4::Float4 (&in)[4], simd4::Float4 (&out)[4]) {
     const simd4::Float4 a = __builtin_shufflevector(in[0], in[1], 0, 4, 1, 5);  // 00 10 01 11
@@ -290,27 +300,32 @@ void SoftContactSolver::PreparePair(const Pair& pair) {
 }
 
 void SoftContactSolver::IntegrateVelocities(const StepContext& ctx, const Block& block, bool warm) {
-    const float h = ctx.h;
+    using simd4::Float4;
+    const Float4 h = simd4::Wide(ctx.h), zero = simd4::Wide(0.0f);
+    auto padded = [](const vec3& v) { return Float4{v.x, v.y, v.z, 0.0f}; };
+    auto store = [](vec3& to, Float4 v) { std::memcpy(&to.x, &v, sizeof v); };
     for (std::size_t k = block.bodyBegin; k < block.bodyEnd; ++k) {
         const std::size_t i = static_cast<std::size_t>(graph.BlockBodies()[k]);
         const BodySim& bs = sim[i];
         BodyState& st = state[i];
-        // Semi-implicit Euler, then the body's velocity retention and threshold per substep (RigidbodyVolume).
-        vec3 v = (st.v + bs.gravity * h) * bs.retention;
-        vec3 w = (st.w + bs.angularAccel * h) * bs.retention;
+        // Semi-implicit Euler, then the body's velocity retention and threshold per substep (RigidbodyVolume), a
+        // lane per component (the vec3 operations' bits; the padding lanes stay 0).
+        const Float4 retention = simd4::Wide(bs.retention);
+        Float4 v = (simd4::Load4(st.v) + padded(bs.gravity) * h) * retention;
+        Float4 w = (simd4::Load4(st.w) + padded(bs.angularAccel) * h) * retention;
         if (bs.epsilon > 0.0f) {
-            for (int a = 0; a < 3; ++a) {
-                if (std::fabs(v[a]) < bs.epsilon) v[a] = 0.0f;
-                if (std::fabs(w[a]) < bs.epsilon) w[a] = 0.0f;
-            }
+            const Float4 epsilon = simd4::Wide(bs.epsilon);
+            v = Select(Abs(v) < epsilon, zero, v);
+            w = Select(Abs(w) < epsilon, zero, w);
         }
         // The warm start: what the contacts gave the body over the last substep (the velocities it ended with minus
         // those it started from after this step), on top of the new ones.
-        const vec3 dv = warm ? st.v - st.v0 : vec3(), dw = warm ? st.w - st.w0 : vec3();
-        st.v0 = v;
-        st.w0 = w;
-        st.v = warm ? v + dv : v;
-        st.w = warm ? w + dw : w;
+        const Float4 dv = warm ? simd4::Load4(st.v) - simd4::Load4(st.v0) : zero;
+        const Float4 dw = warm ? simd4::Load4(st.w) - simd4::Load4(st.w0) : zero;
+        store(st.v0, v);
+        store(st.w0, w);
+        store(st.v, warm ? v + dv : v);
+        store(st.w, warm ? w + dw : w);
     }
 }
 
