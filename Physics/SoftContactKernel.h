@@ -5,6 +5,7 @@
 // Each lane of the wide path does the scalar path's operations in the scalar order, so both give the same bits.
 // Only SoftSolver.cpp and SoftSolverWide.cpp include this.
 #include <cmath>
+#include <cstddef>
 
 #include "Math/Simd4.h"
 #include "Physics/SoftSolverRows.h"
@@ -121,12 +122,45 @@ inline Float4 ConeScale(Float4 sq, Float4 limit) {
 // B: the velocities (PairVelocities, WideVelocities); R: float or Float4; D: a direction (V4, Vec4x3); P: a point
 // (Contact, WidePoint: rows normal, tangent1, tangent2, and current, relativeVelocity, maxNormalImpulse, support).
 
-/// Warm start: the point's kept impulses applied again.
+/// A row's angular part of impulse j (ApplyRow without the linear part).
+inline void ApplyTurn(PairVelocities& x, const Row& row, float j) {
+    x.wA = x.wA - Load(row.iArAxD) * Splat(j);
+    x.wB = x.wB + Load(row.iBrBxD) * Splat(j);
+}
+inline void ApplyTurn(WideVelocities& x, const WideRow& row, Float4 j) {
+    x.wA = Sub(x.wA, Scale(row.iArAxD, j));
+    x.wB = Add(x.wB, Scale(row.iBrBxD, j));
+}
+/// The linear part of a pair's impulse jn n + j1 t1 + j2 t2 (its points' impulses summed per direction): to B, minus
+/// to A.
+inline void ApplyPush(PairVelocities& x, float invA, float invB, V4 n, V4 t1, V4 t2, float jn, float j1, float j2) {
+    const V4 p = n * Splat(jn) + t1 * Splat(j1) + t2 * Splat(j2);
+    x.vA = x.vA - p * Splat(invA);
+    x.vB = x.vB + p * Splat(invB);
+}
+inline void ApplyPush(WideVelocities& x, Float4 invA, Float4 invB, const Vec4x3& n, const Vec4x3& t1, const Vec4x3& t2,
+                      Float4 jn, Float4 j1, Float4 j2) {
+    const Vec4x3 p = Add(Add(Scale(n, jn), Scale(t1, j1)), Scale(t2, j2));
+    x.vA = Sub(x.vA, Scale(p, invA));
+    x.vB = Add(x.vB, Scale(p, invB));
+}
+
+/// Warm start: the kept impulses of a pair's `count` points applied again. The points share the pair's directions,
+/// so the linear part is applied once, from the impulses summed per direction; the angular part point by point.
 template <class B, class R, class D, class P>
-inline void WarmStartPoint(B& x, R invA, R invB, const D& n, const D& t1, const D& t2, const P& c) {
-    ApplyRow(x, invA, invB, n, c.normal, c.normal.impulse);
-    ApplyRow(x, invA, invB, t1, c.tangent1, c.tangent1.impulse);
-    ApplyRow(x, invA, invB, t2, c.tangent2, c.tangent2.impulse);
+inline void WarmStartPoints(B& x, R invA, R invB, const D& n, const D& t1, const D& t2, const P* points,
+                            std::size_t count) {
+    R jn = Fill<R>(0.0f), j1 = Fill<R>(0.0f), j2 = Fill<R>(0.0f);
+    for (std::size_t k = 0; k < count; ++k) {
+        const P& c = points[k];
+        ApplyTurn(x, c.normal, c.normal.impulse);
+        ApplyTurn(x, c.tangent1, c.tangent1.impulse);
+        ApplyTurn(x, c.tangent2, c.tangent2.impulse);
+        jn = jn + c.normal.impulse;
+        j1 = j1 + c.tangent1.impulse;
+        j2 = j2 + c.tangent2.impulse;
+    }
+    ApplyPush(x, invA, invB, n, t1, t2, jn, j1, j2);
 }
 
 /// Friction (relax pass only): the TOTAL stays inside the Coulomb cone mu jn (book §15, Coulomb clamp), jn from the

@@ -48,6 +48,28 @@ inline void StoreMovingVelocities(const PairVelocities& x, const SoftContactSolv
     }
 }
 
+/// |x| lane by lane (the sign bit cleared, as std::fabs).
+inline simd4::Float4 Abs(simd4::Float4 x) {
+    using Bits = decltype(simd4::Float4{} < simd4::Float4{});
+    Bits b;
+    std::memcpy(&b, &x, sizeof b);
+    b &= Bits{0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff};
+    std::memcpy(&x, &b, sizeof x);
+    return x;
+}
+
+/// A 4x4 transpose: out[c][r] = in[r][c] (data moves only).
+inline void Transpose4(const simd4::Float4 (&in)[4], simd4::Float4 (&out)[4]) {
+    const simd4::Float4 a = __builtin_shufflevector(in[0], in[1], 0, 4, 1, 5);  // 00 10 01 11
+    const simd4::Float4 b = __builtin_shufflevector(in[2], in[3], 0, 4, 1, 5);  // 20 30 21 31
+    const simd4::Float4 c = __builtin_shufflevector(in[0], in[1], 2, 6, 3, 7);  // 02 12 03 13
+    const simd4::Float4 d = __builtin_shufflevector(in[2], in[3], 2, 6, 3, 7);  // 22 32 23 33
+    out[0] = __builtin_shufflevector(a, b, 0, 1, 4, 5);
+    out[1] = __builtin_shufflevector(a, b, 2, 3, 6, 7);
+    out[2] = __builtin_shufflevector(c, d, 0, 1, 4, 5);
+    out[3] = __builtin_shufflevector(c, d, 2, 3, 6, 7);
+}
+
 }  // namespace
 
 Softness MakeSoftness(float hertz, float zeta, float h) {
@@ -118,9 +140,16 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
         const std::size_t b = blockOrder[job];
         const Block& block = blocks[b];
         UpdateSeparations(block);
+        // The warm start re-applies the impulses the contacts ended the last substep with. Rows are fixed for the
+        // step and every pass applies only its change to a row's total, so after the first substep that is each
+        // body's velocity change from the contacts over the last substep (BodyState::v0), re-applied per body
+        // (IntegrateVelocities) rather than row by row: no pass over the contacts. Not in a block with shock points:
+        // the shock pass moves velocities by impulses that are not the rows'.
+        const bool shock = !shockBlockStart.empty() && shockBlockStart[b + 1] > shockBlockStart[b];
         for (int s = 0; s < ctx.substepCount; ++s) {
-            IntegrateVelocities(ctx, block);
-            WarmStart(block);
+            const bool perBody = s > 0 && !shock;
+            IntegrateVelocities(ctx, block, perBody);
+            if (!perBody) WarmStart(block);
             for (int k = 0; k < soft.iterations; ++k)
                 Solve(block, ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, true);
             if (!shockPoints.empty())
@@ -270,21 +299,33 @@ void SoftContactSolver::PreparePair(const Pair& pair) {
     }
 }
 
-void SoftContactSolver::IntegrateVelocities(const StepContext& ctx, const Block& block) {
-    const float h = ctx.h;
+void SoftContactSolver::IntegrateVelocities(const StepContext& ctx, const Block& block, bool warm) {
+    using simd4::Float4;
+    const Float4 h = simd4::Wide(ctx.h), zero = simd4::Wide(0.0f);
+    auto padded = [](const vec3& v) { return Float4{v.x, v.y, v.z, 0.0f}; };
+    auto store = [](vec3& to, Float4 v) { std::memcpy(&to.x, &v, sizeof v); };
     for (std::size_t k = block.bodyBegin; k < block.bodyEnd; ++k) {
         const std::size_t i = static_cast<std::size_t>(graph.BlockBodies()[k]);
         const BodySim& bs = sim[i];
         BodyState& st = state[i];
-        // Semi-implicit Euler, then the body's velocity retention and threshold per substep (RigidbodyVolume).
-        st.v = (st.v + bs.gravity * h) * bs.retention;
-        st.w = (st.w + bs.angularAccel * h) * bs.retention;
+        // Semi-implicit Euler, then the body's velocity retention and threshold per substep (RigidbodyVolume), a
+        // lane per component (the vec3 operations' bits; the padding lanes stay 0).
+        const Float4 retention = simd4::Wide(bs.retention);
+        Float4 v = (simd4::Load4(st.v) + padded(bs.gravity) * h) * retention;
+        Float4 w = (simd4::Load4(st.w) + padded(bs.angularAccel) * h) * retention;
         if (bs.epsilon > 0.0f) {
-            for (int a = 0; a < 3; ++a) {
-                if (std::fabs(st.v[a]) < bs.epsilon) st.v[a] = 0.0f;
-                if (std::fabs(st.w[a]) < bs.epsilon) st.w[a] = 0.0f;
-            }
+            const Float4 epsilon = simd4::Wide(bs.epsilon);
+            v = Select(Abs(v) < epsilon, zero, v);
+            w = Select(Abs(w) < epsilon, zero, w);
         }
+        // The warm start: what the contacts gave the body over the last substep (the velocities it ended with minus
+        // those it started from after this step), on top of the new ones.
+        const Float4 dv = warm ? simd4::Load4(st.v) - simd4::Load4(st.v0) : zero;
+        const Float4 dw = warm ? simd4::Load4(st.w) - simd4::Load4(st.w0) : zero;
+        store(st.v0, v);
+        store(st.w0, w);
+        store(st.v, warm ? v + dv : v);
+        store(st.w, warm ? w + dw : w);
     }
 }
 
@@ -314,7 +355,9 @@ void SoftContactSolver::IntegratePositions(const StepContext& ctx, const Block& 
             }
             continue;
         }
+        const vec3 before = st.w;
         bs.q = AdvanceRotation(bs.q, &st.w, bs.inertia, h);
+        st.w0 = st.w0 + (st.w - before);  // a free body's change of w is no contact's (IntegrateVelocities' warm start)
         const mat3 dR = ToMat3(bs.q * Conjugate(bs.q0));
         for (int r = 0; r < 3; ++r)
             for (int c = 0; c < 3; ++c) st.dR[r][c] = dR[r][c];
@@ -326,17 +369,22 @@ void SoftContactSolver::SmallTurns(const int* bodies, int count, float h) {
     // SmallTurn, Normalized and ToMat3(q q0*) of up to four bodies, one per lane; each lane does the scalar
     // functions' operations in their order (Math/Simd4.h), so the bits are theirs. An empty lane turns nothing.
     using simd4::Float4;
-    alignas(16) float in[11][4] = {{}, {}, {}, {}, {}, {}, {1, 1, 1, 1}, {}, {}, {}, {1, 1, 1, 1}};  // w, q, q0*
+    // The lanes' w, q and q0 as rows of four floats, transposed (data moves only).
+    const Float4 none = {0.0f, 0.0f, 0.0f, 0.0f}, identity = {0.0f, 0.0f, 0.0f, 1.0f};
+    Float4 W[4] = {none, none, none, none}, Q[4] = {identity, identity, identity, identity};
+    Float4 Q0[4] = {identity, identity, identity, identity};
     for (int l = 0; l < count; ++l) {
-        const BodySim& bs = sim[static_cast<std::size_t>(bodies[l])];
-        const vec3& w = state[static_cast<std::size_t>(bodies[l])].w;
-        const float lane[11] = {w.x, w.y, w.z, bs.q.x, bs.q.y, bs.q.z, bs.q.w, -bs.q0.x, -bs.q0.y, -bs.q0.z, bs.q0.w};
-        for (int f = 0; f < 11; ++f) in[f][l] = lane[f];
+        const std::size_t i = static_cast<std::size_t>(bodies[l]);
+        W[l] = simd4::Load4(state[i].w);
+        std::memcpy(&Q[l], &sim[i].q.x, sizeof(Float4));
+        std::memcpy(&Q0[l], &sim[i].q0.x, sizeof(Float4));
     }
-    Float4 v[11];
-    std::memcpy(v, in, sizeof in);
-    const Float4 wx = v[0], wy = v[1], wz = v[2], qx = v[3], qy = v[4], qz = v[5], qw = v[6];
-    const Float4 ox = v[7], oy = v[8], oz = v[9], ow = v[10];
+    const simd4::Vec4x3 w3 = simd4::Transpose(W[0], W[1], W[2], W[3]);
+    Float4 q4[4], o4[4];
+    Transpose4(Q, q4);
+    Transpose4(Q0, o4);
+    const Float4 wx = w3.x, wy = w3.y, wz = w3.z, qx = q4[0], qy = q4[1], qz = q4[2], qw = q4[3];
+    const Float4 ox = -o4[0], oy = -o4[1], oz = -o4[2], ow = o4[3];  // q0*
     const Float4 x2 = 0.25f * h * h * (wx * wx + wy * wy + wz * wz);
     const Float4 k = 0.5f * h * (1.0f - x2 / 6.0f * (1.0f - x2 / 20.0f * (1.0f - x2 / 42.0f)));
     const Float4 c = 1.0f - x2 / 2.0f * (1.0f - x2 / 12.0f * (1.0f - x2 / 30.0f * (1.0f - x2 / 56.0f)));
@@ -349,35 +397,26 @@ void SoftContactSolver::SmallTurns(const int* bodies, int count, float h) {
     const Float4 dz = rw * oz + rx * oy - ry * ox + rz * ow, dw = rw * ow - rx * ox - ry * oy - rz * oz;
     const Float4 xx = dx * dx, yy = dy * dy, zz = dz * dz, xy = dx * dy, xz = dx * dz, yz = dy * dz;
     const Float4 wxd = dw * dx, wyd = dw * dy, wzd = dw * dz;
-    const Float4 out[14] = {rx,
-                            ry,
-                            rz,
-                            rw,
-                            len,  // q, then dR by rows
-                            1.0f - 2.0f * (yy + zz),
-                            2.0f * (xy + wzd),
-                            2.0f * (xz - wyd),
-                            2.0f * (xy - wzd),
-                            1.0f - 2.0f * (xx + zz),
-                            2.0f * (yz + wxd),
-                            2.0f * (xz + wyd),
-                            2.0f * (yz - wxd),
-                            1.0f - 2.0f * (xx + yy)};
-    alignas(16) float o[14][4];
-    std::memcpy(o, out, sizeof o);
+    const Float4 zero = {0.0f, 0.0f, 0.0f, 0.0f};
+    const Float4 rq[4] = {rx, ry, rz, rw};  // q, then dR by rows (each row's padding float stays 0)
+    const Float4 rows[3][4] = {{1.0f - 2.0f * (yy + zz), 2.0f * (xy + wzd), 2.0f * (xz - wyd), zero},
+                               {2.0f * (xy - wzd), 1.0f - 2.0f * (xx + zz), 2.0f * (yz + wxd), zero},
+                               {2.0f * (xz + wyd), 2.0f * (yz - wxd), 1.0f - 2.0f * (xx + yy), zero}};
+    Float4 q[4], dR[3][4];
+    Transpose4(rq, q);
+    for (int r = 0; r < 3; ++r) Transpose4(rows[r], dR[r]);
     for (int l = 0; l < count; ++l) {
         const std::size_t i = static_cast<std::size_t>(bodies[l]);
         BodyState& st = state[i];
-        if (!(o[4][l] > 0.0f) || !std::isfinite(o[4][l])) {  // Normalized's identity; ToMat3 of q0* then
+        if (!(len[l] > 0.0f) || !std::isfinite(len[l])) {  // Normalized's identity; ToMat3 of q0* then
             sim[i].q = quat();
-            const mat3 dR = ToMat3(sim[i].q * Conjugate(sim[i].q0));
+            const mat3 m = ToMat3(sim[i].q * Conjugate(sim[i].q0));
             for (int r = 0; r < 3; ++r)
-                for (int col = 0; col < 3; ++col) st.dR[r][col] = dR[r][col];
+                for (int col = 0; col < 3; ++col) st.dR[r][col] = m[r][col];
             continue;
         }
-        sim[i].q = quat(o[0][l], o[1][l], o[2][l], o[3][l]);
-        for (int r = 0; r < 3; ++r)
-            for (int col = 0; col < 3; ++col) st.dR[r][col] = o[5 + 3 * r + col][l];
+        std::memcpy(&sim[i].q.x, &q[l], sizeof(Float4));
+        for (int r = 0; r < 3; ++r) std::memcpy(st.dR[r], &dR[r][l], sizeof(Float4));
     }
 }
 
@@ -416,8 +455,7 @@ void SoftContactSolver::WarmStartPair(const Pair& pair) {
     PairVelocities x = LoadVelocities(A, B);
     const float invA = sim[pair.a].invMass, invB = sim[pair.b].invMass;
     const V4 n = Load(pair.n), t1 = Load(pair.t1), t2 = Load(pair.t2);
-    for (std::size_t k = pair.first; k < pair.first + pair.count; ++k)
-        WarmStartPoint(x, invA, invB, n, t1, t2, contacts[k]);
+    WarmStartPoints(x, invA, invB, n, t1, t2, &contacts[pair.first], pair.count);
     StoreMovingVelocities(x, pair, moving, state);
 }
 

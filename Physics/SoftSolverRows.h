@@ -38,4 +38,10 @@ struct alignas(16) SoftBodyState {
     float padP = 0.0f;
     // Rotation since the step began (row-vector form), rows padded to four floats.
     float dR[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+    // v and w as this substep's IntegrateVelocities left them, before any contact impulse: v - v0 and w - w0 at
+    // the substep's end are what its contacts gave (the next substep's warm start, IntegrateVelocities).
+    vec3 v0;
+    float padV0 = 0.0f;
+    vec3 w0;
+    float padW0 = 0.0f;
 };

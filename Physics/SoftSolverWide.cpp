@@ -192,8 +192,8 @@ void SoftContactSolver::WideWarmStart(const Block& block) {
     for (std::size_t b = block.batchBegin; b < block.batchEnd; ++b) {
         const WideBatch& batch = batches[b];
         WideVelocities s = Gather(state, batch);
-        for (int k = 0; k < batch.pointCount; ++k)
-            WarmStartPoint(s, batch.invMassA, batch.invMassB, batch.n, batch.t1, batch.t2, batch.points[k]);
+        WarmStartPoints(s, batch.invMassA, batch.invMassB, batch.n, batch.t1, batch.t2, batch.points,
+                        static_cast<std::size_t>(batch.pointCount));
         Scatter(state, batch, s);
     }
 }
