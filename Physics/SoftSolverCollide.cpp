@@ -24,6 +24,14 @@ bool CanInteract(const RigidbodyVolume& a, const RigidbodyVolume& b) {
     return a.HasVolume() && b.HasVolume() && (a.mass > 0.0f || b.mass > 0.0f);
 }
 
+/// A static body and a dynamic one, or two dynamic ones whose masses differ by less than `ratio` (0: any): a pair
+/// whose manifold may be reused. A heavy body on a light one is held by the shock pass (SoftSolverShock.cpp), which
+/// measured deeper with reused manifolds (docs/soft-solver.md, "Manifold reuse").
+bool AlikeMasses(const RigidbodyVolume& a, const RigidbodyVolume& b, float ratio) {
+    if (!(a.mass > 0.0f) || !(b.mass > 0.0f) || !(ratio > 0.0f)) return true;
+    return a.mass < ratio * b.mass && b.mass < ratio * a.mass;
+}
+
 /// Solver manifold of any sphere/box pair, normal from a to b (the sphere-box case is swapped and flipped).
 void CollideVolumes(const RigidbodyVolume& a, const RigidbodyVolume& b, float margin, ContactManifold* out) {
     out->pointCount = 0;
@@ -79,8 +87,9 @@ void SoftContactSolver::FindManifolds(const std::vector<RigidbodyVolume*>& volum
                                                 (previousKept[cursor].a == slot.a && previousKept[cursor].b < slot.b)))
             ++cursor;
         const KeptPair* old = nullptr;
-        if (boxes && reuseDistance > 0.0f && cursor < previousKept.size() && previousKept[cursor].a == slot.a &&
-            previousKept[cursor].b == slot.b && previousKept[cursor].bodyA == &A && previousKept[cursor].bodyB == &B)
+        if (boxes && reuseDistance > 0.0f && AlikeMasses(A, B, ctx.settings.soft.shockMassRatio) &&
+            cursor < previousKept.size() && previousKept[cursor].a == slot.a && previousKept[cursor].b == slot.b &&
+            previousKept[cursor].bodyA == &A && previousKept[cursor].bodyB == &B)
             old = &previousKept[cursor];
         if (old != nullptr && ReuseLocal(A.box, B.box, old->local, reuseDistance, &manifold)) {
             slot.local = old->local;
