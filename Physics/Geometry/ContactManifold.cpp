@@ -285,13 +285,7 @@ int EmitPoints(const Box& ref, const RefFace& face, int u, int v, bool refIsB, f
         for (; j > 0 && SymmetricKey(kept[j - 1].id) > key; --j) kept[j] = kept[j - 1];
         kept[j] = p;
     }
-    const int reduced = ReducePoints(kept, m, out->points);
-    for (int i = 0; i < m; ++i) {
-        bool chosen = false;
-        for (int k = 0; k < reduced; ++k) chosen = chosen || out->points[k].id == kept[i].id;
-        if (!chosen && kept[i].separation < out->droppedSeparation) out->droppedSeparation = kept[i].separation;
-    }
-    return reduced;
+    return ReducePoints(kept, m, out->points);
 }
 
 /// Face contact: `ref` owns the face with outward normal sign * ref.axis[r] (toward `inc`). Returns the point
@@ -438,7 +432,6 @@ bool FindAxes(const Box& A, const Box& B, const vec3& d, float margin, Axes* out
 
 void CollideBoxes(const OBB& obbA, const OBB& obbB, float margin, ContactManifold* out) {
     out->pointCount = 0;
-    out->droppedSeparation = 3.4e38f;
     const vec3 d = obbB.position - obbA.position;
     const float reach = std::sqrt(MagnitudeSq(obbA.size)) + std::sqrt(MagnitudeSq(obbB.size)) + margin;
     if (MagnitudeSq(d) > reach * reach) return;
@@ -475,7 +468,6 @@ void CollideBoxes(const OBB& obbA, const OBB& obbB, float margin, ContactManifol
 
 void CollideBoxSphere(const OBB& box, const Sphere& sphere, float margin, ContactManifold* out) {
     out->pointCount = 0;
-    out->droppedSeparation = 3.4e38f;
     const Box A = MakeBox(box);
     const vec3 rel = sphere.position - A.c;
     float local[3];
@@ -524,7 +516,6 @@ void CollideBoxSphere(const OBB& box, const Sphere& sphere, float margin, Contac
 
 void CollideSpheres(const Sphere& A, const Sphere& B, float margin, ContactManifold* out) {
     out->pointCount = 0;
-    out->droppedSeparation = 3.4e38f;
     const vec3 d = B.position - A.position;
     const float distSq = MagnitudeSq(d);
     const float reach = A.radius + B.radius + margin;

@@ -23,9 +23,6 @@ struct ContactManifold {
     vec3 normal{0.0f, 1.0f, 0.0f};
     int pointCount = 0;
     ManifoldPoint points[kMaxManifoldPoints];
-    /// m: the least separation of the points the reduction to four left out; +3.4e38 when none was (ReuseLocal's
-    /// bound: a left-out point may not sink unseen).
-    float droppedSeparation = 3.4e38f;
 };
 
 // Feature ids (docs/soft-solver.md, "Solver manifolds"). A box-box point's id names the feature of A (bits 8-15) and
@@ -53,7 +50,6 @@ void CollideSpheres(const Sphere& A, const Sphere& B, float margin, ContactManif
 /// in A's frame, and each point's two surface points (on A in A's frame, on B in B's frame, from the centres).
 struct LocalManifold {
     float R[3][3] = {};  ///< A.axis[i] . B.axis[j] when made
-    float reach = 0.0f;  ///< m: the most motion it may be reused for (ReuseLocal), besides maxMotion
     vec3 t;              ///< B's centre from A's, A's frame, m
     vec3 normal;         ///< from A to B, A's frame
     int pointCount = 0;  ///< 0: nothing kept

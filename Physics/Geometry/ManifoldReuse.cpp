@@ -6,9 +6,6 @@
 
 namespace {
 
-/// m: how deep a point the reduction left out may sink unseen while its manifold is reused.
-constexpr float kDroppedSink = 0.0001f;
-
 /// Row i of the orientation: box axis i in world coordinates.
 inline vec3 Axis(const OBB& o, int i) { return vec3(o.orientation[i][0], o.orientation[i][1], o.orientation[i][2]); }
 
@@ -33,9 +30,6 @@ void KeepLocal(const OBB& A, const OBB& B, const ContactManifold& m, LocalManifo
     out->t = ToLocal(B.position - A.position, a);
     out->normal = ToLocal(m.normal, a);
     out->pointCount = m.pointCount < kMaxManifoldPoints ? m.pointCount : kMaxManifoldPoints;
-    // A point the reduction left out has no contact: it may sink unseen by as much as the pair moves past its
-    // separation, so the motion is held to that separation (never below zero) plus kDroppedSink.
-    out->reach = m.droppedSeparation > 0.0f ? m.droppedSeparation + kDroppedSink : kDroppedSink;
     for (int k = 0; k < out->pointCount; ++k) {
         const ManifoldPoint& p = m.points[k];
         // The point is midway between the two surfaces along the normal: A's surface half a separation behind it.
@@ -60,7 +54,7 @@ bool ReuseLocal(const OBB& A, const OBB& B, const LocalManifold& kept, float max
         }
     const vec3 shift = ToLocal(B.position - A.position, a) - kept.t;
     const float motion = std::sqrt(MagnitudeSq(shift)) + std::sqrt(turnSq) * Radius(B);
-    if (!(motion <= maxMotion) || !(motion <= kept.reach)) return false;
+    if (!(motion <= maxMotion)) return false;
     const vec3 n = ToWorld(kept.normal, a);
     out->normal = n;
     out->pointCount = kept.pointCount;

@@ -104,33 +104,3 @@ TEST(ManifoldReuse, MotionPastTheDistanceIsRefused) {
     ContactManifold out;
     EXPECT_FALSE(ReuseLocal(kGround, start, empty, 1.0f, &out));
 }
-
-// A cube turned 45 degrees over another (an octagon of eight points reduced to four; the same pose as
-// ContactManifold_test's octagon): the four points left out are reported by their least separation, and since one
-// of them could sink unseen, the kept manifold is reused only for a motion within that separation plus 0.1 mm.
-TEST(ManifoldReuse, ReducedManifoldIsReusedOnlyWhileTheLeftOutPointsCannotSink) {
-    const OBB a(vec3(0, 0, 0), vec3(0.5f, 0.5f, 0.5f));
-    const OBB b(vec3(0, 0.99f, 0), vec3(0.5f, 0.5f, 0.5f),
-                XRotation3x3(1.0f) * YRotation3x3(45.0f) * ZRotation3x3(0.4f));
-    ContactManifold m;
-    CollideBoxes(a, b, kMargin, &m);
-    ASSERT_EQ(m.pointCount, 4);
-    ASSERT_LT(m.droppedSeparation, kMargin);
-    float deepestKept = 3.4e38f;
-    for (int i = 0; i < 4; ++i) deepestKept = std::fmin(deepestKept, m.points[i].separation);
-    EXPECT_GE(m.droppedSeparation, deepestKept) << "the reduction keeps the deepest point";
-    LocalManifold kept;
-    KeepLocal(a, b, m, &kept);
-    EXPECT_NEAR(kept.reach, std::fmax(m.droppedSeparation, 0.0f) + 0.0001f, tol::kExact);
-    OBB moved = b;
-    moved.position.y -= 0.5f * kept.reach;
-    ContactManifold out;
-    EXPECT_TRUE(ReuseLocal(a, moved, kept, 0.001f, &out));
-    moved.position.y = b.position.y - 1.5f * kept.reach;
-    EXPECT_FALSE(ReuseLocal(a, moved, kept, 0.001f, &out)) << "sunk past the reach, within the 1 mm distance";
-    EXPECT_LT(1.5f * kept.reach, 0.001f);
-
-    ContactManifold resting;
-    CollideBoxes(kGround, TiltedCube(), kMargin, &resting);
-    EXPECT_EQ(resting.droppedSeparation, 3.4e38f) << "four points: none left out";
-}
