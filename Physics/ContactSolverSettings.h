@@ -59,6 +59,10 @@ struct SoftSolverSettings {
     float restitutionThreshold = 1.0f;
     /// Fraction (0..1) of last step's matched impulse applied as the warm start.
     float warmStartFactor = 1.0f;
+    /// m: a box pair whose relative pose has moved no point of the second box more than this since its manifold was
+    /// made reuses that manifold, re-expressed at the present poses, instead of colliding again (docs/soft-solver.md,
+    /// "Manifold reuse"); 0 collides every pair every step.
+    float manifoldReuseDistance = 0.001f;
     /// Shock propagation (docs/soft-solver.md, "Mass ratios") in every solver block whose moving bodies' masses differ
     /// by at least this factor (largest / smallest); 0 turns it off. Gauss-Seidel passes converge at a rate of heavy /
     /// (heavy + light) per pass through a light body under a heavy one, so below this ratio the passes hold the load

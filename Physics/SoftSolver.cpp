@@ -92,7 +92,10 @@ void SoftContactSolver::Clear() {
     contacts.clear();
     previousPairs.clear();
     previousContacts.clear();
+    kept.clear();
+    previousKept.clear();
     warmStarted = 0;
+    reusedManifolds = 0;
     inheritedNormal = 0.0f;
     lastStep = -2;
 }
@@ -246,15 +249,18 @@ void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
     // cleared here: clearing them all on one thread was a sixth of the narrow phase.
     pairs.swap(previousPairs);
     contacts.swap(previousContacts);
+    kept.swap(previousKept);
     if (!carryOver) {
         previousPairs.clear();
         previousContacts.clear();
+        previousKept.clear();
     }
     // In chunks of candidates on the step's threads (SoftSolverCollide.cpp): every candidate's manifold into its own
     // slot, counting each chunk's pairs and points; then each chunk's pairs and contacts at the place the counts
     // give, so they are in candidate order, as one loop over the candidates makes them.
     const std::size_t chunks = ChunkCount(candidates.size(), kCandidateChunk);
     manifolds.resize(candidates.size());
+    kept.resize(candidates.size());
     chunkCounts.assign(chunks, ChunkCounts());
     ForEachJob(ctx.jobs, chunks, [&](std::size_t c) { FindManifolds(volumes, candidates, ctx, c); });
     std::size_t pairCount = 0, contactCount = 0;
@@ -270,8 +276,12 @@ void SoftContactSolver::Collide(const std::vector<RigidbodyVolume*>& volumes,
     ForEachJob(ctx.jobs, chunks, [&](std::size_t c) { MakePairs(volumes, candidates, ctx, c); });
     // The warm start's totals, summed in contact order (an unmatched contact adds its zero impulse: no change).
     warmStarted = 0;
+    reusedManifolds = 0;
     inheritedNormal = 0.0f;
-    for (const ChunkCounts& counts : chunkCounts) warmStarted += counts.matched;
+    for (const ChunkCounts& counts : chunkCounts) {
+        warmStarted += counts.matched;
+        reusedManifolds += counts.reused;
+    }
     for (const Contact& c : contacts) inheritedNormal += c.normal.impulse;
 }
 

@@ -54,6 +54,9 @@ public:
     std::size_t PairCount() const { return pairs.size(); }
     std::size_t ContactCount() const { return contacts.size(); }
     std::size_t WarmStartedCount() const { return warmStarted; }
+    /// Box-box manifolds of the last Step re-expressed from an earlier step's instead of collided anew
+    /// (SoftSolverSettings::manifoldReuseDistance).
+    std::size_t ManifoldReuseCount() const { return reusedManifolds; }
     /// Normal impulse inherited from last step's matched contacts (after warmStartFactor) summed over the last
     /// Step's contacts, N s: what the warm start applies before the first solve.
     float InheritedNormalImpulse() const { return inheritedNormal; }
@@ -226,6 +229,7 @@ private:
     static constexpr std::size_t kCandidateChunk = 128;
     struct ChunkCounts {
         std::size_t pairs = 0, contacts = 0, matched = 0;  // touching pairs, their points, points warm started
+        std::size_t reused = 0;                            // manifolds reused (ManifoldReuseCount)
         std::size_t firstPair = 0, firstContact = 0;       // where the chunk's pairs and contacts start
     };
     void Prepare(const std::vector<RigidbodyVolume*>& volumes, const StepContext& ctx);
@@ -265,7 +269,15 @@ private:
     std::vector<BodySim> sim;
     std::vector<Pair> pairs, previousPairs;
     std::vector<Contact> contacts, previousContacts;
-    std::vector<ContactManifold> manifolds;     // Collide: one per candidate pair, capacity reused
+    std::vector<ContactManifold> manifolds;  // Collide: one per candidate pair, capacity reused
+    /// Per candidate: its bodies and its box-box manifold in their frames, for the next Step to reuse (ReuseLocal).
+    struct KeptPair {
+        int a = -1, b = -1;
+        const RigidbodyVolume* bodyA = nullptr;  // identity check only, as Pair's
+        const RigidbodyVolume* bodyB = nullptr;
+        LocalManifold local;
+    };
+    std::vector<KeptPair> kept, previousKept;   // in candidate order, swapped every Step
     std::vector<ChunkCounts> chunkCounts;       // Collide: one per chunk of candidates
     std::vector<std::pair<int, int>> pairEnds;  // per pair: its bodies (a, b), the graph's input
     std::vector<unsigned char> moving;          // per body: it moves this step (BodySim::dynamic), the graph's input
@@ -280,6 +292,7 @@ private:
     std::vector<float> carried;               // per body: the load leaning on it this substep (ShockPass), N s
     std::vector<int> shockDown;               // per body: the shock pairs it rests on
     std::size_t warmStarted = 0;
+    std::size_t reusedManifolds = 0;
     float inheritedNormal = 0.0f;
     long long lastStep = -2;
 };

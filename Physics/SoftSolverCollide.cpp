@@ -24,6 +24,14 @@ bool CanInteract(const RigidbodyVolume& a, const RigidbodyVolume& b) {
     return a.HasVolume() && b.HasVolume() && (a.mass > 0.0f || b.mass > 0.0f);
 }
 
+/// A static body and a dynamic one, or two dynamic ones whose masses differ by less than `ratio` (0: any): a pair
+/// whose manifold may be reused. A heavy body on a light one is held by the shock pass (SoftSolverShock.cpp), which
+/// measured deeper with reused manifolds (docs/soft-solver.md, "Manifold reuse").
+bool AlikeMasses(const RigidbodyVolume& a, const RigidbodyVolume& b, float ratio) {
+    if (!(a.mass > 0.0f) || !(b.mass > 0.0f) || !(ratio > 0.0f)) return true;
+    return a.mass < ratio * b.mass && b.mass < ratio * a.mass;
+}
+
 /// Solver manifold of any sphere/box pair, normal from a to b (the sphere-box case is swapped and flipped).
 void CollideVolumes(const RigidbodyVolume& a, const RigidbodyVolume& b, float margin, ContactManifold* out) {
     out->pointCount = 0;
@@ -47,19 +55,53 @@ void SoftContactSolver::FindManifolds(const std::vector<RigidbodyVolume*>& volum
                                       const std::vector<std::pair<int, int>>& candidates, const StepContext& ctx,
                                       std::size_t chunk) {
     const float margin = ctx.settings.soft.speculativeMargin;
+    const float reuseDistance = ctx.settings.soft.manifoldReuseDistance;
     ChunkCounts& counts = chunkCounts[chunk];
-    const std::size_t end = std::min(candidates.size(), (chunk + 1) * kCandidateChunk);
-    for (std::size_t k = chunk * kCandidateChunk; k < end; ++k) {
+    const std::size_t begin = chunk * kCandidateChunk, end = std::min(candidates.size(), begin + kCandidateChunk);
+    // previousKept is in the same increasing (a, b) order as the candidates: the chunk's cursor starts at the first
+    // old candidate not before its first one.
+    std::size_t cursor = 0;
+    if (begin < end)
+        cursor =
+            static_cast<std::size_t>(std::lower_bound(previousKept.begin(), previousKept.end(), candidates[begin],
+                                                      [](const KeptPair& p, const std::pair<int, int>& c) {
+                                                          return p.a < c.first || (p.a == c.first && p.b < c.second);
+                                                      }) -
+                                     previousKept.begin());
+    for (std::size_t k = begin; k < end; ++k) {
         const std::pair<int, int>& candidate = candidates[k];
         const RigidbodyVolume& A = *volumes[candidate.first];
         const RigidbodyVolume& B = *volumes[candidate.second];
         ContactManifold& manifold = manifolds[k];
+        KeptPair& slot = kept[k];
+        slot.a = candidate.first;
+        slot.b = candidate.second;
+        slot.bodyA = &A;
+        slot.bodyB = &B;
+        slot.local.pointCount = 0;
         manifold.pointCount = 0;
         if (!CanInteract(A, B)) continue;
-        // Speculative margin plus the distance the pair can close this step, so a fast body meets the surface
-        // in the substep it reaches it instead of being pushed out from inside.
-        const float closing = std::sqrt(MagnitudeSq(state[candidate.second].v - state[candidate.first].v));
-        CollideVolumes(A, B, margin + closing * ctx.dt, &manifold);
+        const bool boxes = A.type != RigidbodyType::Sphere && B.type != RigidbodyType::Sphere;
+        // The same pair last step (same indices, same bodies): its manifold, if the pair has barely moved since.
+        while (cursor < previousKept.size() && (previousKept[cursor].a < slot.a ||
+                                                (previousKept[cursor].a == slot.a && previousKept[cursor].b < slot.b)))
+            ++cursor;
+        const KeptPair* old = nullptr;
+        if (boxes && reuseDistance > 0.0f && AlikeMasses(A, B, ctx.settings.soft.shockMassRatio) &&
+            cursor < previousKept.size() && previousKept[cursor].a == slot.a && previousKept[cursor].b == slot.b &&
+            previousKept[cursor].bodyA == &A && previousKept[cursor].bodyB == &B)
+            old = &previousKept[cursor];
+        if (old != nullptr && ReuseLocal(A.box, B.box, old->local, reuseDistance, &manifold)) {
+            slot.local = old->local;
+            ++counts.reused;
+        } else {
+            // Speculative margin plus the distance the pair can close this step, so a fast body meets the surface
+            // in the substep it reaches it instead of being pushed out from inside.
+            const float closing = std::sqrt(MagnitudeSq(state[candidate.second].v - state[candidate.first].v));
+            CollideVolumes(A, B, margin + closing * ctx.dt, &manifold);
+            if (boxes && reuseDistance > 0.0f && manifold.pointCount > 0)
+                KeepLocal(A.box, B.box, manifold, &slot.local);
+        }
         if (manifold.pointCount <= 0) continue;
         ++counts.pairs;
         counts.contacts += static_cast<std::size_t>(std::min(manifold.pointCount, kMaxManifoldPoints));

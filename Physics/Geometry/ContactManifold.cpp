@@ -192,14 +192,10 @@ int ReducePoints(const ManifoldPoint* in, int n, ManifoldPoint* out) {
     return 4;
 }
 
-/// Face contact: `ref` owns the face with outward normal sign * ref.axis[r] (toward `inc`). Returns the point
-/// count written to `out` (normal from A to B is set by the caller). `refIsB` only enters the ids.
-int CollideFaces(const Box& ref, const Box& inc, int r, float sign, bool refIsB, float margin, ContactManifold* out) {
-    const int u = (r + 1) % 3;
-    const int v = (r + 2) % 3;
-    const vec3 n = ref.axis[r] * sign;
-
-    // Incident face: the face of `inc` whose outward normal is most anti-parallel to n.
+/// Writes the incident quad into `quad` (4 vertices, in the reference frame of `face`: x along axis u, y along axis
+/// v, z = height above the reference face): the face of `inc` whose outward normal is most anti-parallel to n, with
+/// its corners' and edges' feature ids. Sets face.incFace.
+void IncidentQuad(const Box& ref, const Box& inc, const vec3& n, int u, int v, RefFace* face, ClipVertex* quad) {
     int k = 0;
     float dk = Dot(inc.axis[0], n);
     for (int i = 1; i < 3; ++i) {
@@ -216,29 +212,26 @@ int CollideFaces(const Box& ref, const Box& inc, int r, float sign, bool refIsB,
     const vec3 du = inc.axis[ku] * inc.e[ku];
     const vec3 dv = inc.axis[kv] * inc.e[kv];
 
-    // Incident quad in the reference frame: x along axis u, y along axis v, z = height above the reference face.
     const vec3 rel = faceCentre - ref.c;
-    const vec3 cl(Dot(rel, ref.axis[u]), Dot(rel, ref.axis[v]), Dot(rel, n) - ref.e[r]);
+    const vec3 cl(Dot(rel, ref.axis[u]), Dot(rel, ref.axis[v]), Dot(rel, n) - ref.e[face->r]);
     const vec3 ul(Dot(du, ref.axis[u]), Dot(du, ref.axis[v]), Dot(du, n));
     const vec3 vl(Dot(dv, ref.axis[u]), Dot(dv, ref.axis[v]), Dot(dv, n));
-    const RefFace face{r, sign, FaceFeature(k, incSign)};
-    const std::uint32_t refFace = FaceFeature(r, sign);
+    face->incFace = FaceFeature(k, incSign);
+    const std::uint32_t refFace = FaceFeature(face->r, face->sign);
     // Vertex q runs around the face with signs (su, sv) on axes ku, kv; edge q goes from vertex q to q + 1.
     static constexpr float kSu[4] = {1.0f, -1.0f, -1.0f, 1.0f};
     static constexpr float kSv[4] = {1.0f, 1.0f, -1.0f, -1.0f};
-    ClipVertex bufA[kMaxPolygon];
-    ClipVertex bufB[kMaxPolygon];
     for (int q = 0; q < 4; ++q) {
         float signs[3];
         signs[k] = incSign;
         signs[ku] = kSu[q];
         signs[kv] = kSv[q];
         const vec3 corner = cl + ul * kSu[q] + vl * kSv[q];
-        bufA[q].p[0] = corner.x;
-        bufA[q].p[1] = corner.y;
-        bufA[q].p[2] = corner.z;
-        bufA[q].refFeature = refFace;
-        bufA[q].incFeature = VertexFeature(signs);
+        quad[q].p[0] = corner.x;
+        quad[q].p[1] = corner.y;
+        quad[q].p[2] = corner.z;
+        quad[q].refFeature = refFace;
+        quad[q].incFeature = VertexFeature(signs);
     }
     // Edge 0 (v0 -> v1) and edge 2 (v2 -> v3) run along ku at sv = +1 / -1; edges 1 and 3 along kv at su = -1 / +1.
     // fixedSign is the sign on the face axis the edge does not run along (not k).
@@ -247,29 +240,29 @@ int CollideFaces(const Box& ref, const Box& inc, int r, float sign, bool refIsB,
         const float s2 = ((axis + 2) % 3 == k) ? incSign : fixedSign;
         return EdgeFeature(axis, s1, s2);
     };
-    bufA[1].inEdge = incEdge(ku, 1.0f);
-    bufA[2].inEdge = incEdge(kv, -1.0f);
-    bufA[3].inEdge = incEdge(ku, -1.0f);
-    bufA[0].inEdge = incEdge(kv, 1.0f);
+    quad[1].inEdge = incEdge(ku, 1.0f);
+    quad[2].inEdge = incEdge(kv, -1.0f);
+    quad[3].inEdge = incEdge(ku, -1.0f);
+    quad[0].inEdge = incEdge(kv, 1.0f);
+}
 
-    int count = 4;
-    count = ClipSide(bufA, count, 0, u, 1.0f, ref.e[u], face, bufB);
-    count = ClipSide(bufB, count, 0, u, -1.0f, ref.e[u], face, bufA);
-    count = ClipSide(bufA, count, 1, v, 1.0f, ref.e[v], face, bufB);
-    count = ClipSide(bufB, count, 1, v, -1.0f, ref.e[v], face, bufA);
-
-    const vec3 origin = ref.c + n * ref.e[r];
+/// The clipped points within `margin` of the reference face (count of them in `clipped`) as manifold points of
+/// `out`, reduced to four when there are more. Returns the point count.
+int EmitPoints(const Box& ref, const RefFace& face, int u, int v, bool refIsB, float margin, ClipVertex* clipped,
+               int count, ContactManifold* out) {
+    const vec3 n = ref.axis[face.r] * face.sign;
+    const vec3 origin = ref.c + n * ref.e[face.r];
     int m = 0;
     for (int i = 0; i < count; ++i)
-        if (bufA[i].p[2] <= margin) {
-            if (m != i) bufA[m] = bufA[i];
+        if (clipped[i].p[2] <= margin) {
+            if (m != i) clipped[m] = clipped[i];
             ++m;
         }
     // Few enough points go straight out; more go through a scratch array to the reduction (declared only on that
     // path: its points are zeroed on construction).
     auto emit = [&](ManifoldPoint* kept) {
         for (int i = 0; i < m; ++i) {
-            const ClipVertex& c = bufA[i];
+            const ClipVertex& c = clipped[i];
             ManifoldPoint& p = kept[i];
             // Midway between the reference plane (z = 0) and the incident point.
             p.point = origin + ref.axis[u] * c.p[0] + ref.axis[v] * c.p[1] + n * (0.5f * c.p[2]);
@@ -293,6 +286,24 @@ int CollideFaces(const Box& ref, const Box& inc, int r, float sign, bool refIsB,
         kept[j] = p;
     }
     return ReducePoints(kept, m, out->points);
+}
+
+/// Face contact: `ref` owns the face with outward normal sign * ref.axis[r] (toward `inc`). Returns the point
+/// count written to `out` (normal from A to B is set by the caller). `refIsB` only enters the ids.
+int CollideFaces(const Box& ref, const Box& inc, int r, float sign, bool refIsB, float margin, ContactManifold* out) {
+    const int u = (r + 1) % 3;
+    const int v = (r + 2) % 3;
+    const vec3 n = ref.axis[r] * sign;
+    RefFace face{r, sign, 0u};
+    ClipVertex bufA[kMaxPolygon];
+    ClipVertex bufB[kMaxPolygon];
+    IncidentQuad(ref, inc, n, u, v, &face, bufA);
+    int count = 4;
+    count = ClipSide(bufA, count, 0, u, 1.0f, ref.e[u], face, bufB);
+    count = ClipSide(bufB, count, 0, u, -1.0f, ref.e[u], face, bufA);
+    count = ClipSide(bufA, count, 1, v, 1.0f, ref.e[v], face, bufB);
+    count = ClipSide(bufB, count, 1, v, -1.0f, ref.e[v], face, bufA);
+    return EmitPoints(ref, face, u, v, refIsB, margin, bufA, count, out);
 }
 
 /// x clamped to [lo, hi] (plain compares: std::fmax/fmin are library calls without fast-math).
@@ -340,45 +351,50 @@ void CollideEdges(const Box& a, const Box& b, int i, int j, const vec3& n, float
 
 }  // namespace
 
-void CollideBoxes(const OBB& obbA, const OBB& obbB, float margin, ContactManifold* out) {
-    out->pointCount = 0;
-    const vec3 d = obbB.position - obbA.position;
-    const float reach = std::sqrt(MagnitudeSq(obbA.size)) + std::sqrt(MagnitudeSq(obbB.size)) + margin;
-    if (MagnitudeSq(d) > reach * reach) return;
+namespace {
 
-    const Box A = MakeBox(obbA);
-    const Box B = MakeBox(obbB);
+/// The SAT's outcome: the best face axis of each box, the best edge pair, and the centre offset in both frames.
+struct Axes {
+    float tA[3], tB[3];  // B's centre from A's, along A's and B's axes, m
+    float sepA, sepB, sepE;
+    int axisA, axisB, edgeI, edgeJ;  // edgeI -1: every edge pair nearly parallel
+};
+
+/// SAT over A's 3 face axes, B's 3 and the 9 edge axes (d: B's centre from A's). False as soon as one separates the
+/// boxes by more than `margin`.
+bool FindAxes(const Box& A, const Box& B, const vec3& d, float margin, Axes* out) {
     float R[3][3], absR[3][3];
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
             R[i][j] = Dot(A.axis[i], B.axis[j]);
             absR[i][j] = std::fabs(R[i][j]);
         }
-    float tA[3], tB[3];
+    float* tA = out->tA;
+    float* tB = out->tB;
     for (int i = 0; i < 3; ++i) {
         tA[i] = Dot(d, A.axis[i]);
         tB[i] = Dot(d, B.axis[i]);
     }
 
     // Face axes of A, then of B: separation = centre distance minus the two projected radii.
-    float sepA = -3.4e38f;
-    int axisA = 0;
+    out->sepA = -3.4e38f;
+    out->axisA = 0;
     for (int i = 0; i < 3; ++i) {
         const float s = std::fabs(tA[i]) - (A.e[i] + B.e[0] * absR[i][0] + B.e[1] * absR[i][1] + B.e[2] * absR[i][2]);
-        if (s > margin) return;
-        if (s > sepA) {
-            sepA = s;
-            axisA = i;
+        if (s > margin) return false;
+        if (s > out->sepA) {
+            out->sepA = s;
+            out->axisA = i;
         }
     }
-    float sepB = -3.4e38f;
-    int axisB = 0;
+    out->sepB = -3.4e38f;
+    out->axisB = 0;
     for (int j = 0; j < 3; ++j) {
         const float s = std::fabs(tB[j]) - (B.e[j] + A.e[0] * absR[0][j] + A.e[1] * absR[1][j] + A.e[2] * absR[2][j]);
-        if (s > margin) return;
-        if (s > sepB) {
-            sepB = s;
-            axisB = j;
+        if (s > margin) return false;
+        if (s > out->sepB) {
+            out->sepB = s;
+            out->axisB = j;
         }
     }
     // Edge axes A_i x B_j, written in A's frame: (A_i x B_j) = R[i1][j] A_i2 - R[i2][j] A_i1. All nine are
@@ -398,40 +414,56 @@ void CollideBoxes(const OBB& obbA, const OBB& obbB, float margin, ContactManifol
                                      : (dist - ra - rb) / std::sqrt(lenSq > kMinEdgeAxisSq ? lenSq : kMinEdgeAxisSq);
         }
     }
-    float sepE = -3.4e38f;
-    int edgeI = -1, edgeJ = -1;
+    out->sepE = -3.4e38f;
+    out->edgeI = -1;
+    out->edgeJ = -1;
     for (int k = 0; k < 9; ++k) {
-        if (edgeSep[k] > margin) return;
-        if (edgeSep[k] > sepE) {
-            sepE = edgeSep[k];
-            edgeI = k / 3;
-            edgeJ = k % 3;
+        if (edgeSep[k] > margin) return false;
+        if (edgeSep[k] > out->sepE) {
+            out->sepE = edgeSep[k];
+            out->edgeI = k / 3;
+            out->edgeJ = k % 3;
         }
     }
+    return true;
+}
 
-    const bool useB = sepB > sepA + kFaceBTolerance;
-    const float sepFace = useB ? sepB : sepA;
-    const bool useEdge = edgeI >= 0 && sepE > sepFace + kEdgeRelTolerance * std::fabs(sepFace) + kEdgeAbsTolerance;
+}  // namespace
+
+void CollideBoxes(const OBB& obbA, const OBB& obbB, float margin, ContactManifold* out) {
+    out->pointCount = 0;
+    const vec3 d = obbB.position - obbA.position;
+    const float reach = std::sqrt(MagnitudeSq(obbA.size)) + std::sqrt(MagnitudeSq(obbB.size)) + margin;
+    if (MagnitudeSq(d) > reach * reach) return;
+
+    const Box A = MakeBox(obbA);
+    const Box B = MakeBox(obbB);
+    Axes x;
+    if (!FindAxes(A, B, d, margin, &x)) return;
+
+    const bool useB = x.sepB > x.sepA + kFaceBTolerance;
+    const float sepFace = useB ? x.sepB : x.sepA;
+    const bool useEdge = x.edgeI >= 0 && x.sepE > sepFace + kEdgeRelTolerance * std::fabs(sepFace) + kEdgeAbsTolerance;
     if (!useEdge) {
         if (!useB) {
-            const float sign = tA[axisA] >= 0.0f ? 1.0f : -1.0f;
-            out->normal = A.axis[axisA] * sign;
-            out->pointCount = CollideFaces(A, B, axisA, sign, false, margin, out);
+            const float sign = x.tA[x.axisA] >= 0.0f ? 1.0f : -1.0f;
+            out->normal = A.axis[x.axisA] * sign;
+            out->pointCount = CollideFaces(A, B, x.axisA, sign, false, margin, out);
         } else {
             // B's face toward A is the reference; the normal still points from A to B.
-            const float sign = tB[axisB] >= 0.0f ? -1.0f : 1.0f;
-            out->normal = B.axis[axisB] * -sign;
-            out->pointCount = CollideFaces(B, A, axisB, sign, true, margin, out);
+            const float sign = x.tB[x.axisB] >= 0.0f ? -1.0f : 1.0f;
+            out->normal = B.axis[x.axisB] * -sign;
+            out->pointCount = CollideFaces(B, A, x.axisB, sign, true, margin, out);
         }
         // A face within margin whose clipped incident face keeps no point (edges crossing near the face's rim):
         // fall back to the best edge pair so the contact is not lost.
-        if (out->pointCount > 0 || edgeI < 0 || sepE > margin) return;
+        if (out->pointCount > 0 || x.edgeI < 0 || x.sepE > margin) return;
     }
-    vec3 n = Cross(A.axis[edgeI], B.axis[edgeJ]);
+    vec3 n = Cross(A.axis[x.edgeI], B.axis[x.edgeJ]);
     n = n * (1.0f / std::sqrt(MagnitudeSq(n)));
     if (Dot(n, d) < 0.0f) n = -n;
     out->normal = n;
-    CollideEdges(A, B, edgeI, edgeJ, n, sepE, out);
+    CollideEdges(A, B, x.edgeI, x.edgeJ, n, x.sepE, out);
 }
 
 void CollideBoxSphere(const OBB& box, const Sphere& sphere, float margin, ContactManifold* out) {

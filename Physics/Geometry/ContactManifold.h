@@ -44,3 +44,24 @@ void CollideBoxes(const OBB& A, const OBB& B, float margin, ContactManifold* out
 void CollideBoxSphere(const OBB& A, const Sphere& B, float margin, ContactManifold* out);
 /// Sphere A against sphere B; one point, id 0.
 void CollideSpheres(const Sphere& A, const Sphere& B, float margin, ContactManifold* out);
+
+/// A box-box manifold kept in the two boxes' frames (docs/soft-solver.md, "Manifold reuse"), so that it can be
+/// re-expressed at later poses instead of colliding the boxes again: the relative pose it was made at, the normal
+/// in A's frame, and each point's two surface points (on A in A's frame, on B in B's frame, from the centres).
+struct LocalManifold {
+    float R[3][3] = {};  ///< A.axis[i] . B.axis[j] when made
+    vec3 t;              ///< B's centre from A's, A's frame, m
+    vec3 normal;         ///< from A to B, A's frame
+    int pointCount = 0;  ///< 0: nothing kept
+    vec3 onA[kMaxManifoldPoints];
+    vec3 onB[kMaxManifoldPoints];
+    std::uint32_t id[kMaxManifoldPoints] = {};
+};
+
+/// Keeps `m`, a manifold of boxes A and B at their present poses (CollideBoxes), in their frames.
+void KeepLocal(const OBB& A, const OBB& B, const ContactManifold& m, LocalManifold* out);
+/// When no point of B within its bounding sphere has moved by more than `maxMotion` (m) relative to A since `kept`
+/// was made (and kept has points): writes `kept` at the present poses to `out` (same ids, the normal turned with
+/// A, each point half its separation from its corner, or midway between its two surface points when neither box gives a
+/// corner, separation measured anew along the normal) and returns true. Otherwise returns false and leaves `out` alone.
+bool ReuseLocal(const OBB& A, const OBB& B, const LocalManifold& kept, float maxMotion, ContactManifold* out);
