@@ -4,11 +4,11 @@
 Fails (exit 1) on
   - an include circle: a file's unit (Foo.h and Foo.cpp are one unit, Foo) reaches itself through the project's
     quoted includes, as Runner -> AutoModelHost -> Runner once did;
-  - a source file over 600 lines outside tests/ and bench/ (docs/STYLE.md, "Size").
-Reports, without failing, every function over 80 lines (its file, first line and length), longest first.
+  - a source file over 600 lines outside tests/ and bench/ (docs/STYLE.md, "Size");
+  - a function over 80 lines outside tests/ and bench/ (its file, first line and length, longest first).
 
-Usage: check-structure.py REPO_ROOT [--functions]. Prints one line per problem; --functions also lists the long
-functions (by default only their count is printed). No circle is allowed: the last known one (Physics/'s core:
+Usage: check-structure.py REPO_ROOT [--functions]. Prints one line per problem (a long function is one);
+--functions is accepted for older callers and changes nothing. No circle is allowed: the last known one (Physics/'s core:
 WorldSettings <-> Particle, the solvers <-> PhysicsSystem) was cut when the contact solvers went behind
 IContactSolver.h.
 """
@@ -176,7 +176,6 @@ def long_functions(root, rel):
 def main():
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     root = args[0] if args else "."
-    list_functions = "--functions" in sys.argv
     files = list(source_files(root))
     problems = []
     for component in circles(include_graph(root, files)):
@@ -193,11 +192,11 @@ def main():
     for p in problems:
         print(p)
     long_ones.sort(key=lambda x: (-x[0], x[1], x[2]))
-    if list_functions:
-        for length, rel, first, name in long_ones:
-            print(f"{rel}:{first}: {name} is {length} lines (over {MAX_FUNCTION_LINES}; reported, not failed)")
-    print(f"check-structure: {len(files)} files, {len(problems)} problems, {len(long_ones)} functions over "
-          f"{MAX_FUNCTION_LINES} lines{'' if list_functions else ' (--functions lists them)'}")
+    for length, rel, first, name in long_ones:
+        print(f"{rel}:{first}: {name} is {length} lines, over the {MAX_FUNCTION_LINES}-line limit")
+    problems += long_ones
+    print(f"check-structure: {len(files)} files, {len(problems)} problems ({len(long_ones)} of them functions over "
+          f"{MAX_FUNCTION_LINES} lines)")
     return 1 if problems else 0
 
 

@@ -2,7 +2,7 @@
 """scripts/check-structure.py on small made-up trees: a clean tree passes; an include circle between two units
 (one through a .cpp, as Runner.cpp and AutoModelHost.cpp once were) fails and is named, and so does the Physics
 circle the check once let through as known; a file over 600 lines
-fails; a function over 80 lines is reported without failing.
+fails; a function over 80 lines outside tests/ and bench/ fails and is named with its line and length.
 Usage: check_structure_test.py PATH/TO/check-structure.py"""
 import os
 import subprocess
@@ -70,10 +70,15 @@ def main():
         body = "".join(f"    x += {i};  // a '{{' in a comment and \"}}\" in a string do not count\n" for i in range(85))
         write(root, "App/Fn.cpp", "namespace n {\nstruct S {\n    int Small() { return 0; }\n};\n"
               "int Big(int x) {\n" + body + "    return x;\n}\n}  // namespace n\n")
+        write(root, "bench/Fn.cpp", "int Long(int x) {\n" + body + "    return x;\n}\n")
         code, out = run(script, root)
-        expect(code == 0, "a long function alone does not fail", out)
-        expect("App/Fn.cpp:5: Big is 88 lines" in out, "a long function is reported with its line and length", out)
+        expect(code == 1, "a long function fails", out)
+        expect("App/Fn.cpp:5: Big is 88 lines" in out, "a long function is named with its line and length", out)
         expect("Small" not in out, "a short member function is not reported", out)
+        expect("bench/Fn.cpp" not in out, "bench/ may hold long functions", out)
+        write(root, "App/Fn.cpp", "int Short(int x) {\n" + body[: body.index("\n") + 1] * 70 + "    return x;\n}\n")
+        code, out = run(script, root)
+        expect(code == 0, "a 73-line function passes", out)
 
     for f in failures:
         print("FAILED: " + f)
