@@ -35,7 +35,9 @@ inline void Pause() {
 int DefaultThreadCount() {
     const int set = defaultThreads.load(std::memory_order_relaxed);
     if (set > 0) return set;
-    const unsigned hardware = std::thread::hardware_concurrency();
+    // Read once: std::thread::hardware_concurrency opens and reads a /sys file on every call, and every world's
+    // step asks (JobPool::Shared), which made the syscalls most of a microsecond step's CPU.
+    static const unsigned hardware = std::thread::hardware_concurrency();
     return hardware == 0 ? 1 : static_cast<int>(hardware < kMaxThreads ? hardware : kMaxThreads);
 }
 
