@@ -42,7 +42,7 @@ int Impacts(std::vector<double> jump) {
 /// ten times more irregular than any the start span covers gets a span from the snapshot of the interval before.
 std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateSpace& space,
                                    const ChoiceSettings& settings, double span, ModelChoiceResult* result,
-                                   ChoiceClock* clock, double* impactSpeed) {
+                                   ChoiceClock* clock, int* impacts, double* impactSpeed) {
     using Kind = PlannedSpan::Kind;
     const double T = settings.runSeconds;
     std::vector<PlannedSpan> plan{{Kind::Start, factory, 0.0, T, 0}};
@@ -93,7 +93,8 @@ std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateS
         const double d[3] = {x2[i] - x1[i], x2[i + 1] - x1[i + 1], x2[i + 2] - x1[i + 2]};
         speed = std::max(speed, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / h);
     }
-    *impactSpeed = static_cast<double>(Impacts(jump)) * speed;
+    *impacts = Impacts(jump);
+    *impactSpeed = static_cast<double>(*impacts) * speed;
     const double seen = std::max(jump[0], jump[1]);  // what the start span covers
     std::vector<int> picked;
     for (int e = 0; e < settings.eventSpans; ++e) {
@@ -344,16 +345,28 @@ void RaiseToFamilyFloor(const std::vector<CandidateEstimate>& candidates, const 
 /// particles came to rest): the estimate is taken to be at least half of that bound per impact (the typical phase;
 /// the safety factor covers the rest), `impactSpeed` being the impacts' count times the fastest point's speed at
 /// the pilot's end. Position budgets on worlds whose particles hit constraints only.
-void RaiseToImpactTiming(double impactSpeed, const CandidateSpace& space, const ErrorBudget& budget,
+/// A particle that hits a constraint is also stopped on a surface CandidateSpace::contactOffset out from the box's
+/// (docs/ch14.md, "Contact that converges"): after an impact it flies from there, and at rest it rests there, off
+/// the rigid answer by about that offset whatever the step. Step doubling cannot see a bias every candidate shares,
+/// so once the pilot saw an impact the estimate is at least the offset.
+void RaiseToImpactTiming(int impacts, double impactSpeed, const CandidateSpace& space, const ErrorBudget& budget,
                          CandidateEstimate* e) {
     if (!space.hasContacts || budget.quantity != BudgetQuantity::Position || !e->stable) return;
-    const double floor = 0.5 * impactSpeed * e->model.step;
+    const double timing = 0.5 * impactSpeed * e->model.step;
+    const double offset = impacts > 0 ? space.contactOffset : 0.0;
+    const double floor = std::max(timing, offset);
     if (!(floor > e->estimate)) return;
     char text[192];
-    std::snprintf(
-        text, sizeof text,
-        "raised from %.3g: impacts times the speed at the end, %.3g m/s, each timed to within its step, allow %.3g",
-        e->estimate, impactSpeed, floor);
+    if (offset >= timing) {
+        std::snprintf(text, sizeof text,
+                      "raised from %.3g: a particle that hit a constraint flies and rests %.3g m off its surface",
+                      e->estimate, offset);
+    } else {
+        std::snprintf(
+            text, sizeof text,
+            "raised from %.3g: impacts times the speed at the end, %.3g m/s, each timed to within its step, allow %.3g",
+            e->estimate, impactSpeed, floor);
+    }
     e->estimate = floor;
     if (!e->unreliable) e->note = text;
 }
@@ -437,6 +450,48 @@ std::string WhySkip(const ModelChoiceResult& result, const std::vector<std::size
     return why;
 }
 
+/// The margin's fallback, when no candidate met the budget over the safety factor: of the candidates whose estimate
+/// is within the budget itself, the one of the smallest estimate, provided the estimate is complete and the error was
+/// seen to shrink at the candidate's order by a finer pair above rounding (CheckOrder, over the whole run or its start
+/// span; VerifyOrder runs it here for a span estimate that has not had it, within the CPU limit). The safety factor is
+/// for an estimate whose order is assumed; this one's order was observed. Constraint budgets, observed rather than
+/// estimated, have no such check and no fallback. Returns the index, or -1.
+int MarginFallback(const PlannedSpan& start, double span, const std::vector<std::size_t>& order,
+                   const CandidateSpace& space, const ErrorBudget& budget, const ChoiceSettings& settings,
+                   ModelChoiceResult* result, ChoiceClock* clock) {
+    if (budget.quantity == BudgetQuantity::Constraint) return -1;
+    int pick = -1;
+    for (std::size_t k : order) {
+        CandidateEstimate& e = result->candidates[k];
+        auto trusted = [&e, &budget] {
+            return e.evaluated && e.stable && !e.partial && !e.unreliable && !e.withinRounding &&
+                   e.finerDifference >= 0.0 && e.estimate <= budget.bound;
+        };
+        if (e.finerDifference < 0.0 && e.evaluated && e.stable && !e.partial && !e.unreliable &&
+            e.estimate <= budget.bound && !clock->Over()) {
+            const double before = result->calibrationWork;
+            VerifyOrder(start, span, space, budget, settings, &e, &result->calibrationCpuSeconds,
+                        &result->calibrationWork, clock);
+            result->checkWork += result->calibrationWork - before;
+            result->unreliableCount += e.unreliable ? 1 : 0;
+        }
+        if (!trusted()) continue;
+        if (pick < 0 || e.estimate < result->candidates[static_cast<std::size_t>(pick)].estimate) {
+            pick = static_cast<int>(k);
+        }
+    }
+    if (pick >= 0) {
+        CandidateEstimate& e = result->candidates[static_cast<std::size_t>(pick)];
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "within the budget, not its margin; chosen as no candidate met the margin and its error was seen "
+                      "to shrink at its order (%.3g, then %.3g at half the step)",
+                      e.pairDifference, e.finerDifference);
+        e.note = text;
+    }
+    return pick;
+}
+
 }  // namespace
 
 ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace& space, const ErrorBudget& budget,
@@ -448,7 +503,9 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
     const double bound = budget.bound / settings.safety;
     ChoiceClock clock(settings);
     double impactSpeed = 0.0;
-    const std::vector<PlannedSpan> plan = PlanSpans(factory, space, settings, span, &result, &clock, &impactSpeed);
+    int impacts = 0;
+    const std::vector<PlannedSpan> plan =
+        PlanSpans(factory, space, settings, span, &result, &clock, &impacts, &impactSpeed);
     for (std::size_t k = 0; k < order.size(); ++k) {
         CandidateEstimate& e = result.candidates[order[k]];
         if (result.chosen >= 0) {
@@ -476,7 +533,7 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
                  &clock);
         result.evaluatedShare += e.share;
         RaiseToFamilyFloor(result.candidates, order, k, space, &e);
-        RaiseToImpactTiming(impactSpeed, space, budget, &e);
+        RaiseToImpactTiming(impacts, impactSpeed, space, budget, &e);
         if (e.stable && !e.partial && !e.unreliable && e.estimate <= bound) {
             const double before = result.calibrationWork;
             VerifyOrder(plan[0], span, space, budget, settings, &e, &result.calibrationCpuSeconds,
@@ -488,6 +545,10 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
         e.meets = e.stable && !e.partial && !e.unreliable && e.estimate <= bound;
         if (e.meets) result.chosen = static_cast<int>(order[k]);
         KeepBest(&result, static_cast<int>(order[k]));
+    }
+    if (result.chosen < 0 && settings.marginFallback) {
+        result.chosen = MarginFallback(plan[0], span, order, space, budget, settings, &result, &clock);
+        result.withinMarginOnly = result.chosen >= 0;
     }
     result.feasible = result.chosen >= 0;
     result.cpuLimit = clock.Limit(0.0, 0.0);
