@@ -305,9 +305,13 @@ void VerifyOrder(const PlannedSpan& start, double span, const CandidateSpace& sp
 /// of that prediction is the one the family showed between its two nearest such rungs, kept between 1 and the
 /// formal order (a joint's projection makes RK4 first order; one rung alone, or errors that did not shrink, give
 /// 1): an error shrinks no faster than that as the step does. The note says when the floor raised the estimate.
-void RaiseToFamilyFloor(const std::vector<CandidateEstimate>& candidates, const std::vector<std::size_t>& order,
-                        std::size_t k, const CandidateSpace& space, CandidateEstimate* e) {
-    if ((e->wholeRun && !e->withinRounding) || !e->stable || !std::isfinite(e->estimate)) return;
+/// FamilyFloor: what the nearest coarser whole-run rung of e's family predicts for e (0: no such rung), and that
+/// rung's step and the order used.
+struct FamilyPrediction {
+    double floor = 0.0, step = 0.0, order = 1.0;
+};
+FamilyPrediction FamilyFloor(const std::vector<CandidateEstimate>& candidates, const std::vector<std::size_t>& order,
+                             std::size_t k, const CandidateSpace& space, const CandidateEstimate* e) {
     const CandidateEstimate* nearest = nullptr;  // the finest whole-run rung coarser than e
     const CandidateEstimate* next = nullptr;     // the one after it
     for (std::size_t j = 0; j < k; ++j) {
@@ -323,18 +327,25 @@ void RaiseToFamilyFloor(const std::vector<CandidateEstimate>& candidates, const 
             next = &f;
         }
     }
-    if (!nearest) return;
+    if (!nearest) return {};
     double p = 1.0;
     if (next && nearest->estimate > 0.0 && next->estimate > nearest->estimate) {
         p = std::log(next->estimate / nearest->estimate) / std::log(next->model.step / nearest->model.step);
     }
     p = std::clamp(p, 1.0, static_cast<double>(OrderOf(e->model, space)));
-    const double floor = nearest->estimate * std::pow(e->model.step / nearest->model.step, p);
+    return {nearest->estimate * std::pow(e->model.step / nearest->model.step, p), nearest->model.step, p};
+}
+
+void RaiseToFamilyFloor(const std::vector<CandidateEstimate>& candidates, const std::vector<std::size_t>& order,
+                        std::size_t k, const CandidateSpace& space, CandidateEstimate* e) {
+    if ((e->wholeRun && !e->withinRounding) || !e->stable || !std::isfinite(e->estimate)) return;
+    const FamilyPrediction f = FamilyFloor(candidates, order, k, space, e);
+    const double floor = f.floor;
     if (floor <= e->estimate) return;
     char text[192];
     std::snprintf(text, sizeof text,
                   "raised from %.3g: its family's dt %g s, measured over the whole run, predicts %.3g (order %.2g)",
-                  e->estimate, nearest->model.step, floor, p);
+                  e->estimate, f.step, floor, f.order);
     e->estimate = floor;
     e->note = text;
 }
@@ -403,6 +414,40 @@ std::vector<std::size_t> CostOrder(const CandidateSpace& space, ModelChoiceResul
     return order;
 }
 
+/// WhySkip's prediction of a finer step from `nearest`, the nearest coarser rung of e's family with the same passes
+/// that was estimated: its estimate times the step ratio to the power of the candidate's order, or of the order the
+/// family's two nearest such rungs showed (complete estimates) where that is faster. At the formal order alone the
+/// rung may be at most 2.5 steps coarser (coarser steps are often outside the asymptotic range, where an error does
+/// not shrink with the step as its order says); with two rungs that showed their order, up to 5 (an order of 2 where
+/// 1 is assumed stays within the factor 8 of the rule). Predicted above 8 times the bound: not run.
+std::string PredictedMiss(const ModelChoiceResult& result, const std::vector<std::size_t>& order, std::size_t k,
+                          const CandidateEstimate& nearest, const CandidateEstimate& e, const CandidateSpace& space,
+                          double bound) {
+    const CandidateEstimate* next = nullptr;  // the nearest complete rung coarser than `nearest`
+    for (std::size_t j = 0; j < k; ++j) {
+        const CandidateEstimate& f = result.candidates[order[j]];
+        if (f.evaluated && f.stable && !f.partial && std::isfinite(f.estimate) && SameFamily(f.model, e.model) &&
+            Passes(f.model) == Passes(e.model) && f.model.step > nearest.model.step &&
+            (!next || f.model.step < next->model.step)) {
+            next = &f;
+        }
+    }
+    double p = OrderOf(e.model, space);
+    const bool observed = next && !nearest.partial && nearest.estimate > 0.0;
+    if (observed && next->estimate > nearest.estimate) {
+        p = std::max(p, std::log(next->estimate / nearest.estimate) / std::log(next->model.step / nearest.model.step));
+    } else if (observed) {
+        p = kInf;  // the error did not shrink between the rungs: no order to predict with
+    }
+    if (!std::isfinite(p) || nearest.model.step > (observed ? 5.0 : 2.5) * e.model.step) return "";
+    const double predicted = nearest.estimate * std::pow(e.model.step / nearest.model.step, p);
+    if (!(predicted > 8.0 * bound)) return "";
+    char text[120];
+    std::snprintf(text, sizeof text, "not run: predicted %.3g from its family's dt %g s", predicted,
+                  nearest.model.step);
+    return text;
+}
+
 /// Why candidate order[k], `e`, need not be run given the candidates before it (empty: it must be).
 std::string WhySkip(const ModelChoiceResult& result, const std::vector<std::size_t>& order, std::size_t k,
                     const CandidateEstimate& e, const CandidateSpace& space, double bound) {
@@ -437,16 +482,7 @@ std::string WhySkip(const ModelChoiceResult& result, const std::vector<std::size
             }
         }
     }
-    if (why.empty() && nearest && nearest->model.step <= 2.5 * e.model.step) {
-        const double predicted =
-            nearest->estimate * std::pow(e.model.step / nearest->model.step, OrderOf(e.model, space));
-        if (predicted > 8.0 * bound) {
-            char text[120];
-            std::snprintf(text, sizeof text, "not run: predicted %.3g from its family's dt %g s", predicted,
-                          nearest->model.step);
-            why = text;
-        }
-    }
+    if (why.empty() && nearest) why = PredictedMiss(result, order, k, *nearest, e, space, bound);
     return why;
 }
 
@@ -461,11 +497,14 @@ int MarginFallback(const PlannedSpan& start, double span, const std::vector<std:
                    ModelChoiceResult* result, ChoiceClock* clock) {
     if (budget.quantity == BudgetQuantity::Constraint) return -1;
     int pick = -1;
-    for (std::size_t k : order) {
-        CandidateEstimate& e = result->candidates[k];
-        auto trusted = [&e, &budget] {
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        CandidateEstimate& e = result->candidates[order[i]];
+        // Its coarser whole-run rungs must agree: an end-of-run difference can be small by chance (a pendulum's
+        // phase error crossing zero near the end), which the rungs' order-1 prediction would not be.
+        auto trusted = [&] {
             return e.evaluated && e.stable && !e.partial && !e.unreliable && !e.withinRounding &&
-                   e.finerDifference >= 0.0 && e.estimate <= budget.bound;
+                   e.finerDifference >= 0.0 && e.estimate <= budget.bound &&
+                   FamilyFloor(result->candidates, order, i, space, &e).floor <= budget.bound;
         };
         if (e.finerDifference < 0.0 && e.evaluated && e.stable && !e.partial && !e.unreliable &&
             e.estimate <= budget.bound && !clock->Over()) {
@@ -477,7 +516,7 @@ int MarginFallback(const PlannedSpan& start, double span, const std::vector<std:
         }
         if (!trusted()) continue;
         if (pick < 0 || e.estimate < result->candidates[static_cast<std::size_t>(pick)].estimate) {
-            pick = static_cast<int>(k);
+            pick = static_cast<int>(order[i]);
         }
     }
     if (pick >= 0) {
