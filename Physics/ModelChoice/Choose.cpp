@@ -5,6 +5,8 @@
 
 #include "Physics/ModelChoice/Internals.h"
 #include "Physics/ModelChoice/ModelChoice.h"
+#include "Physics/Particle.h"
+#include "Physics/PhysicsSystem.h"
 
 using namespace model_choice;  // NOLINT: this file's own internals (Physics/ModelChoice/Internals.h)
 
@@ -42,7 +44,7 @@ int Impacts(std::vector<double> jump) {
 /// ten times more irregular than any the start span covers gets a span from the snapshot of the interval before.
 std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateSpace& space,
                                    const ChoiceSettings& settings, double span, ModelChoiceResult* result,
-                                   ChoiceClock* clock, int* impacts, double* impactSpeed) {
+                                   ChoiceClock* clock, bool* flyingAfterImpact, double* impactSpeed) {
     using Kind = PlannedSpan::Kind;
     const double T = settings.runSeconds;
     std::vector<PlannedSpan> plan{{Kind::Start, factory, 0.0, T, 0}};
@@ -93,8 +95,14 @@ std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateS
         const double d[3] = {x2[i] - x1[i], x2[i + 1] - x1[i + 1], x2[i + 2] - x1[i + 2]};
         speed = std::max(speed, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / h);
     }
-    *impacts = Impacts(jump);
-    *impactSpeed = static_cast<double>(*impacts) * speed;
+    const int impacts = Impacts(jump);
+    *impactSpeed = static_cast<double>(impacts) * speed;
+    // Still flying at the end: faster than a hop of the contact offset's height under the strongest gravity (slower,
+    // a particle rests at the contact's resting height, which is the model's own: RaiseToImpactTiming).
+    double g = 0.0;
+    for (const Particle* p : pilot->World().Particles())
+        g = std::max(g, static_cast<double>(Magnitude(p->GetGravity())));
+    *flyingAfterImpact = impacts > 0 && speed > std::sqrt(2.0 * g * space.contactOffset);
     const double seen = std::max(jump[0], jump[1]);  // what the start span covers
     std::vector<int> picked;
     for (int e = 0; e < settings.eventSpans; ++e) {
@@ -357,14 +365,15 @@ void RaiseToFamilyFloor(const std::vector<CandidateEstimate>& candidates, const 
 /// the safety factor covers the rest), `impactSpeed` being the impacts' count times the fastest point's speed at
 /// the pilot's end. Position budgets on worlds whose particles hit constraints only.
 /// A particle that hits a constraint is also stopped on a surface CandidateSpace::contactOffset out from the box's
-/// (docs/ch14.md, "Contact that converges"): after an impact it flies from there, and at rest it rests there, off
-/// the rigid answer by about that offset whatever the step. Step doubling cannot see a bias every candidate shares,
-/// so once the pilot saw an impact the estimate is at least the offset.
-void RaiseToImpactTiming(int impacts, double impactSpeed, const CandidateSpace& space, const ErrorBudget& budget,
+/// (docs/ch14.md, "Contact that converges"): after an impact it flies from there, off the rigid answer's flight by
+/// about that offset whatever the step. Step doubling cannot see a bias every candidate shares, so when the pilot saw
+/// an impact and the particle still flying at its end (`flying`) the estimate is at least the offset. A particle
+/// resting on the surface rests at the contact's resting height, the model's own (as the book's), not counted.
+void RaiseToImpactTiming(bool flying, double impactSpeed, const CandidateSpace& space, const ErrorBudget& budget,
                          CandidateEstimate* e) {
     if (!space.hasContacts || budget.quantity != BudgetQuantity::Position || !e->stable) return;
     const double timing = 0.5 * impactSpeed * e->model.step;
-    const double offset = impacts > 0 ? space.contactOffset : 0.0;
+    const double offset = flying ? space.contactOffset : 0.0;
     const double floor = std::max(timing, offset);
     if (!(floor > e->estimate)) return;
     char text[192];
@@ -542,9 +551,9 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
     const double bound = budget.bound / settings.safety;
     ChoiceClock clock(settings);
     double impactSpeed = 0.0;
-    int impacts = 0;
+    bool flying = false;
     const std::vector<PlannedSpan> plan =
-        PlanSpans(factory, space, settings, span, &result, &clock, &impacts, &impactSpeed);
+        PlanSpans(factory, space, settings, span, &result, &clock, &flying, &impactSpeed);
     for (std::size_t k = 0; k < order.size(); ++k) {
         CandidateEstimate& e = result.candidates[order[k]];
         if (result.chosen >= 0) {
@@ -572,7 +581,7 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
                  &clock);
         result.evaluatedShare += e.share;
         RaiseToFamilyFloor(result.candidates, order, k, space, &e);
-        RaiseToImpactTiming(impacts, impactSpeed, space, budget, &e);
+        RaiseToImpactTiming(flying, impactSpeed, space, budget, &e);
         if (e.stable && !e.partial && !e.unreliable && e.estimate <= bound) {
             const double before = result.calibrationWork;
             VerifyOrder(plan[0], span, space, budget, settings, &e, &result.calibrationCpuSeconds,
