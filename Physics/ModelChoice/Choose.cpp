@@ -35,6 +35,15 @@ int Impacts(std::vector<double> jump) {
     return count;
 }
 
+/// Still flying at the pilot's end: its fastest point (`speed`, m/s) is faster than a hop of the contact offset's
+/// height under the strongest gravity; slower, a particle rests at the contact's resting height, the model's own
+/// (RaiseToImpactTiming).
+bool Flying(const PhysicsSystem& world, double speed, const CandidateSpace& space) {
+    double g = 0.0;
+    for (const Particle* p : world.Particles()) g = std::max(g, static_cast<double>(Magnitude(p->GetGravity())));
+    return speed > std::sqrt(2.0 * g * space.contactOffset);
+}
+
 /// The calibration's spans: one at the start and, for a world without volumes, up to settings.eventSpans around
 /// events the start span cannot see (a bounce, a cloth reaching an obstacle), from snapshots of a pilot run of the
 /// scene's own model over the whole run. Particles restart exactly from a snapshot; volumes would lose their contact
@@ -97,12 +106,7 @@ std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateS
     }
     const int impacts = Impacts(jump);
     *impactSpeed = static_cast<double>(impacts) * speed;
-    // Still flying at the end: faster than a hop of the contact offset's height under the strongest gravity (slower,
-    // a particle rests at the contact's resting height, which is the model's own: RaiseToImpactTiming).
-    double g = 0.0;
-    for (const Particle* p : pilot->World().Particles())
-        g = std::max(g, static_cast<double>(Magnitude(p->GetGravity())));
-    *flyingAfterImpact = impacts > 0 && speed > std::sqrt(2.0 * g * space.contactOffset);
+    *flyingAfterImpact = impacts > 0 && Flying(pilot->World(), speed, space);
     const double seen = std::max(jump[0], jump[1]);  // what the start span covers
     std::vector<int> picked;
     for (int e = 0; e < settings.eventSpans; ++e) {
@@ -313,37 +317,6 @@ void VerifyOrder(const PlannedSpan& start, double span, const CandidateSpace& sp
 /// of that prediction is the one the family showed between its two nearest such rungs, kept between 1 and the
 /// formal order (a joint's projection makes RK4 first order; one rung alone, or errors that did not shrink, give
 /// 1): an error shrinks no faster than that as the step does. The note says when the floor raised the estimate.
-/// FamilyFloor: what the nearest coarser whole-run rung of e's family predicts for e (0: no such rung), and that
-/// rung's step and the order used.
-struct FamilyPrediction {
-    double floor = 0.0, step = 0.0, order = 1.0;
-};
-FamilyPrediction FamilyFloor(const std::vector<CandidateEstimate>& candidates, const std::vector<std::size_t>& order,
-                             std::size_t k, const CandidateSpace& space, const CandidateEstimate* e) {
-    const CandidateEstimate* nearest = nullptr;  // the finest whole-run rung coarser than e
-    const CandidateEstimate* next = nullptr;     // the one after it
-    for (std::size_t j = 0; j < k; ++j) {
-        const CandidateEstimate& f = candidates[order[j]];
-        if (!f.evaluated || !f.wholeRun || !f.stable || f.partial || !std::isfinite(f.estimate) ||
-            !SameFamily(f.model, e->model) || Passes(f.model) != Passes(e->model) || f.model.step <= e->model.step) {
-            continue;
-        }
-        if (!nearest || f.model.step < nearest->model.step) {
-            next = nearest;
-            nearest = &f;
-        } else if (!next || f.model.step < next->model.step) {
-            next = &f;
-        }
-    }
-    if (!nearest) return {};
-    double p = 1.0;
-    if (next && nearest->estimate > 0.0 && next->estimate > nearest->estimate) {
-        p = std::log(next->estimate / nearest->estimate) / std::log(next->model.step / nearest->model.step);
-    }
-    p = std::clamp(p, 1.0, static_cast<double>(OrderOf(e->model, space)));
-    return {nearest->estimate * std::pow(e->model.step / nearest->model.step, p), nearest->model.step, p};
-}
-
 void RaiseToFamilyFloor(const std::vector<CandidateEstimate>& candidates, const std::vector<std::size_t>& order,
                         std::size_t k, const CandidateSpace& space, CandidateEstimate* e) {
     if ((e->wholeRun && !e->withinRounding) || !e->stable || !std::isfinite(e->estimate)) return;
@@ -421,40 +394,6 @@ std::vector<std::size_t> CostOrder(const CandidateSpace& space, ModelChoiceResul
         return wa < wb || (wa == wb && a < b);
     });
     return order;
-}
-
-/// WhySkip's prediction of a finer step from `nearest`, the nearest coarser rung of e's family with the same passes
-/// that was estimated: its estimate times the step ratio to the power of the candidate's order, or of the order the
-/// family's two nearest such rungs showed (complete estimates) where that is faster. At the formal order alone the
-/// rung may be at most 2.5 steps coarser (coarser steps are often outside the asymptotic range, where an error does
-/// not shrink with the step as its order says); with two rungs that showed their order, up to 5 (an order of 2 where
-/// 1 is assumed stays within the factor 8 of the rule). Predicted above 8 times the bound: not run.
-std::string PredictedMiss(const ModelChoiceResult& result, const std::vector<std::size_t>& order, std::size_t k,
-                          const CandidateEstimate& nearest, const CandidateEstimate& e, const CandidateSpace& space,
-                          double bound) {
-    const CandidateEstimate* next = nullptr;  // the nearest complete rung coarser than `nearest`
-    for (std::size_t j = 0; j < k; ++j) {
-        const CandidateEstimate& f = result.candidates[order[j]];
-        if (f.evaluated && f.stable && !f.partial && std::isfinite(f.estimate) && SameFamily(f.model, e.model) &&
-            Passes(f.model) == Passes(e.model) && f.model.step > nearest.model.step &&
-            (!next || f.model.step < next->model.step)) {
-            next = &f;
-        }
-    }
-    double p = OrderOf(e.model, space);
-    const bool observed = next && !nearest.partial && nearest.estimate > 0.0;
-    if (observed && next->estimate > nearest.estimate) {
-        p = std::max(p, std::log(next->estimate / nearest.estimate) / std::log(next->model.step / nearest.model.step));
-    } else if (observed) {
-        p = kInf;  // the error did not shrink between the rungs: no order to predict with
-    }
-    if (!std::isfinite(p) || nearest.model.step > (observed ? 5.0 : 2.5) * e.model.step) return "";
-    const double predicted = nearest.estimate * std::pow(e.model.step / nearest.model.step, p);
-    if (!(predicted > 8.0 * bound)) return "";
-    char text[120];
-    std::snprintf(text, sizeof text, "not run: predicted %.3g from its family's dt %g s", predicted,
-                  nearest.model.step);
-    return text;
 }
 
 /// Why candidate order[k], `e`, need not be run given the candidates before it (empty: it must be).
