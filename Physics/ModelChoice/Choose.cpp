@@ -35,9 +35,19 @@ int Impacts(std::vector<double> jump) {
     return count;
 }
 
-/// Still flying at the pilot's end: its fastest point (`speed`, m/s) is faster than a hop of the contact offset's
-/// height under the strongest gravity; slower, a particle rests at the contact's resting height, the model's own
-/// (RaiseToImpactTiming).
+/// m/s: the fastest point between two sets of positions a step `h` apart (0 when they differ in size).
+double FastestPoint(const std::vector<double>& now, const std::vector<double>& before, double h) {
+    double speed = 0.0;
+    for (std::size_t i = 0; i + 2 < now.size() && before.size() == now.size(); i += 3) {
+        const double d[3] = {now[i] - before[i], now[i + 1] - before[i + 1], now[i + 2] - before[i + 2]};
+        speed = std::max(speed, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / h);
+    }
+    return speed;
+}
+
+/// Still flying near the pilot's end: its fastest point over the last interval (`speed`, m/s: not at the end alone,
+/// where a bounce can be at its apex) is faster than a hop of the contact offset's height under the strongest
+/// gravity; slower, a particle rests at the contact's resting height, the model's own (RaiseToImpactTiming).
 bool Flying(const PhysicsSystem& world, double speed, const CandidateSpace& space) {
     double g = 0.0;
     for (const Particle* p : world.Particles()) g = std::max(g, static_cast<double>(Magnitude(p->GetGravity())));
@@ -71,6 +81,7 @@ std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateS
     std::vector<double> x0, x1, x2, a1;  // positions two steps back, one back, now; the last acceleration
     long long n = 0;
     bool haveA = false;
+    double late = 0.0;  // m/s: the fastest point over the pilot's last interval
     // The pilot covers at most 50 spans (all of a run up to 10 s at the 0.2 s floor; the first 100 s of a long one).
     const double pilotEnd = std::min(T, 50.0 * span);
     while ((n + 1) * h <= pilotEnd * (1.0 + 1e-12)) {
@@ -82,6 +93,7 @@ std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateS
         x0.swap(x1);
         x1.swap(x2);
         WorldPositions(pilot->World(), &x2);
+        if (t > pilotEnd - interval) late = std::max(late, FastestPoint(x2, x1, h));
         const std::size_t k = static_cast<std::size_t>(std::min(intervals - 1, static_cast<int>(t / interval)));
         if (n >= 3 && x0.size() == x2.size()) {
             double worst = 0.0;
@@ -99,14 +111,9 @@ std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateS
             snapshots.push_back(pilot->Snapshot());
         }
     }
-    double speed = 0.0;  // m/s: the fastest point at the pilot's end
-    for (std::size_t i = 0; i + 2 < x2.size() && x1.size() == x2.size(); i += 3) {
-        const double d[3] = {x2[i] - x1[i], x2[i + 1] - x1[i + 1], x2[i + 2] - x1[i + 2]};
-        speed = std::max(speed, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / h);
-    }
     const int impacts = Impacts(jump);
-    *impactSpeed = static_cast<double>(impacts) * speed;
-    *flyingAfterImpact = impacts > 0 && Flying(pilot->World(), speed, space);
+    *impactSpeed = static_cast<double>(impacts) * FastestPoint(x2, x1, h);  // the fastest point at the pilot's end
+    *flyingAfterImpact = impacts > 0 && Flying(pilot->World(), late, space);
     const double seen = std::max(jump[0], jump[1]);  // what the start span covers
     std::vector<int> picked;
     for (int e = 0; e < settings.eventSpans; ++e) {
