@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "Physics/Cloth.h"
+#include "Physics/Particle.h"
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
 
@@ -46,6 +47,7 @@ CandidateSpace AutoModel::SpaceOf(const ParameterSet& params, const PhysicsSyste
     space.hasParticles = space.particleCount > 0.0;
     space.hasVolumes = space.volumeCount > 0.0;
     space.hasContacts = space.hasParticles && !world.Constraints().empty();
+    if (space.hasContacts) space.contactOffset = Particle::kContactOffset;
     space.hasJoints = !world.Joints().empty();
 
     ModelCandidate& base = space.base;

@@ -5,6 +5,8 @@
 
 #include "Physics/ModelChoice/Internals.h"
 #include "Physics/ModelChoice/ModelChoice.h"
+#include "Physics/Particle.h"
+#include "Physics/PhysicsSystem.h"
 
 using namespace model_choice;  // NOLINT: this file's own internals (Physics/ModelChoice/Internals.h)
 
@@ -33,6 +35,25 @@ int Impacts(std::vector<double> jump) {
     return count;
 }
 
+/// m/s: the fastest point between two sets of positions a step `h` apart (0 when they differ in size).
+double FastestPoint(const std::vector<double>& now, const std::vector<double>& before, double h) {
+    double speed = 0.0;
+    for (std::size_t i = 0; i + 2 < now.size() && before.size() == now.size(); i += 3) {
+        const double d[3] = {now[i] - before[i], now[i + 1] - before[i + 1], now[i + 2] - before[i + 2]};
+        speed = std::max(speed, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / h);
+    }
+    return speed;
+}
+
+/// Still flying near the pilot's end: its fastest point over the last interval (`speed`, m/s: not at the end alone,
+/// where a bounce can be at its apex) is faster than a hop of the contact offset's height under the strongest
+/// gravity; slower, a particle rests at the contact's resting height, the model's own (RaiseToImpactTiming).
+bool Flying(const PhysicsSystem& world, double speed, const CandidateSpace& space) {
+    double g = 0.0;
+    for (const Particle* p : world.Particles()) g = std::max(g, static_cast<double>(Magnitude(p->GetGravity())));
+    return speed > std::sqrt(2.0 * g * space.contactOffset);
+}
+
 /// The calibration's spans: one at the start and, for a world without volumes, up to settings.eventSpans around
 /// events the start span cannot see (a bounce, a cloth reaching an obstacle), from snapshots of a pilot run of the
 /// scene's own model over the whole run. Particles restart exactly from a snapshot; volumes would lose their contact
@@ -42,7 +63,7 @@ int Impacts(std::vector<double> jump) {
 /// ten times more irregular than any the start span covers gets a span from the snapshot of the interval before.
 std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateSpace& space,
                                    const ChoiceSettings& settings, double span, ModelChoiceResult* result,
-                                   ChoiceClock* clock, double* impactSpeed) {
+                                   ChoiceClock* clock, bool* flyingAfterImpact, double* impactSpeed) {
     using Kind = PlannedSpan::Kind;
     const double T = settings.runSeconds;
     std::vector<PlannedSpan> plan{{Kind::Start, factory, 0.0, T, 0}};
@@ -60,6 +81,7 @@ std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateS
     std::vector<double> x0, x1, x2, a1;  // positions two steps back, one back, now; the last acceleration
     long long n = 0;
     bool haveA = false;
+    double late = 0.0;  // m/s: the fastest point over the pilot's last interval
     // The pilot covers at most 50 spans (all of a run up to 10 s at the 0.2 s floor; the first 100 s of a long one).
     const double pilotEnd = std::min(T, 50.0 * span);
     while ((n + 1) * h <= pilotEnd * (1.0 + 1e-12)) {
@@ -71,6 +93,7 @@ std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateS
         x0.swap(x1);
         x1.swap(x2);
         WorldPositions(pilot->World(), &x2);
+        if (t > pilotEnd - interval) late = std::max(late, FastestPoint(x2, x1, h));
         const std::size_t k = static_cast<std::size_t>(std::min(intervals - 1, static_cast<int>(t / interval)));
         if (n >= 3 && x0.size() == x2.size()) {
             double worst = 0.0;
@@ -88,12 +111,9 @@ std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateS
             snapshots.push_back(pilot->Snapshot());
         }
     }
-    double speed = 0.0;  // m/s: the fastest point at the pilot's end
-    for (std::size_t i = 0; i + 2 < x2.size() && x1.size() == x2.size(); i += 3) {
-        const double d[3] = {x2[i] - x1[i], x2[i + 1] - x1[i + 1], x2[i + 2] - x1[i + 2]};
-        speed = std::max(speed, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / h);
-    }
-    *impactSpeed = static_cast<double>(Impacts(jump)) * speed;
+    const int impacts = Impacts(jump);
+    *impactSpeed = static_cast<double>(impacts) * FastestPoint(x2, x1, h);  // the fastest point at the pilot's end
+    *flyingAfterImpact = impacts > 0 && Flying(pilot->World(), late, space);
     const double seen = std::max(jump[0], jump[1]);  // what the start span covers
     std::vector<int> picked;
     for (int e = 0; e < settings.eventSpans; ++e) {
@@ -307,33 +327,13 @@ void VerifyOrder(const PlannedSpan& start, double span, const CandidateSpace& sp
 void RaiseToFamilyFloor(const std::vector<CandidateEstimate>& candidates, const std::vector<std::size_t>& order,
                         std::size_t k, const CandidateSpace& space, CandidateEstimate* e) {
     if ((e->wholeRun && !e->withinRounding) || !e->stable || !std::isfinite(e->estimate)) return;
-    const CandidateEstimate* nearest = nullptr;  // the finest whole-run rung coarser than e
-    const CandidateEstimate* next = nullptr;     // the one after it
-    for (std::size_t j = 0; j < k; ++j) {
-        const CandidateEstimate& f = candidates[order[j]];
-        if (!f.evaluated || !f.wholeRun || !f.stable || f.partial || !std::isfinite(f.estimate) ||
-            !SameFamily(f.model, e->model) || Passes(f.model) != Passes(e->model) || f.model.step <= e->model.step) {
-            continue;
-        }
-        if (!nearest || f.model.step < nearest->model.step) {
-            next = nearest;
-            nearest = &f;
-        } else if (!next || f.model.step < next->model.step) {
-            next = &f;
-        }
-    }
-    if (!nearest) return;
-    double p = 1.0;
-    if (next && nearest->estimate > 0.0 && next->estimate > nearest->estimate) {
-        p = std::log(next->estimate / nearest->estimate) / std::log(next->model.step / nearest->model.step);
-    }
-    p = std::clamp(p, 1.0, static_cast<double>(OrderOf(e->model, space)));
-    const double floor = nearest->estimate * std::pow(e->model.step / nearest->model.step, p);
+    const FamilyPrediction f = FamilyFloor(candidates, order, k, space, e);
+    const double floor = f.floor;
     if (floor <= e->estimate) return;
     char text[192];
     std::snprintf(text, sizeof text,
                   "raised from %.3g: its family's dt %g s, measured over the whole run, predicts %.3g (order %.2g)",
-                  e->estimate, nearest->model.step, floor, p);
+                  e->estimate, f.step, floor, f.order);
     e->estimate = floor;
     e->note = text;
 }
@@ -344,16 +344,29 @@ void RaiseToFamilyFloor(const std::vector<CandidateEstimate>& candidates, const 
 /// particles came to rest): the estimate is taken to be at least half of that bound per impact (the typical phase;
 /// the safety factor covers the rest), `impactSpeed` being the impacts' count times the fastest point's speed at
 /// the pilot's end. Position budgets on worlds whose particles hit constraints only.
-void RaiseToImpactTiming(double impactSpeed, const CandidateSpace& space, const ErrorBudget& budget,
+/// A particle that hits a constraint is also stopped on a surface CandidateSpace::contactOffset out from the box's
+/// (docs/ch14.md, "Contact that converges"): after an impact it flies from there, off the rigid answer's flight by
+/// about that offset whatever the step. Step doubling cannot see a bias every candidate shares, so when the pilot saw
+/// an impact and the particle still flying at its end (`flying`) the estimate is at least the offset. A particle
+/// resting on the surface rests at the contact's resting height, the model's own (as the book's), not counted.
+void RaiseToImpactTiming(bool flying, double impactSpeed, const CandidateSpace& space, const ErrorBudget& budget,
                          CandidateEstimate* e) {
     if (!space.hasContacts || budget.quantity != BudgetQuantity::Position || !e->stable) return;
-    const double floor = 0.5 * impactSpeed * e->model.step;
+    const double timing = 0.5 * impactSpeed * e->model.step;
+    const double offset = flying ? space.contactOffset : 0.0;
+    const double floor = std::max(timing, offset);
     if (!(floor > e->estimate)) return;
     char text[192];
-    std::snprintf(
-        text, sizeof text,
-        "raised from %.3g: impacts times the speed at the end, %.3g m/s, each timed to within its step, allow %.3g",
-        e->estimate, impactSpeed, floor);
+    if (offset >= timing) {
+        std::snprintf(text, sizeof text,
+                      "raised from %.3g: a particle that hit a constraint flies and rests %.3g m off its surface",
+                      e->estimate, offset);
+    } else {
+        std::snprintf(
+            text, sizeof text,
+            "raised from %.3g: impacts times the speed at the end, %.3g m/s, each timed to within its step, allow %.3g",
+            e->estimate, impactSpeed, floor);
+    }
     e->estimate = floor;
     if (!e->unreliable) e->note = text;
 }
@@ -424,17 +437,53 @@ std::string WhySkip(const ModelChoiceResult& result, const std::vector<std::size
             }
         }
     }
-    if (why.empty() && nearest && nearest->model.step <= 2.5 * e.model.step) {
-        const double predicted =
-            nearest->estimate * std::pow(e.model.step / nearest->model.step, OrderOf(e.model, space));
-        if (predicted > 8.0 * bound) {
-            char text[120];
-            std::snprintf(text, sizeof text, "not run: predicted %.3g from its family's dt %g s", predicted,
-                          nearest->model.step);
-            why = text;
+    if (why.empty() && nearest) why = PredictedMiss(result, order, k, *nearest, e, space, bound);
+    return why;
+}
+
+/// The margin's fallback, when no candidate met the budget over the safety factor: of the candidates whose estimate
+/// is within the budget itself, the one of the smallest estimate, provided the estimate is complete and the error was
+/// seen to shrink at the candidate's order by a finer pair above rounding (CheckOrder, over the whole run or its start
+/// span; VerifyOrder runs it here for a span estimate that has not had it, within the CPU limit). The safety factor is
+/// for an estimate whose order is assumed; this one's order was observed. Constraint budgets, observed rather than
+/// estimated, have no such check and no fallback. Returns the index, or -1.
+int MarginFallback(const PlannedSpan& start, double span, const std::vector<std::size_t>& order,
+                   const CandidateSpace& space, const ErrorBudget& budget, const ChoiceSettings& settings,
+                   ModelChoiceResult* result, ChoiceClock* clock) {
+    if (budget.quantity == BudgetQuantity::Constraint) return -1;
+    int pick = -1;
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        CandidateEstimate& e = result->candidates[order[i]];
+        // Its coarser whole-run rungs must agree: an end-of-run difference can be small by chance (a pendulum's
+        // phase error crossing zero near the end), which the rungs' order-1 prediction would not be.
+        auto trusted = [&] {
+            return e.evaluated && e.stable && !e.partial && !e.unreliable && !e.withinRounding &&
+                   e.finerDifference >= 0.0 && e.estimate <= budget.bound &&
+                   FamilyFloor(result->candidates, order, i, space, &e).floor <= budget.bound;
+        };
+        if (e.finerDifference < 0.0 && e.evaluated && e.stable && !e.partial && !e.unreliable &&
+            e.estimate <= budget.bound && !clock->Over()) {
+            const double before = result->calibrationWork;
+            VerifyOrder(start, span, space, budget, settings, &e, &result->calibrationCpuSeconds,
+                        &result->calibrationWork, clock);
+            result->checkWork += result->calibrationWork - before;
+            result->unreliableCount += e.unreliable ? 1 : 0;
+        }
+        if (!trusted()) continue;
+        if (pick < 0 || e.estimate < result->candidates[static_cast<std::size_t>(pick)].estimate) {
+            pick = static_cast<int>(order[i]);
         }
     }
-    return why;
+    if (pick >= 0) {
+        CandidateEstimate& e = result->candidates[static_cast<std::size_t>(pick)];
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "within the budget, not its margin; chosen as no candidate met the margin and its error was seen "
+                      "to shrink at its order (%.3g, then %.3g at half the step)",
+                      e.pairDifference, e.finerDifference);
+        e.note = text;
+    }
+    return pick;
 }
 
 }  // namespace
@@ -448,7 +497,9 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
     const double bound = budget.bound / settings.safety;
     ChoiceClock clock(settings);
     double impactSpeed = 0.0;
-    const std::vector<PlannedSpan> plan = PlanSpans(factory, space, settings, span, &result, &clock, &impactSpeed);
+    bool flying = false;
+    const std::vector<PlannedSpan> plan =
+        PlanSpans(factory, space, settings, span, &result, &clock, &flying, &impactSpeed);
     for (std::size_t k = 0; k < order.size(); ++k) {
         CandidateEstimate& e = result.candidates[order[k]];
         if (result.chosen >= 0) {
@@ -476,7 +527,7 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
                  &clock);
         result.evaluatedShare += e.share;
         RaiseToFamilyFloor(result.candidates, order, k, space, &e);
-        RaiseToImpactTiming(impactSpeed, space, budget, &e);
+        RaiseToImpactTiming(flying, impactSpeed, space, budget, &e);
         if (e.stable && !e.partial && !e.unreliable && e.estimate <= bound) {
             const double before = result.calibrationWork;
             VerifyOrder(plan[0], span, space, budget, settings, &e, &result.calibrationCpuSeconds,
@@ -488,6 +539,10 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
         e.meets = e.stable && !e.partial && !e.unreliable && e.estimate <= bound;
         if (e.meets) result.chosen = static_cast<int>(order[k]);
         KeepBest(&result, static_cast<int>(order[k]));
+    }
+    if (result.chosen < 0 && settings.marginFallback) {
+        result.chosen = MarginFallback(plan[0], span, order, space, budget, settings, &result, &clock);
+        result.withinMarginOnly = result.chosen >= 0;
     }
     result.feasible = result.chosen >= 0;
     result.cpuLimit = clock.Limit(0.0, 0.0);

@@ -132,4 +132,18 @@ struct SpanOptions {
 SpanResult RunSpan(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
                    const ErrorBudget& budget, double span, const SpanOptions& o);
 
+/// FamilyFloor: what the nearest coarser whole-run rung of e's family with the same passes predicts for e, at the
+/// order its two nearest such rungs showed, kept between 1 and the formal order (floor 0: no such rung); that rung's
+/// step and the order used. Rungs are the candidates before order[k] (Physics/ModelChoice/Rungs.cpp).
+struct FamilyPrediction {
+    double floor = 0.0, step = 0.0, order = 1.0;
+};
+FamilyPrediction FamilyFloor(const std::vector<CandidateEstimate>& candidates, const std::vector<std::size_t>& order,
+                             std::size_t k, const CandidateSpace& space, const CandidateEstimate* e);
+/// Why order[k], `e`, is predicted to miss `bound` by more than 8x from `nearest`, the nearest coarser rung of its
+/// family with the same passes that was estimated (empty: it is not; Physics/ModelChoice/Rungs.cpp).
+std::string PredictedMiss(const ModelChoiceResult& result, const std::vector<std::size_t>& order, std::size_t k,
+                          const CandidateEstimate& nearest, const CandidateEstimate& e, const CandidateSpace& space,
+                          double bound);
+
 }  // namespace model_choice

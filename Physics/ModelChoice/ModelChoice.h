@@ -68,6 +68,9 @@ struct CandidateSpace {
     /// Particles on distance joints: each step projects their positions back onto the joint and drops the velocity
     /// along it, a first-order splitting whatever the integrator (docs/model-choice.md, "The candidates").
     bool hasJoints = false;
+    /// m: how far off a constraint's surface a particle that hits it is put (Particle::kContactOffset; 0: none). A
+    /// bias against the rigid answer that no step removes: a position estimate is at least this once particles hit.
+    double contactOffset = 0.0;
     // Counts for the work model (PredictedWork).
     double particleCount = 0.0;  ///< free and cloth particles
     double springCount = 0.0;    ///< springs, cloth springs included, and joints
@@ -145,6 +148,10 @@ struct ChoiceSettings {
     bool stopSpansAtMiss = true;
     /// A candidate meets the budget when safety * estimate <= bound.
     double safety = 2.0;
+    /// When none meets it, the candidate of the smallest estimate within the bound itself runs, if its estimate is
+    /// complete and its order was observed (a finer pair above rounding): ChooseModel's margin fallback
+    /// (docs/model-choice.md, "The margin"). False refuses instead.
+    bool marginFallback = true;
     /// Candidates estimated at most (the rest are reported as not run): a bound on the calibration of a budget
     /// nothing meets. A candidate whose span stopped early at a miss counts for the part of its spans that
     /// ran. The validation's cases need at most 66 (the incline at 1e-3, whose whole runs never stop early; the
@@ -216,7 +223,9 @@ struct ModelChoiceResult {
     bool stoppedAtLimit = false;
     double cpuLimit = 0.0;
     int unreliableCount = 0;  ///< candidates whose error did not shrink at their order
-    double checkWork = 0.0;   ///< the part of calibrationWork spent on convergence checks (VerifyOrder)
+    /// The chosen candidate met the budget but not its margin (ChoiceSettings::marginFallback).
+    bool withinMarginOnly = false;
+    double checkWork = 0.0;  ///< the part of calibrationWork spent on convergence checks (VerifyOrder)
 };
 
 /// Estimates every candidate on probes from `factory` (cheapest first, skipping those predicted to cost more

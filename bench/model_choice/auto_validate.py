@@ -266,6 +266,25 @@ def worst_table(rows, count):
     return lines
 
 
+def seeds_table(specs):
+    """The summary of earlier runs' --csv files, one line each: `LABEL=PATH`, LABEL as "seed, run"."""
+    lines = ["| seed | run | within budget | largest error / budget | above 2x | refused | grid meets in refusals |",
+             "|---|---|---|---|---|---|---|"]
+    for spec in specs:
+        label, path = spec.split("=", 1)
+        with open(path, newline="") as f:
+            rows = list(csv.DictReader(f))
+        ran = [r for r in rows if r["error"] not in ("-", "")]
+        ratios = [float(r["error_over_budget"]) for r in ran]
+        refused = [r for r in rows if r["refused"] == "1"]
+        seed, _, run = label.partition(",")
+        lines.append(f"| {seed.strip()} | {run.strip()} | {percent(sum(r['within'] == '1' for r in ran), len(ran))} | "
+                     f"{fmt(max(ratios) if ratios else None)} | {sum(x > 2 for x in ratios)} | "
+                     f"{percent(len(refused), len(rows))} ({len(refused)}) | "
+                     f"{sum(r['grid_meets'] == '1' for r in refused)} |")
+    return lines
+
+
 def write_csv(path, columns, rows):
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=columns, restval="-")
@@ -290,7 +309,12 @@ def main(argv):
     ap.add_argument("--md", default="", help="the generated tables (docs/model-choice-validation.md)")
     ap.add_argument("--jobs", type=int, default=1)
     ap.add_argument("--cpu-limit", type=int, default=120, help="CPU s a run may take before it is stopped")
+    ap.add_argument("--table", default="", help="print the summary of earlier --csv files as a table and exit: "
+                    "'SEED, RUN=PATH;SEED, RUN=PATH...'")
     args = ap.parse_args(argv)
+    if args.table:
+        print("\n".join(seeds_table([s for s in args.table.split(";") if s])))
+        return 0
     families = [f for f in args.families.split(",") if f]
     for f in families:
         if f not in auto_families.FAMILIES:

@@ -122,13 +122,14 @@ TEST(AutoModelCli, EverySimulatedDemoTakesTheKeysAndTheScriptedOnesDoNot) {
 
 TEST(AutoModelCli, TheOldToleranceKeyStillSetsTheErrorBudgetAndSaysItIsDeprecated) {
     // `--set tolerance=` was the error budget's key before `error-budget` (docs/model-choice.md): the same choice,
-    // the same states, and one line on stderr naming the new key.
+    // the same states, and one line on stderr naming the new key. (1 cm: at 0.5 s the particles have just bounced off
+    // the ground, and a budget under twice the contact's 3 mm offset is refused: docs/model-choice.md "Impact timing".)
     const std::string dir = ScratchDir("auto_model_tolerance_alias");
-    const SandboxResult old = RunSandboxExe({"--demo", "springs", "--set", "model=auto", "--set", "tolerance=0.002",
+    const SandboxResult old = RunSandboxExe({"--demo", "springs", "--set", "model=auto", "--set", "tolerance=0.01",
                                              "--frames", "30", "--no-ui", "--state", dir + "/old.csv"});
     ASSERT_EQ(old.exitCode, 0) << old.err;
     EXPECT_NE(old.err.find("'tolerance' is deprecated; use 'error-budget'"), std::string::npos) << old.err;
-    const SandboxResult now = RunSandboxExe({"--demo", "springs", "--set", "model=auto", "--set", "error-budget=0.002",
+    const SandboxResult now = RunSandboxExe({"--demo", "springs", "--set", "model=auto", "--set", "error-budget=0.01",
                                              "--frames", "30", "--no-ui", "--state", dir + "/new.csv"});
     ASSERT_EQ(now.exitCode, 0) << now.err;
     EXPECT_EQ(now.err.find("deprecated"), std::string::npos) << now.err;
@@ -136,11 +137,12 @@ TEST(AutoModelCli, TheOldToleranceKeyStillSetsTheErrorBudgetAndSaysItIsDeprecate
 }
 
 TEST(AutoModelCli, TheChosenModelIsTheOneThatRuns) {
-    // A budget the book's step does not meet: the choice differs from the defaults. --params shows the values in
+    // A budget the book's step does not meet (1 cm, over twice the contact offset the just-bounced particles fly
+    // off by): the choice differs from the defaults. --params shows the values in
     // effect after the choice; a fixed run with exactly those values gives the auto run's states.
     const std::string dir = ScratchDir("auto_model_chosen");
     const std::vector<std::string> autoArgs = {
-        "--demo", "springs", "--set", "model=auto", "--set", "error-budget=0.002", "--frames", "30", "--no-ui"};
+        "--demo", "springs", "--set", "model=auto", "--set", "error-budget=0.01", "--frames", "30", "--no-ui"};
     std::vector<std::string> params = autoArgs;
     params.push_back("--params");
     const SandboxResult listed = RunSandboxExe(params);
