@@ -174,6 +174,36 @@ void CheckOrder(double pair, double finer, double noise, const CandidateSpace& s
     e->note = text;
 }
 
+/// Whether a candidate is estimated over the whole run: a cheap world without volumes, or with one (no stack to
+/// topple: a whole run is a measurement, not a chaotic divergence), whose candidate, refinement and third probe
+/// (a quarter of the step) fit the choice's whole-run work.
+bool WholeRunFits(const ModelCandidate& model, const ModelCandidate& fine, bool refined, const CandidateSpace& space,
+                  const ChoiceSettings& settings) {
+    if ((space.hasVolumes && space.volumeCount > 1.0) || !(settings.wholeRunWork > 0.0)) return false;
+    const double probes = PredictedWork(model, space) +
+                          (refined ? PredictedWork(fine, space) + PredictedWork(Refine(fine, space), space) : 0.0);
+    return settings.runSeconds * probes <= settings.wholeRunWork;
+}
+
+/// A whole-run estimate's note (raised by the third probe or not) and its order check on the start span's pair.
+void FinishWholeRun(const SpanResult& first, double raisedFrom, const CandidateSpace& space,
+                    const ChoiceSettings& settings, CandidateEstimate* e) {
+    if (e->stoppedAtLimit) return;  // the note says so
+    if (e->stable && std::isfinite(e->estimate) && raisedFrom < 0.0) {
+        e->note = "measured over the whole run";
+    } else if (e->stable && std::isfinite(e->estimate)) {
+        char text[128];
+        std::snprintf(text, sizeof text,
+                      "measured over the whole run; raised from %.3g by the finer pair (a quarter step)", raisedFrom);
+        e->note = text;
+    }
+    if (e->stable && !e->partial && std::isfinite(e->estimate) && first.pair >= 0.0) {
+        const bool alongSubsteps = Refine(e->model, space).step == e->model.step;
+        CheckOrder(first.pair, first.finer, first.noise, space, settings,
+                   alongSubsteps ? "over the whole run, doubling its substeps" : "over the whole run", e);
+    }
+}
+
 /// A candidate's estimate: the sum of its spans' contributions (constraint error: the largest). Stops as soon as
 /// it misses `bound` (the rest can only add), marking the estimate partial (a lower bound).
 void Evaluate(const std::vector<PlannedSpan>& plan, double span, const CandidateSpace& space, const ErrorBudget& budget,
@@ -183,20 +213,15 @@ void Evaluate(const std::vector<PlannedSpan>& plan, double span, const Candidate
     e->share = 0.0;
     e->segments.clear();
     double cpu = 0.0, simulated = 0.0;
-    // A cheap world without volumes, or with one (no stack to topple: a whole run is a measurement, not a chaotic
-    // divergence): the candidate, its refinement and a third probe at a quarter of the step run the whole run from
-    // the start, and the largest difference sampled over it, with the Richardson factor, is the estimate
-    // (constraint error: the largest seen on the candidate alone). Not the position difference at the end: there a
-    // bounce that died down leaves both at rest on the ground, and a spring is back near a turning point. Energy
-    // is bounded at the end and is measured there. The third probe checks either (RunSpan).
-    // The start span then spans the whole run: its contribution is its difference, nothing extrapolated.
+    // Over the whole run (WholeRunFits): the candidate, its refinement and a third probe at a quarter of the step
+    // run the whole run from the start, and the largest difference sampled over it, with the Richardson factor, is the
+    // estimate (constraint error: the largest seen on the candidate alone). Not the position difference at the end:
+    // there a bounce that died down leaves both at rest on the ground, and a spring is back near a turning point.
+    // Energy is bounded at the end and is measured there. The third probe checks either (RunSpan). The start span then
+    // spans the whole run: its contribution is its difference, nothing extrapolated.
     const bool refined = budget.quantity != BudgetQuantity::Constraint;
     const ModelCandidate fine = Refine(e->model, space);
-    e->wholeRun = (!space.hasVolumes || space.volumeCount <= 1.0) && settings.wholeRunWork > 0.0 &&
-                  settings.runSeconds *
-                          (PredictedWork(e->model, space) +
-                           (refined ? PredictedWork(fine, space) + PredictedWork(Refine(fine, space), space) : 0.0)) <=
-                      settings.wholeRunWork;
+    e->wholeRun = WholeRunFits(e->model, fine, refined, space, settings);
     double raisedFrom = -1.0;  // the pair's own estimate, when the third probe raised it
     SpanResult first;          // the start span (the whole run's convergence figures)
     const std::vector<PlannedSpan> whole{plan[0]};
@@ -248,21 +273,7 @@ void Evaluate(const std::vector<PlannedSpan>& plan, double span, const Candidate
             break;
         }
     }
-    if (e->stoppedAtLimit) {
-        // the note says so
-    } else if (e->wholeRun && e->stable && std::isfinite(e->estimate) && raisedFrom < 0.0) {
-        e->note = "measured over the whole run";
-    } else if (e->wholeRun && e->stable && std::isfinite(e->estimate)) {
-        char text[128];
-        std::snprintf(text, sizeof text,
-                      "measured over the whole run; raised from %.3g by the finer pair (a quarter step)", raisedFrom);
-        e->note = text;
-    }
-    if (e->wholeRun && e->stable && !e->partial && std::isfinite(e->estimate) && first.pair >= 0.0) {
-        const bool alongSubsteps = Refine(e->model, space).step == e->model.step;
-        CheckOrder(first.pair, first.finer, first.noise, space, settings,
-                   alongSubsteps ? "over the whole run, doubling its substeps" : "over the whole run", e);
-    }
+    if (e->wholeRun) FinishWholeRun(first, raisedFrom, space, settings, e);
     e->cpuPerSimSecond = simulated > 0.0 ? cpu / simulated : 0.0;
 }
 
