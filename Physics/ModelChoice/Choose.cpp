@@ -54,6 +54,23 @@ bool Flying(const PhysicsSystem& world, double speed, const CandidateSpace& spac
     return speed > std::sqrt(2.0 * g * space.contactOffset);
 }
 
+/// What the pilot run saw of its particles' impacts (RaiseToImpactTiming).
+struct PilotImpacts {
+    double speed = 0.0;         ///< m/s: the impacts' count times the fastest point's speed at the pilot's end
+    bool flying = false;        ///< an impact seen and a particle still flying over the pilot's last interval
+    double offsetEnergy = 0.0;  ///< an impact seen: OffsetEnergyShare, else 0
+};
+
+/// The potential energy of every particle raised by the contact offset, over the world's energy (the energy
+/// budget's scale, as the calibration's QuantityProbe takes it): what a particle that hit a constraint and flies or
+/// rests CandidateSpace::contactOffset off the surface is off the rigid answer's energy, whatever the step.
+double OffsetEnergyShare(const PhysicsSystem& world, const CandidateSpace& space) {
+    double raised = 0.0;
+    for (const Particle* p : world.Particles())
+        raised += static_cast<double>(p->GetMass()) * Magnitude(p->GetGravity()) * space.contactOffset;
+    return raised / std::max(std::fabs(WorldEnergy(world)), 1e-12);
+}
+
 /// The calibration's spans: one at the start and, for a world without volumes, up to settings.eventSpans around
 /// events the start span cannot see (a bounce, a cloth reaching an obstacle), from snapshots of a pilot run of the
 /// scene's own model over the whole run. Particles restart exactly from a snapshot; volumes would lose their contact
@@ -63,7 +80,7 @@ bool Flying(const PhysicsSystem& world, double speed, const CandidateSpace& spac
 /// ten times more irregular than any the start span covers gets a span from the snapshot of the interval before.
 std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateSpace& space,
                                    const ChoiceSettings& settings, double span, ModelChoiceResult* result,
-                                   ChoiceClock* clock, bool* flyingAfterImpact, double* impactSpeed) {
+                                   ChoiceClock* clock, PilotImpacts* impacted) {
     using Kind = PlannedSpan::Kind;
     const double T = settings.runSeconds;
     std::vector<PlannedSpan> plan{{Kind::Start, factory, 0.0, T, 0}};
@@ -75,6 +92,7 @@ std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateS
     clock->Candidate(0.0, "the pilot run of the scene's own model");
     std::unique_ptr<ModelProbe> pilot = factory();
     pilot->Apply(space.base);
+    const double offsetEnergy = OffsetEnergyShare(pilot->World(), space);
     const double h = space.base.step;
     std::vector<ProbeFactory> snapshots{factory};  // at k * interval
     std::vector<double> jump(static_cast<std::size_t>(intervals), 0.0);
@@ -112,8 +130,9 @@ std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateS
         }
     }
     const int impacts = Impacts(jump);
-    *impactSpeed = static_cast<double>(impacts) * FastestPoint(x2, x1, h);  // the fastest point at the pilot's end
-    *flyingAfterImpact = impacts > 0 && Flying(pilot->World(), late, space);
+    impacted->speed = static_cast<double>(impacts) * FastestPoint(x2, x1, h);  // the fastest point at the pilot's end
+    impacted->flying = impacts > 0 && Flying(pilot->World(), late, space);
+    impacted->offsetEnergy = impacts > 0 ? offsetEnergy : 0.0;
     const double seen = std::max(jump[0], jump[1]);  // what the start span covers
     std::vector<int> picked;
     for (int e = 0; e < settings.eventSpans; ++e) {
@@ -349,6 +368,20 @@ void RaiseToFamilyFloor(const std::vector<CandidateEstimate>& candidates, const 
     e->note = text;
 }
 
+/// An energy budget on a world whose particles hit a constraint: in flight or at rest a hit particle is the contact
+/// offset higher than the rigid answer's, so its energy is off by m g offset whatever the step (an energy the step
+/// doubling cannot see, as the offset's position above). The estimate is at least that share of the world's energy.
+void RaiseToOffsetEnergy(double offsetEnergy, CandidateEstimate* e) {
+    if (!(offsetEnergy > e->estimate)) return;
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "raised from %.3g: a particle that hit a constraint is %.3g of the world's energy off, its contact "
+                  "offset's",
+                  e->estimate, offsetEnergy);
+    e->estimate = offsetEnergy;
+    if (!e->unreliable) e->note = text;
+}
+
 /// A particle's impact falls somewhere inside a step, and the motion after it is shifted in time by up to a step,
 /// by an amount that jumps with the impact's phase in the step, so step doubling can see two probes agree by
 /// chance. A shift of the motion by dt moves the state at the end by its speed there times dt (nothing, once the
@@ -360,11 +393,17 @@ void RaiseToFamilyFloor(const std::vector<CandidateEstimate>& candidates, const 
 /// about that offset whatever the step. Step doubling cannot see a bias every candidate shares, so when the pilot saw
 /// an impact and the particle still flying at its end (`flying`) the estimate is at least the offset. A particle
 /// resting on the surface rests at the contact's resting height, the model's own (as the book's), not counted.
-void RaiseToImpactTiming(bool flying, double impactSpeed, const CandidateSpace& space, const ErrorBudget& budget,
+void RaiseToImpactTiming(const PilotImpacts& impacted, const CandidateSpace& space, const ErrorBudget& budget,
                          CandidateEstimate* e) {
-    if (!space.hasContacts || budget.quantity != BudgetQuantity::Position || !e->stable) return;
+    if (!space.hasContacts || !e->stable) return;
+    if (budget.quantity == BudgetQuantity::Energy) {
+        RaiseToOffsetEnergy(impacted.offsetEnergy, e);
+        return;
+    }
+    if (budget.quantity != BudgetQuantity::Position) return;
+    const double impactSpeed = impacted.speed;
     const double timing = 0.5 * impactSpeed * e->model.step;
-    const double offset = flying ? space.contactOffset : 0.0;
+    const double offset = impacted.flying ? space.contactOffset : 0.0;
     const double floor = std::max(timing, offset);
     if (!(floor > e->estimate)) return;
     char text[192];
@@ -507,10 +546,8 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
     result.spanSeconds = span;
     const double bound = budget.bound / settings.safety;
     ChoiceClock clock(settings);
-    double impactSpeed = 0.0;
-    bool flying = false;
-    const std::vector<PlannedSpan> plan =
-        PlanSpans(factory, space, settings, span, &result, &clock, &flying, &impactSpeed);
+    PilotImpacts impacted;
+    const std::vector<PlannedSpan> plan = PlanSpans(factory, space, settings, span, &result, &clock, &impacted);
     for (std::size_t k = 0; k < order.size(); ++k) {
         CandidateEstimate& e = result.candidates[order[k]];
         if (result.chosen >= 0) {
@@ -538,7 +575,7 @@ ModelChoiceResult ChooseModel(const ProbeFactory& factory, const CandidateSpace&
                  &clock);
         result.evaluatedShare += e.share;
         RaiseToFamilyFloor(result.candidates, order, k, space, &e);
-        RaiseToImpactTiming(flying, impactSpeed, space, budget, &e);
+        RaiseToImpactTiming(impacted, space, budget, &e);
         if (e.stable && !e.partial && !e.unreliable && e.estimate <= bound) {
             const double before = result.calibrationWork;
             VerifyOrder(plan[0], span, space, budget, settings, &e, &result.calibrationCpuSeconds,
