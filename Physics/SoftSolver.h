@@ -218,7 +218,7 @@ private:
                  const StepContext& ctx, bool carryOver);
     /// Warm start: contact c (its id set) takes the impulse of old's contact with the same feature id, if any
     /// (true then).
-    bool Inherit(const Pair& old, const Pair& pair, float warmStartFactor, Contact* c) const;
+    inline bool Inherit(const Pair& old, const Pair& pair, float warmStartFactor, Contact* c) const;
     // Collide's two passes over chunk `chunk` of kCandidateChunk candidates (SoftSolverCollide.cpp): the manifolds,
     // counted in chunkCounts; then the chunk's pairs and contacts from its first slots on.
     void FindManifolds(const std::vector<RigidbodyVolume*>& volumes, const std::vector<std::pair<int, int>>& candidates,
