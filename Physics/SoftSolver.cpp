@@ -48,6 +48,22 @@ inline void StoreMovingVelocities(const PairVelocities& x, const SoftContactSolv
     }
 }
 
+/// RigidbodyVolume::InvTensor (R^T diag(1 / I) R, R = ToMat3(q), summed over R's rows k in order, each entry
+/// (d_k a_i) a_j) as rows of four floats, a row at a time in four lanes: the same bits, without computing the body's
+/// principal moments a second time (InvTensor was a fifth of the soft step's setup per body, callgrind).
+inline void WorldInverseInertia(const quat& q, const vec3& inertia, float (*out)[4]) {
+    const mat3 R = ToMat3(q);
+    float d[3];
+    for (int i = 0; i < 3; ++i) d[i] = inertia[i] > 0.0f ? 1.0f / inertia[i] : 0.0f;
+    V4 rows[3] = {Splat(0.0f), Splat(0.0f), Splat(0.0f)};
+    for (int k = 0; k < 3; ++k) {
+        const float* a = R[k];
+        const V4 axis = Make(vec3(a[0], a[1], a[2]));
+        for (int i = 0; i < 3; ++i) rows[i] = rows[i] + Splat(d[k] * a[i]) * axis;
+    }
+    for (int i = 0; i < 3; ++i) std::memcpy(out[i], &rows[i], sizeof(float) * 4);
+}
+
 /// |x| lane by lane (the sign bit cleared, as std::fabs).
 inline simd4::Float4 Abs(simd4::Float4 x) {
     using Bits = decltype(simd4::Float4{} < simd4::Float4{});
@@ -227,16 +243,15 @@ void SoftContactSolver::LoadBody(const RigidbodyVolume& body, const StepContext&
     st.v = body.velocity;
     st.w = body.angVel;
     bs.invMass = body.InvMass();
-    const mat3 invI = body.InvTensor();
-    for (int r = 0; r < 3; ++r) {
-        for (int k = 0; k < 3; ++k) bs.invI[r][k] = invI[r][k];
-        bs.invI[r][3] = 0.0f;
-    }
     bs.inertia = body.LocalInertia();
+    WorldInverseInertia(body.orientation, bs.inertia, bs.invI);
     bs.isotropic = bs.inertia.x == bs.inertia.y && bs.inertia.y == bs.inertia.z;
     // The book's force model: forces = gravity * mass (ApplyForces), plus any torque the body carries.
     bs.gravity = body.gravity;
-    bs.angularAccel = Mul(body.torques, invI);
+    const vec3& t = body.torques;
+    const float(*m)[4] = bs.invI;  // Mul(torques, InvTensor()), from the rows
+    bs.angularAccel = {t.x * m[0][0] + t.y * m[1][0] + t.z * m[2][0], t.x * m[0][1] + t.y * m[1][1] + t.z * m[2][1],
+                       t.x * m[0][2] + t.y * m[1][2] + t.z * m[2][2]};
     bs.retention = body.StepRetention(ctx.h);
     bs.epsilon = body.StepVelocityEpsilon(ctx.h);
 }
