@@ -3,6 +3,7 @@
 // the step's threads, each chunk writing only its own slots (docs/threads.md).
 #include <algorithm>
 #include <cmath>
+#include <new>
 
 #include "Physics/Geometry/ContactManifold.h"
 #include "Physics/RigidbodyVolume.h"
@@ -180,8 +181,8 @@ void SoftContactSolver::MakePairs(const std::vector<RigidbodyVolume*>& volumes,
 
         for (std::size_t k = 0; k < pair.count; ++k) {
             const ManifoldPoint& mp = manifold.points[k];
-            Contact& c = contacts[nextContact++];
-            c = Contact();
+            // A new Contact made in its slot (assigning a temporary one zeroed it on the stack and copied it).
+            Contact& c = *new (&contacts[nextContact++]) Contact();
             c.rA = mp.point - sim[pair.a].p;
             c.rB = mp.point - sim[pair.b].p;
             c.separation = mp.separation;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
+#include <new>
 
 #include "Physics/JobPool.h"
 #include "Physics/SoftContactKernel.h"
@@ -76,8 +77,8 @@ void SoftContactSolver::BuildBatches(const Softness& softness, const Softness& s
     batches.resize(lanes.size());
     ForEachChunk(jobs, lanes.size(), kBatchChunk, [&](std::size_t begin, std::size_t end) {
         for (std::size_t k = begin; k < end; ++k) {
-            batches[k] = WideBatch();
-            FillBatch(lanes[k], softness, staticSoftness, &batches[k]);
+            // Made in its slot (assigning a temporary one zeroed it on the stack and copied it).
+            FillBatch(lanes[k], softness, staticSoftness, new (&batches[k]) WideBatch());
         }
     });
 }
