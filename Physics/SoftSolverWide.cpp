@@ -206,12 +206,17 @@ void SoftContactSolver::WideSolve(const Block& block, float invH, float maxPusho
         WideBatch& batch = batches[b];
         if (updateSeparations) UpdateBatchSeparations(batch);
         WideVelocities s = Gather(state, batch);
-        // Friction in the relax pass only, and before the normal rows, as in SolvePair.
-        if (!useBias)
+        // Friction in the relax pass only, and before the normal rows, as in SolvePair (with the bias flag a
+        // constant in each branch, as there).
+        if (useBias) {
+            for (int k = 0; k < batch.pointCount; ++k)
+                SolveNormal(s, batch.invMassA, batch.invMassB, batch.n, batch, pass, true, batch.points[k]);
+        } else {
             for (int k = 0; k < batch.pointCount; ++k)
                 SolveFriction(s, batch.invMassA, batch.invMassB, batch.t1, batch.t2, batch.friction, batch.points[k]);
-        for (int k = 0; k < batch.pointCount; ++k)
-            SolveNormal(s, batch.invMassA, batch.invMassB, batch.n, batch, pass, useBias, batch.points[k]);
+            for (int k = 0; k < batch.pointCount; ++k)
+                SolveNormal(s, batch.invMassA, batch.invMassB, batch.n, batch, pass, false, batch.points[k]);
+        }
         Scatter(state, batch, s);
     }
 }
