@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 
 #include "Physics/Geometry/ContactManifold.h"
@@ -234,8 +235,8 @@ void SoftContactSolver::LoadBody(const RigidbodyVolume& body, const StepContext&
         bs.invMass = 0.0f;
         for (auto& row : bs.invI)
             for (float& f : row) f = 0.0f;
-        bs.gravity = vec3();
-        bs.angularAccel = vec3();
+        bs.gravityStep = vec3();
+        bs.torqueStep = vec3();
         bs.retention = 1.0f;
         bs.epsilon = 0.0f;
         return;
@@ -247,11 +248,14 @@ void SoftContactSolver::LoadBody(const RigidbodyVolume& body, const StepContext&
     WorldInverseInertia(body.orientation, bs.inertia, bs.invI);
     bs.isotropic = bs.inertia.x == bs.inertia.y && bs.inertia.y == bs.inertia.z;
     // The book's force model: forces = gravity * mass (ApplyForces), plus any torque the body carries.
-    bs.gravity = body.gravity;
+    // Times h once here rather than every substep (the same products).
+    bs.gravityStep = body.gravity * ctx.h;
     const vec3& t = body.torques;
     const float(*m)[4] = bs.invI;  // Mul(torques, InvTensor()), from the rows
-    bs.angularAccel = {t.x * m[0][0] + t.y * m[1][0] + t.z * m[2][0], t.x * m[0][1] + t.y * m[1][1] + t.z * m[2][1],
-                       t.x * m[0][2] + t.y * m[1][2] + t.z * m[2][2]};
+    const vec3 angularAccel = {t.x * m[0][0] + t.y * m[1][0] + t.z * m[2][0],
+                               t.x * m[0][1] + t.y * m[1][1] + t.z * m[2][1],
+                               t.x * m[0][2] + t.y * m[1][2] + t.z * m[2][2]};
+    bs.torqueStep = angularAccel * ctx.h;
     bs.retention = body.StepRetention(ctx.h);
     bs.epsilon = body.StepVelocityEpsilon(ctx.h);
 }
@@ -324,10 +328,13 @@ void SoftContactSolver::PreparePair(const Pair& pair) {
     }
 }
 
-void SoftContactSolver::IntegrateVelocities(const StepContext& ctx, const Block& block, bool warm) {
+static_assert(offsetof(SoftContactSolver::BodySim, gravityStep) % 16 == 0 &&
+                  offsetof(SoftContactSolver::BodySim, torqueStep) % 16 == 0,
+              "BodySim's gravityStep and torqueStep each fill 16 bytes with their padding (Load4)");
+
+void SoftContactSolver::IntegrateVelocities(const StepContext& /*ctx*/, const Block& block, bool warm) {
     using simd4::Float4;
-    const Float4 h = simd4::Wide(ctx.h), zero = simd4::Wide(0.0f);
-    auto padded = [](const vec3& v) { return Float4{v.x, v.y, v.z, 0.0f}; };
+    const Float4 zero = simd4::Wide(0.0f);
     auto store = [](vec3& to, Float4 v) { std::memcpy(&to.x, &v, sizeof v); };
     for (std::size_t k = block.bodyBegin; k < block.bodyEnd; ++k) {
         const std::size_t i = static_cast<std::size_t>(graph.BlockBodies()[k]);
@@ -336,8 +343,8 @@ void SoftContactSolver::IntegrateVelocities(const StepContext& ctx, const Block&
         // Semi-implicit Euler, then the body's velocity retention and threshold per substep (RigidbodyVolume), a
         // lane per component (the vec3 operations' bits; the padding lanes stay 0).
         const Float4 retention = simd4::Wide(bs.retention);
-        Float4 v = (simd4::Load4(st.v) + padded(bs.gravity) * h) * retention;
-        Float4 w = (simd4::Load4(st.w) + padded(bs.angularAccel) * h) * retention;
+        Float4 v = (simd4::Load4(st.v) + simd4::Load4(bs.gravityStep)) * retention;
+        Float4 w = (simd4::Load4(st.w) + simd4::Load4(bs.torqueStep)) * retention;
         if (bs.epsilon > 0.0f) {
             const Float4 epsilon = simd4::Wide(bs.epsilon);
             v = Select(Abs(v) < epsilon, zero, v);
