@@ -403,9 +403,13 @@ void SoftContactSolver::SmallTurns(const int* bodies, int count, float h) {
     using simd4::Float4;
     // The lanes' w, q and q0 as rows of four floats, transposed (data moves only).
     const Float4 none = {0.0f, 0.0f, 0.0f, 0.0f}, identity = {0.0f, 0.0f, 0.0f, 1.0f};
-    Float4 W[4] = {none, none, none, none}, Q[4] = {identity, identity, identity, identity};
-    Float4 Q0[4] = {identity, identity, identity, identity};
-    for (int l = 0; l < count; ++l) {
+    Float4 W[4], Q[4], Q0[4];
+    for (int l = 0; l < 4; ++l) {
+        if (l >= count) {
+            W[l] = none;
+            Q[l] = Q0[l] = identity;
+            continue;
+        }
         const std::size_t i = static_cast<std::size_t>(bodies[l]);
         W[l] = simd4::Load4(state[i].w);
         std::memcpy(&Q[l], &sim[i].q.x, sizeof(Float4));
