@@ -51,7 +51,7 @@ inline void StoreMovingVelocities(const PairVelocities& x, const SoftContactSolv
 
 /// RigidbodyVolume::InvTensor (R^T diag(1 / I) R, R = ToMat3(q), summed over R's rows k in order, each entry
 /// (d_k a_i) a_j) as rows of four floats, a row at a time in four lanes: the same bits, without computing the body's
-/// principal moments a second time (InvTensor was a fifth of the soft step's setup per body, callgrind).
+/// principal moments a second time (InvTensor was half of LoadBody's instructions, callgrind).
 inline void WorldInverseInertia(const quat& q, const vec3& inertia, float (*out)[4]) {
     const mat3 R = ToMat3(q);
     float d[3];

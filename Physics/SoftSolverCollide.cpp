@@ -52,7 +52,7 @@ void CollideVolumes(const RigidbodyVolume& a, const RigidbodyVolume& b, float ma
 
 }  // namespace
 
-// Inlined into MakePairs, its one caller (its calls were a tenth of the collide stage's instructions, callgrind).
+// Inlined into MakePairs, its one caller (the calls were 3 % of the collide stage's instructions, callgrind).
 __attribute__((always_inline)) inline bool SoftContactSolver::Inherit(const Pair& old, const Pair& pair,
                                                                       float warmStartFactor, Contact* c) const {
     const Contact* match = nullptr;

@@ -17,7 +17,7 @@ inline int MovingBody(const std::pair<int, int>& ends, const Moves& moves) {
 
 void SoftContactGraph::Build(bool colouring, const Ends& ends, const Moves& moves) {
     // The graph is a function of its inputs alone: a resting world, whose pairs and moving bodies are last step's,
-    // keeps last step's graph (a tenth of a 10-box tower's step setup, callgrind). Capacities are kept from step to
+    // keeps last step's graph (1.5 % of a 10-box tower's step, callgrind). Capacities are kept from step to
     // step, so the steady state allocates nothing.
     if (built && colouring == builtColouring && ends == builtEnds && moves == builtMoves) return;
     built = true;
