@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 
 #include "Physics/Geometry/ContactManifold.h"
@@ -46,6 +47,22 @@ inline void StoreMovingVelocities(const PairVelocities& x, const SoftContactSolv
         Store(state[static_cast<std::size_t>(pair.b)].v, x.vB);
         Store(state[static_cast<std::size_t>(pair.b)].w, x.wB);
     }
+}
+
+/// RigidbodyVolume::InvTensor (R^T diag(1 / I) R, R = ToMat3(q), summed over R's rows k in order, each entry
+/// (d_k a_i) a_j) as rows of four floats, a row at a time in four lanes: the same bits, without computing the body's
+/// principal moments a second time (InvTensor was half of LoadBody's instructions, callgrind).
+inline void WorldInverseInertia(const quat& q, const vec3& inertia, float (*out)[4]) {
+    const mat3 R = ToMat3(q);
+    float d[3];
+    for (int i = 0; i < 3; ++i) d[i] = inertia[i] > 0.0f ? 1.0f / inertia[i] : 0.0f;
+    V4 rows[3] = {Splat(0.0f), Splat(0.0f), Splat(0.0f)};
+    for (int k = 0; k < 3; ++k) {
+        const float* a = R[k];
+        const V4 axis = Make(vec3(a[0], a[1], a[2]));
+        for (int i = 0; i < 3; ++i) rows[i] = rows[i] + Splat(d[k] * a[i]) * axis;
+    }
+    for (int i = 0; i < 3; ++i) std::memcpy(out[i], &rows[i], sizeof(float) * 4);
 }
 
 /// |x| lane by lane (the sign bit cleared, as std::fabs).
@@ -218,8 +235,8 @@ void SoftContactSolver::LoadBody(const RigidbodyVolume& body, const StepContext&
         bs.invMass = 0.0f;
         for (auto& row : bs.invI)
             for (float& f : row) f = 0.0f;
-        bs.gravity = vec3();
-        bs.angularAccel = vec3();
+        bs.gravityStep = vec3();
+        bs.torqueStep = vec3();
         bs.retention = 1.0f;
         bs.epsilon = 0.0f;
         return;
@@ -227,16 +244,18 @@ void SoftContactSolver::LoadBody(const RigidbodyVolume& body, const StepContext&
     st.v = body.velocity;
     st.w = body.angVel;
     bs.invMass = body.InvMass();
-    const mat3 invI = body.InvTensor();
-    for (int r = 0; r < 3; ++r) {
-        for (int k = 0; k < 3; ++k) bs.invI[r][k] = invI[r][k];
-        bs.invI[r][3] = 0.0f;
-    }
     bs.inertia = body.LocalInertia();
+    WorldInverseInertia(body.orientation, bs.inertia, bs.invI);
     bs.isotropic = bs.inertia.x == bs.inertia.y && bs.inertia.y == bs.inertia.z;
     // The book's force model: forces = gravity * mass (ApplyForces), plus any torque the body carries.
-    bs.gravity = body.gravity;
-    bs.angularAccel = Mul(body.torques, invI);
+    // Times h once here rather than every substep (the same products).
+    bs.gravityStep = body.gravity * ctx.h;
+    const vec3& t = body.torques;
+    const float(*m)[4] = bs.invI;  // Mul(torques, InvTensor()), from the rows
+    const vec3 angularAccel = {t.x * m[0][0] + t.y * m[1][0] + t.z * m[2][0],
+                               t.x * m[0][1] + t.y * m[1][1] + t.z * m[2][1],
+                               t.x * m[0][2] + t.y * m[1][2] + t.z * m[2][2]};
+    bs.torqueStep = angularAccel * ctx.h;
     bs.retention = body.StepRetention(ctx.h);
     bs.epsilon = body.StepVelocityEpsilon(ctx.h);
 }
@@ -309,10 +328,13 @@ void SoftContactSolver::PreparePair(const Pair& pair) {
     }
 }
 
-void SoftContactSolver::IntegrateVelocities(const StepContext& ctx, const Block& block, bool warm) {
+static_assert(offsetof(SoftContactSolver::BodySim, gravityStep) % 16 == 0 &&
+                  offsetof(SoftContactSolver::BodySim, torqueStep) % 16 == 0,
+              "BodySim's gravityStep and torqueStep each fill 16 bytes with their padding (Load4)");
+
+void SoftContactSolver::IntegrateVelocities(const StepContext& /*ctx*/, const Block& block, bool warm) {
     using simd4::Float4;
-    const Float4 h = simd4::Wide(ctx.h), zero = simd4::Wide(0.0f);
-    auto padded = [](const vec3& v) { return Float4{v.x, v.y, v.z, 0.0f}; };
+    const Float4 zero = simd4::Wide(0.0f);
     auto store = [](vec3& to, Float4 v) { std::memcpy(&to.x, &v, sizeof v); };
     for (std::size_t k = block.bodyBegin; k < block.bodyEnd; ++k) {
         const std::size_t i = static_cast<std::size_t>(graph.BlockBodies()[k]);
@@ -321,8 +343,8 @@ void SoftContactSolver::IntegrateVelocities(const StepContext& ctx, const Block&
         // Semi-implicit Euler, then the body's velocity retention and threshold per substep (RigidbodyVolume), a
         // lane per component (the vec3 operations' bits; the padding lanes stay 0).
         const Float4 retention = simd4::Wide(bs.retention);
-        Float4 v = (simd4::Load4(st.v) + padded(bs.gravity) * h) * retention;
-        Float4 w = (simd4::Load4(st.w) + padded(bs.angularAccel) * h) * retention;
+        Float4 v = (simd4::Load4(st.v) + simd4::Load4(bs.gravityStep)) * retention;
+        Float4 w = (simd4::Load4(st.w) + simd4::Load4(bs.torqueStep)) * retention;
         if (bs.epsilon > 0.0f) {
             const Float4 epsilon = simd4::Wide(bs.epsilon);
             v = Select(Abs(v) < epsilon, zero, v);
@@ -381,9 +403,13 @@ void SoftContactSolver::SmallTurns(const int* bodies, int count, float h) {
     using simd4::Float4;
     // The lanes' w, q and q0 as rows of four floats, transposed (data moves only).
     const Float4 none = {0.0f, 0.0f, 0.0f, 0.0f}, identity = {0.0f, 0.0f, 0.0f, 1.0f};
-    Float4 W[4] = {none, none, none, none}, Q[4] = {identity, identity, identity, identity};
-    Float4 Q0[4] = {identity, identity, identity, identity};
-    for (int l = 0; l < count; ++l) {
+    Float4 W[4], Q[4], Q0[4];
+    for (int l = 0; l < 4; ++l) {
+        if (l >= count) {
+            W[l] = none;
+            Q[l] = Q0[l] = identity;
+            continue;
+        }
         const std::size_t i = static_cast<std::size_t>(bodies[l]);
         W[l] = simd4::Load4(state[i].w);
         std::memcpy(&Q[l], &sim[i].q.x, sizeof(Float4));
@@ -492,12 +518,16 @@ void SoftContactSolver::SolvePair(const Pair& pair, const Softness& softness, fl
     // comes before the normal rows, so the pass ends on non-penetration: friction's lever arms change the corners'
     // normal speeds, and solved last it left a cube landing flat at 5 m/s rising at 0.14 m/s (at 6 substeps; 0.008 m/s
     // this way round: SoftSolver.SpeculativeContactStopsFastBodyWithoutPopping).
-    if (!useBias)
-        for (std::size_t k = pair.first; k < pair.first + pair.count; ++k)
-            SolveFriction(x, invA, invB, t1, t2, pair.friction, contacts[k]);
+    // The two passes as two loops, each with its bias flag a constant: the kernel's tests of it fold away.
     const PassLanes<float> pass = {invH, slop, -maxPushout};
-    for (std::size_t k = pair.first; k < pair.first + pair.count; ++k)
-        SolveNormal(x, invA, invB, n, softness, pass, useBias, contacts[k]);
+    const std::size_t end = pair.first + pair.count;
+    if (useBias) {
+        for (std::size_t k = pair.first; k < end; ++k) SolveNormal(x, invA, invB, n, softness, pass, true, contacts[k]);
+    } else {
+        for (std::size_t k = pair.first; k < end; ++k) SolveFriction(x, invA, invB, t1, t2, pair.friction, contacts[k]);
+        for (std::size_t k = pair.first; k < end; ++k)
+            SolveNormal(x, invA, invB, n, softness, pass, false, contacts[k]);
+    }
     StoreMovingVelocities(x, pair, moving, state);
 }
 

@@ -99,12 +99,15 @@ public:
     };
     /// Per-body constants of the step and its pose.
     struct alignas(16) BodySim {
-        float invI[3][4];   // world inverse inertia at the start of the step (zero for static), rows padded to four
-        vec3 p;             // position, m
-        quat q, q0;         // orientation now and at the start of the step
-        vec3 inertia;       // principal moments, kg m^2 (body frame): torque-free rotation keeps L (AdvanceRotation)
-        vec3 gravity;       // m/s^2 (zero for static)
-        vec3 angularAccel;  // I^-1 torque, rad/s^2
+        float invI[3][4];  // world inverse inertia at the start of the step (zero for static), rows padded to four
+        // A substep's velocity changes from the forces, padded to 16 bytes (IntegrateVelocities loads them whole):
+        vec3 gravityStep;  // g h, m/s (zero for static)
+        float padG = 0.0f;
+        vec3 torqueStep;  // I^-1 torque h, rad/s
+        float padT = 0.0f;
+        vec3 p;        // position, m
+        quat q, q0;    // orientation now and at the start of the step
+        vec3 inertia;  // principal moments, kg m^2 (body frame): torque-free rotation keeps L (AdvanceRotation)
         float invMass = 0.0f;
         float retention = 1.0f;  // velocity kept per substep (FactorOverStep of the body's retention)
         float epsilon = 0.0f;    // velocity components below this are zeroed per substep
@@ -218,7 +221,7 @@ private:
                  const StepContext& ctx, bool carryOver);
     /// Warm start: contact c (its id set) takes the impulse of old's contact with the same feature id, if any
     /// (true then).
-    bool Inherit(const Pair& old, const Pair& pair, float warmStartFactor, Contact* c) const;
+    inline bool Inherit(const Pair& old, const Pair& pair, float warmStartFactor, Contact* c) const;
     // Collide's two passes over chunk `chunk` of kCandidateChunk candidates (SoftSolverCollide.cpp): the manifolds,
     // counted in chunkCounts; then the chunk's pairs and contacts from its first slots on.
     void FindManifolds(const std::vector<RigidbodyVolume*>& volumes, const std::vector<std::pair<int, int>>& candidates,

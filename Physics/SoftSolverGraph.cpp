@@ -16,7 +16,14 @@ inline int MovingBody(const std::pair<int, int>& ends, const Moves& moves) {
 }  // namespace
 
 void SoftContactGraph::Build(bool colouring, const Ends& ends, const Moves& moves) {
-    // Capacities are kept from step to step, so the steady state allocates nothing.
+    // The graph is a function of its inputs alone: a resting world, whose pairs and moving bodies are last step's,
+    // keeps last step's graph (1.5 % of a 10-box tower's step, callgrind). Capacities are kept from step to
+    // step, so the steady state allocates nothing.
+    if (built && colouring == builtColouring && ends == builtEnds && moves == builtMoves) return;
+    built = true;
+    builtColouring = colouring;
+    builtEnds = ends;
+    builtMoves = moves;
     const std::size_t n = moves.size();
     blocks.clear();
     blockBodies.clear();

@@ -51,6 +51,11 @@ private:
     void Colour(std::size_t begin, std::size_t end, const std::vector<std::pair<int, int>>& ends,
                 const std::vector<unsigned char>& moves);
 
+    // The inputs of the last Build (its result is kept while they stay the same).
+    bool built = false, builtColouring = false;
+    std::vector<std::pair<int, int>> builtEnds;
+    std::vector<unsigned char> builtMoves;
+
     std::vector<Block> blocks;
     std::vector<int> blockBodies;
     std::vector<Batch> batches;

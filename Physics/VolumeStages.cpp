@@ -101,6 +101,8 @@ void VolumeStages::FindGrownPairs(const StepContext& ctx, const unsigned char* a
         const float grow = margin + Magnitude(volumes[i]->velocity) * ctx.dt;
         g.min -= vec3(grow, grow, grow);
         g.max += vec3(grow, grow, grow);
+        g.hasVolume = volumes[i]->HasVolume();
+        g.dynamic = volumes[i]->mass > 0.0f;
     }
     auto near = [&](std::size_t i, std::size_t j) {
         const GrownBounds& a = smallWorldBounds[i];
@@ -109,10 +111,16 @@ void VolumeStages::FindGrownPairs(const StepContext& ctx, const unsigned char* a
             if (a.min[k] > b.max[k] || b.min[k] > a.max[k]) return false;
         return true;
     };
-    for (std::size_t i = 0; i < count; ++i)
-        for (std::size_t j = i + 1; j < count; ++j)
-            if (CanInteract(*volumes[i], *volumes[j]) && (active == nullptr || active[i] || active[j]) && near(i, j))
+    // CanInteract from the flags kept above (the same pairs in the same order).
+    for (std::size_t i = 0; i < count; ++i) {
+        const GrownBounds& a = smallWorldBounds[i];
+        if (!a.hasVolume) continue;
+        for (std::size_t j = i + 1; j < count; ++j) {
+            const GrownBounds& b = smallWorldBounds[j];
+            if (b.hasVolume && (a.dynamic || b.dynamic) && (active == nullptr || active[i] || active[j]) && near(i, j))
                 candidatePairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
+        }
+    }
 }
 
 void VolumeStages::ApplyVolumeForces(const StepContext& ctx, const Islands* sleep) {

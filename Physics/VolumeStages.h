@@ -81,6 +81,7 @@ private:
     Broadphase broadphase;  // used only from settings.broadphaseMinVolumes volumes up
     struct GrownBounds {
         vec3 min, max;
+        bool hasVolume = false, dynamic = false;  // CanInteract's two tests of the body, once per search
     };
     std::vector<GrownBounds> smallWorldBounds;  // soft step below broadphaseMinVolumes: grown boxes, capacity reused
 };
