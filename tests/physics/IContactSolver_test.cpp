@@ -18,12 +18,15 @@ namespace {
 
 constexpr float kDt = 1.0f / 60.0f;
 
-/// Ground, then three unit boxes resting on each other (0.01 m gaps), on one thread.
-void BuildColumn(TestWorld* w) {
+/// Ground, then three unit boxes resting on each other (0.01 m gaps), on one thread, solved by `kind`; `steps`
+/// steps of kDt run.
+void BuildColumn(TestWorld* w, ContactSolver kind = ContactSolver::Book, int steps = 0) {
     w->Add(GroundSpec(vec3(10.0f, 1.0f, 10.0f)));
     for (int i = 0; i < 3; ++i) w->Add(BoxSpec(vec3(0.0f, 1.01f + 2.01f * static_cast<float>(i), 0.0f)));
     w->system.settings.threads = 1;
+    w->system.settings.contactSolver = kind;
     w->Join();
+    if (steps > 0) w->Step(kDt, steps);
 }
 
 /// Position, velocity, angular velocity and orientation of every volume of `world`, as raw bytes.
@@ -39,9 +42,7 @@ TEST(IContactSolver, EachSolverSettingIsSteppedByTheSolverOfThatKind) {
     for (ContactSolver kind : kAllContactSolvers) {
         SCOPED_TRACE(ToString(kind));
         TestWorld w;
-        BuildColumn(&w);
-        w.system.settings.contactSolver = kind;
-        w.Step(kDt, 10);
+        BuildColumn(&w, kind, 10);
         EXPECT_EQ(w.system.Solver().Kind(), kind);
         // Only the solver in use holds contacts; the book's keeps none, and only the soft one substeps every step.
         EXPECT_EQ(w.system.AccumulatedSolver().ContactCount() > 0, kind == ContactSolver::Accumulated);
@@ -53,9 +54,7 @@ TEST(IContactSolver, EachSolverSettingIsSteppedByTheSolverOfThatKind) {
 
 TEST(IContactSolver, TheSolverObjectIsMadeWhenTheSettingChangesNotEveryStep) {
     TestWorld w;
-    BuildColumn(&w);
-    w.system.settings.contactSolver = ContactSolver::Soft;
-    w.Step(kDt);
+    BuildColumn(&w, ContactSolver::Soft, 1);
     const IContactSolver* soft = &w.system.Solver();
     w.Step(kDt, 5);
     EXPECT_EQ(&w.system.Solver(), soft) << "the same setting keeps the same object";
@@ -72,9 +71,7 @@ TEST(IContactSolver, AWorldSwitchedAwayAndBackStepsAsAFreshWorldWithItsBodies) {
     for (ContactSolver kind : kAllContactSolvers) {
         SCOPED_TRACE(ToString(kind));
         TestWorld w;
-        BuildColumn(&w);
-        w.system.settings.contactSolver = kind;
-        w.Step(kDt, 20);
+        BuildColumn(&w, kind, 20);
         // Twenty steps on another solver, then back.
         w.system.settings.contactSolver =
             kind == ContactSolver::Soft ? ContactSolver::Accumulated : ContactSolver::Soft;
