@@ -21,12 +21,6 @@ constexpr float kPi = 3.14159265358979f;
 /// Bodies per job of the per-body loops: fixed, never derived from the thread count (docs/threads.md).
 constexpr std::size_t kBodyChunk = 512;
 
-/// v M in the row-vector convention (MultiplyVector), inline for the solver's inner loops.
-inline vec3 Mul(const vec3& v, const mat3& m) {
-    return {v.x * m[0][0] + v.y * m[1][0] + v.z * m[2][0], v.x * m[0][1] + v.y * m[1][1] + v.z * m[2][1],
-            v.x * m[0][2] + v.y * m[1][2] + v.z * m[2][2]};
-}
-
 /// Below this square of half a substep's turn (x = |w| h / 2 < 0.1 rad), SmallTurns replaces Integrate: Integrate
 /// (Math/quaternion.h: q' = exp(w h / 2) q, normalised) for an isotropic body's small turn, with (h / 2) sin x / x
 /// and cos x of the half angle from their Taylor series to x^6 and x^8 (the first terms left out are below 3e-15

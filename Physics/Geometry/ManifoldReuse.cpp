@@ -15,10 +15,8 @@ inline vec3 ToLocal(const vec3& v, const vec3 axis[3]) {
     return vec3(Dot(v, axis[0]), Dot(v, axis[1]), Dot(v, axis[2]));
 }
 
-/// Local v with the frame's world axes back to world coordinates.
-inline vec3 ToWorld(const vec3& v, const vec3 axis[3]) { return axis[0] * v.x + axis[1] * v.y + axis[2] * v.z; }
-
-/// ToWorld in four lanes: (axis0 v.x + axis1 v.y) + axis2 v.z, lane by lane.
+/// Local v with the frame's world axes back to world coordinates, in four lanes: (axis0 v.x + axis1 v.y) + axis2 v.z,
+/// lane by lane.
 inline simd4::V4 ToWorld4(simd4::V4 v, const simd4::V4 axis[3]) {
     return axis[0] * simd4::Broadcast<0>(v) + axis[1] * simd4::Broadcast<1>(v) + axis[2] * simd4::Broadcast<2>(v);
 }
