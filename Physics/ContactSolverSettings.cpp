@@ -1,37 +1,17 @@
 // The contact solver ids (ContactSolverSettings.h).
 #include "Physics/ContactSolverSettings.h"
 
+#include "Physics/EnumIds.h"
+
 namespace {
 
-struct IdName {
-    ContactSolver solver;
-    const char* id;
-};
-constexpr IdName kIds[] = {
+constexpr EnumId<ContactSolver> kIds[] = {
     {ContactSolver::Book, "book"}, {ContactSolver::Accumulated, "accumulated"}, {ContactSolver::Soft, "soft"}};
 
 }  // namespace
 
-const char* ToString(ContactSolver solver) {
-    for (const IdName& e : kIds)
-        if (e.solver == solver) return e.id;
-    return "unknown";
-}
+const char* ToString(ContactSolver solver) { return IdOf(kIds, solver); }
 
-bool ParseContactSolver(const std::string& text, ContactSolver* out) {
-    for (const IdName& e : kIds)
-        if (text == e.id) {
-            if (out != nullptr) *out = e.solver;
-            return true;
-        }
-    return false;
-}
+bool ParseContactSolver(const std::string& text, ContactSolver* out) { return ParseId(kIds, text, out); }
 
-std::string ContactSolverIds() {
-    std::string ids;
-    for (const IdName& e : kIds) {
-        if (!ids.empty()) ids += ", ";
-        ids += e.id;
-    }
-    return ids;
-}
+std::string ContactSolverIds() { return JoinIds(kIds); }

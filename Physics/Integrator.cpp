@@ -2,20 +2,17 @@
 // library's vec3 operators are out-of-line calls.
 #include "Physics/Integrator.h"
 
+#include "Physics/EnumIds.h"
 #include "Physics/Particle.h"
 #include "Physics/StepFactor.h"
 
 namespace {
 
-struct IdName {
-    Integrator integrator;
-    const char* id;
-};
-constexpr IdName kIds[] = {{Integrator::ExplicitEuler, "explicit-euler"},
-                           {Integrator::SemiImplicitEuler, "euler"},
-                           {Integrator::VelocityVerlet, "velocity-verlet"},
-                           {Integrator::PositionVerlet, "verlet"},
-                           {Integrator::RK4, "rk4"}};
+constexpr EnumId<Integrator> kIds[] = {{Integrator::ExplicitEuler, "explicit-euler"},
+                                       {Integrator::SemiImplicitEuler, "euler"},
+                                       {Integrator::VelocityVerlet, "velocity-verlet"},
+                                       {Integrator::PositionVerlet, "verlet"},
+                                       {Integrator::RK4, "rk4"}};
 
 inline vec3 Add(const vec3& a, const vec3& b) { return vec3(a.x + b.x, a.y + b.y, a.z + b.z); }
 inline vec3 Scale(const vec3& a, float s) { return vec3(a.x * s, a.y * s, a.z * s); }
@@ -25,29 +22,11 @@ inline bool SameBits(const vec3& a, const vec3& b) { return a.x == b.x && a.y ==
 
 }  // namespace
 
-const char* ToString(Integrator integrator) {
-    for (const IdName& e : kIds)
-        if (e.integrator == integrator) return e.id;
-    return "unknown";
-}
+const char* ToString(Integrator integrator) { return IdOf(kIds, integrator); }
 
-bool ParseIntegrator(const std::string& text, Integrator* out) {
-    for (const IdName& e : kIds)
-        if (text == e.id) {
-            if (out != nullptr) *out = e.integrator;
-            return true;
-        }
-    return false;
-}
+bool ParseIntegrator(const std::string& text, Integrator* out) { return ParseId(kIds, text, out); }
 
-std::string IntegratorIds() {
-    std::string ids;
-    for (const IdName& e : kIds) {
-        if (!ids.empty()) ids += ", ";
-        ids += e.id;
-    }
-    return ids;
-}
+std::string IntegratorIds() { return JoinIds(kIds); }
 
 int ForceEvaluations(Integrator integrator) {
     switch (integrator) {

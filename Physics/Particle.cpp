@@ -5,6 +5,7 @@
 #include <cfloat>
 #include <cmath>
 
+#include "Physics/EnumIds.h"
 #include "Physics/StepFactor.h"
 
 namespace {
@@ -93,16 +94,13 @@ inline bool SegmentMissesBounds(const vec3& a, const vec3& b, const ParticleCons
 
 }  // namespace
 
-const char* ToString(ParticleContact contact) { return contact == ParticleContact::Skin ? "skin" : "book"; }
+namespace {
+constexpr EnumId<ParticleContact> kContactIds[] = {{ParticleContact::Book, "book"}, {ParticleContact::Skin, "skin"}};
+}  // namespace
 
-bool ParseParticleContact(const std::string& text, ParticleContact* out) {
-    for (ParticleContact c : {ParticleContact::Book, ParticleContact::Skin})
-        if (text == ToString(c)) {
-            *out = c;
-            return true;
-        }
-    return false;
-}
+const char* ToString(ParticleContact contact) { return IdOf(kContactIds, contact); }
+
+bool ParseParticleContact(const std::string& text, ParticleContact* out) { return ParseId(kContactIds, text, out); }
 
 ParticleConstraint PrepareParticleConstraint(const OBB& box, ParticleContact contact) {
     ParticleConstraint c;

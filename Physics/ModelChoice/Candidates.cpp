@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "Physics/EnumIds.h"
 #include "Physics/ModelChoice/ModelChoice.h"
 
 namespace {
@@ -16,27 +17,15 @@ double PassWork(const ModelCandidate& c) {
 
 }  // namespace
 
-const char* ToString(BudgetQuantity quantity) {
-    switch (quantity) {
-        case BudgetQuantity::Position:
-            return "position";
-        case BudgetQuantity::Energy:
-            return "energy";
-        case BudgetQuantity::Constraint:
-            return "constraint";
-    }
-    return "?";
-}
+namespace {
+constexpr EnumId<BudgetQuantity> kQuantityIds[] = {{BudgetQuantity::Position, "position"},
+                                                   {BudgetQuantity::Energy, "energy"},
+                                                   {BudgetQuantity::Constraint, "constraint"}};
+}  // namespace
 
-bool ParseBudgetQuantity(const std::string& text, BudgetQuantity* out) {
-    for (BudgetQuantity q : {BudgetQuantity::Position, BudgetQuantity::Energy, BudgetQuantity::Constraint}) {
-        if (text == ToString(q)) {
-            *out = q;
-            return true;
-        }
-    }
-    return false;
-}
+const char* ToString(BudgetQuantity quantity) { return IdOf(kQuantityIds, quantity); }
+
+bool ParseBudgetQuantity(const std::string& text, BudgetQuantity* out) { return ParseId(kQuantityIds, text, out); }
 
 const char* BudgetUnit(BudgetQuantity quantity) { return quantity == BudgetQuantity::Energy ? "(relative)" : "m"; }
 
