@@ -743,14 +743,19 @@ namespace {
 
 double Energy(const FileScene& s) { return WorldEnergy(s.System()); }
 
+/// `d` run with auto at a relative energy budget `bound` for `frames` host frames; *drift is |E - E0| / E0 at the end.
+AutoRun RunAutoForEnergy(const SceneDescription& d, double bound, int frames, double* drift) {
+    const double start = Energy(FileScene(d));
+    EXPECT_GT(start, 0.0);
+    return RunAuto(d, Budget(bound, 1), frames,
+                   [&](const FileScene& s, double) { *drift = std::fabs(Energy(s) - start) / start; });
+}
+
 TEST(AutoModel, EnergyBudgetBoundsTheDrift) {
     const SceneDescription d = Oscillator();
-    const double start = Energy(FileScene(d));
-    ASSERT_GT(start, 0.0);
     for (double bound : {1e-2, 1e-3}) {
         double drift = 0.0;
-        const AutoRun run = RunAuto(d, Budget(bound, 1), 334,
-                                    [&](const FileScene& s, double) { drift = std::fabs(Energy(s) - start) / start; });
+        const AutoRun run = RunAutoForEnergy(d, bound, 334, &drift);
         ASSERT_TRUE(run.chosen) << run.error;
         EXPECT_LE(drift, bound) << "budget " << bound << ": " << run.model.Describe(true, false);
     }
@@ -764,12 +769,9 @@ TEST(AutoModel, AnEnergyBudgetIsNotPromisedCloserThanTheContactOffsetsEnergy) {
     SceneDescription d = DroppedParticle();
     d.bodies.back().position = vec3(0, 2, 0);
     d.bodies.back().restitution = 1.0f;
-    const double start = Energy(FileScene(d));
-    ASSERT_GT(start, 0.0);
     for (double bound : {2e-4, 1e-2}) {
         double drift = 0.0;
-        const AutoRun run = RunAuto(d, Budget(bound, 1), 60,
-                                    [&](const FileScene& s, double) { drift = std::fabs(Energy(s) - start) / start; });
+        const AutoRun run = RunAutoForEnergy(d, bound, 60, &drift);
         if (bound > 2.0 * 0.0015) {
             ASSERT_TRUE(run.chosen) << run.error;
         }
