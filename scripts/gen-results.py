@@ -349,7 +349,29 @@ def headline(root, peers=None):
                     "[results](docs/results.md#an-error-budget-instead-of-a-step-modelauto), [method](docs/model-"
                     "choice-validation.md) |" % (len(set(r["problem"] for r in auto)), within, len(answered),
                                               len(auto) - len(answered)))
+    seeded = headline_seeds(root)
+    if seeded:
+        rows.append("| `model=auto` on seeded problems nobody tuned | %s | [method and per-seed table](docs/model-choice-"
+                    "validation.md#problems-nobody-tuned) |" % seeded)
     return rows
+
+
+def headline_seeds(root):
+    """One line over every seed's CSV in docs/sweep/auto-validate-seeds/ (bench/model_choice/auto_validate.py)."""
+    folder = os.path.join(root, "docs", "sweep", "auto-validate-seeds")
+    runs = [read_rows(os.path.join(folder, f)) for f in sorted(os.listdir(folder)) if f.endswith(".csv")] \
+        if os.path.isdir(folder) else []
+    runs = [r for r in runs if r]
+    if not runs:
+        return ""
+    refused, within, over = [], [], 0
+    for rows in runs:
+        ran = [r for r in rows if r["refused"] != "1" and r["error"] not in ("", "-")]
+        refused.append(100.0 * (len(rows) - len(ran)) / len(rows))
+        within.append(100.0 * sum(1 for r in ran if r["within"] == "1") / max(len(ran), 1))
+        over += sum(1 for r in ran if float(r["error_over_budget"]) > 2.0)
+    return ("%d seeds of %d instances: %.1f–%.1f %% refused; %.1f–%.1f %% of the rest within budget; %d above 2× the "
+            "budget" % (len(runs), len(runs[0]), min(refused), max(refused), min(within), max(within), over))
 
 
 def replace_block(readme, rows):
