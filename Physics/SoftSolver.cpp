@@ -162,7 +162,7 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
         const bool shock = !shockBlockStart.empty() && shockBlockStart[b + 1] > shockBlockStart[b];
         for (int s = 0; s < ctx.substepCount; ++s) {
             const bool perBody = s > 0 && !shock;
-            IntegrateVelocities(ctx, block, perBody);
+            IntegrateVelocities(block, perBody);
             if (!perBody) WarmStart(block);
             for (int k = 0; k < soft.iterations; ++k)
                 Solve(block, ctx.invH, softness, staticSoftness, soft.maxPushoutSpeed, soft.linearSlop, true);
@@ -326,7 +326,7 @@ static_assert(offsetof(SoftContactSolver::BodySim, gravityStep) % 16 == 0 &&
                   offsetof(SoftContactSolver::BodySim, torqueStep) % 16 == 0,
               "BodySim's gravityStep and torqueStep each fill 16 bytes with their padding (Load4)");
 
-void SoftContactSolver::IntegrateVelocities(const StepContext& /*ctx*/, const Block& block, bool warm) {
+void SoftContactSolver::IntegrateVelocities(const Block& block, bool warm) {
     using simd4::Float4;
     const Float4 zero = simd4::Wide(0.0f);
     auto store = [](vec3& to, Float4 v) { std::memcpy(&to.x, &v, sizeof v); };

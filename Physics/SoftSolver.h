@@ -239,7 +239,7 @@ private:
     // The two per-body loops of a substep: each lives here only.
     /// Gravity, retention and threshold of one substep; `warm`: then the velocity change the block's contacts gave
     /// each body over the last substep, again (the warm start of every substep after the first; Step).
-    void IntegrateVelocities(const StepContext& ctx, const Block& block, bool warm);
+    void IntegrateVelocities(const Block& block, bool warm);
     void IntegratePositions(const StepContext& ctx, const Block& block);
     /// IntegratePositions' small turn of `count` (1..4) isotropic bodies at once, four wide (SoftSolver.cpp).
     void SmallTurns(const int* bodies, int count, float h);
