@@ -95,12 +95,15 @@ inline bool SegmentMissesBounds(const vec3& a, const vec3& b, const ParticleCons
 }  // namespace
 
 namespace {
-constexpr EnumId<ParticleContact> kContactIds[] = {{ParticleContact::Book, "book"}, {ParticleContact::Skin, "skin"}};
+constexpr EnumId<ParticleContact> kContactIds[] = {
+    {ParticleContact::Book, "book"}, {ParticleContact::Skin, "skin"}, {ParticleContact::Reflect, "reflect"}};
 }  // namespace
 
 const char* ToString(ParticleContact contact) { return IdOf(kContactIds, contact); }
 
 bool ParseParticleContact(const std::string& text, ParticleContact* out) { return ParseId(kContactIds, text, out); }
+
+std::string ParticleContactIds() { return JoinIds(kContactIds); }
 
 ParticleConstraint PrepareParticleConstraint(const OBB& box, ParticleContact contact) {
     ParticleConstraint c;
@@ -112,6 +115,10 @@ ParticleConstraint PrepareParticleConstraint(const OBB& box, ParticleContact con
         c.box.size = vec3(std::fabs(box.size.x) + skin, std::fabs(box.size.y) + skin, std::fabs(box.size.z) + skin);
         c.placement = 0.0f;
     }
+    if (contact == ParticleContact::Reflect) {
+        c.placement = 0.0f;
+        c.reflect = true;
+    }
     const float* m = c.box.orientation.asArray;
     for (int w = 0; w < 3; ++w) {
         // World half-extent along axis w: sum over local axes of |axis_i[w]| * size_i.
@@ -121,6 +128,10 @@ ParticleConstraint PrepareParticleConstraint(const OBB& box, ParticleContact con
         c.boundsMax[w] = c.box.position[w] + extent;
     }
     return c;
+}
+
+float ContactOffsetOf(ParticleContact contact) {
+    return contact == ParticleContact::Reflect ? 0.0f : Particle::kContactOffset;
 }
 
 Particle::Particle() : Rigidbody(RigidbodyType::Particle) {}
@@ -144,21 +155,27 @@ void Particle::SolveConstraints(const std::vector<OBB>& constraints) {
     ResolveHit(best.point, best.normal, kContactOffset);
 }
 
-void Particle::SolveConstraints(const ParticleConstraint* constraints, std::size_t count) {
+void Particle::SolveConstraints(const ParticleConstraint* constraints, std::size_t count, float dt) {
     SegmentHit best, hit;
     float placement = kContactOffset;
+    bool reflect = false;
     const vec3 delta(position.x - oldPosition.x, position.y - oldPosition.y, position.z - oldPosition.z);
     for (std::size_t i = 0; i < count; ++i) {
         if (SegmentMissesBounds(oldPosition, position, constraints[i])) continue;
         if (!ClipSegment(constraints[i].box, oldPosition, delta, &hit) || !(hit.t < best.t)) continue;
-        // The skin's particle rests on the tested surface itself, so its next segment starts on it (inside, to
-        // rounding): leaving through that face is no hit, or it could never lift off.
+        // The skin's and the reflect contact's particle rests on the tested surface itself, so its next segment
+        // starts on it (inside, to rounding): leaving through that face is no hit, or it could never lift off.
         if (constraints[i].placement == 0.0f && hit.t < 0.0f && Dot3(delta, hit.normal) > 0.0f) continue;
         best = hit;
         placement = constraints[i].placement;
+        reflect = constraints[i].reflect;
     }
     if (best.t == FLT_MAX) return;
-    ResolveHit(best.point, best.normal, placement);
+    if (reflect) {
+        ReflectHit(best.point, best.normal, best.t, dt);
+    } else {
+        ResolveHit(best.point, best.normal, placement);
+    }
 }
 
 void Particle::ResolveHit(const vec3& point, const vec3& normal, float offset) {
@@ -172,6 +189,44 @@ void Particle::ResolveHit(const vec3& point, const vec3& normal, float offset) {
         const float change = -(1.0f + bounce) * vn;  // vt - e vn = v - (1 + e) vn
         velocity = vec3(velocity.x + normal.x * change, velocity.y + normal.y * change, velocity.z + normal.z * change);
     }
+}
+
+void Particle::ReflectHit(const vec3& point, const vec3& normal, float t, float dt) {
+    // Along the face's normal n, with a the acceleration of the step's last force evaluation and d the distance
+    // off the face's plane (d0 at the step's start, d1 at its end, before this contact): take a constant over the
+    // step and the path is the parabola through d0 and d1, d(s) = d0 + (d1 - d0) s / dt + an s (s - dt) / 2. It
+    // meets the face at s (Newton from the segment's fraction t), tau = dt - s before the end, with normal velocity
+    // vc = v1n - an tau. An ideal bounce leaves with -e vc and ends the step at
+    //   d = -e vc tau + an tau^2 / 2 = -e d1 + (1 + e) an tau^2 / 2,   vn = -e vc + an tau = -e v1n + (1 + e) an tau,
+    // the tangential parts as the integrator left them (no friction, as the other contacts). Exact when the step's
+    // acceleration is constant and the integrator's d1 and v1 are exact for it (gravity with verlet or rk4); for
+    // any other force or integrator it is off by O(dt^2) per impact (the acceleration's change over tau), the
+    // velocity retention's scaling is taken as part of the path, not of a. A bounce whose remainder would come
+    // back through the face inside the step (d < 0: the particle is at rest or nearly) ends on the face with no
+    // approaching velocity: the train of ever smaller bounces the ideal answer has there, collapsed.
+    const vec3 a = forces * InvMass();
+    const float an = Dot3(a, normal);
+    const float d0 = Dot3(oldPosition - point, normal), d1 = Dot3(position - point, normal);
+    float s = t > 0.0f ? t * dt : 0.0f;
+    for (int i = 0; i < 2 && dt > 0.0f && t > 0.0f; ++i) {
+        const float slope = (d1 - d0) / dt + an * (s - 0.5f * dt);
+        if (!(slope < 0.0f)) break;
+        s = Min(Max(s - (d0 + (d1 - d0) * s / dt + 0.5f * an * s * (s - dt)) / slope, 0.0f), dt);
+    }
+    const float tau = dt - s;
+    const float v1n = Dot3(velocity, normal);
+    float dEnd = d1, vEnd = v1n;
+    if (v1n - an * tau < 0.0f) {
+        dEnd = -bounce * d1 + 0.5f * (1.0f + bounce) * an * tau * tau;
+        vEnd = -bounce * v1n + (1.0f + bounce) * an * tau;
+    }
+    if (dEnd < 0.0f) {
+        dEnd = 0.0f;
+        vEnd = Max(vEnd, 0.0f);
+    }
+    position += normal * (dEnd - d1);
+    velocity += normal * (vEnd - v1n);
+    oldPosition = position;
 }
 
 void Particle::SetPosition(const vec3& pos) { position = oldPosition = pos; }
