@@ -193,32 +193,36 @@ void Particle::ResolveHit(const vec3& point, const vec3& normal, float offset) {
 
 void Particle::ReflectHit(const vec3& point, const vec3& normal, float t, float dt) {
     // Along the face's normal n, with a the acceleration of the step's last force evaluation and d the distance
-    // off the face's plane (d0 at the step's start, d1 at its end, before this contact): take a constant over the
-    // step and the path is the parabola through d0 and d1, d(s) = d0 + (d1 - d0) s / dt + an s (s - dt) / 2. It
-    // meets the face at s (Newton from the segment's fraction t), tau = dt - s before the end, with normal velocity
-    // vc = v1n - an tau. An ideal bounce leaves with -e vc and ends the step at
-    //   d = -e vc tau + an tau^2 / 2 = -e d1 + (1 + e) an tau^2 / 2,   vn = -e vc + an tau = -e v1n + (1 + e) an tau,
+    // off the face's plane (d0 at the step's start, d1 at its end, before this contact): taking a constant over the
+    // step, the path is the parabola through d0 and d1, d(s) = d0 + (d1 - d0) s / dt + an s (s - dt) / 2, whatever
+    // the integrator. It meets the face at s (Newton from the segment's fraction t; 0 for a start on the face),
+    // tau = dt - s before the end, with normal velocity vc = d'(s). An ideal bounce leaves with -e vc and ends at
+    //   d = -e vc tau + an tau^2 / 2 = d1 - (1 + e) vc tau,   vn = v1n - (1 + e) vc,
     // the tangential parts as the integrator left them (no friction, as the other contacts). Exact when the step's
-    // acceleration is constant and the integrator's d1 and v1 are exact for it (gravity with verlet or rk4); for
-    // any other force or integrator it is off by O(dt^2) per impact (the acceleration's change over tau), the
-    // velocity retention's scaling is taken as part of the path, not of a. A bounce whose remainder would come
-    // back through the face inside the step (d < 0: the particle is at rest or nearly) ends on the face with no
-    // approaching velocity: the train of ever smaller bounces the ideal answer has there, collapsed.
-    const vec3 a = forces * InvMass();
-    const float an = Dot3(a, normal);
+    // acceleration is constant and the integrator is exact for it (gravity with verlet, velocity-verlet or rk4);
+    // any other force is off by O(dt^2) per impact (a's change over the step), an integrator's own error is its
+    // own, and the velocity retention's scaling is taken as part of the path. A bounce whose remainder would come
+    // back through the face within the step (d < 0: at rest or nearly) ends on the face with no approaching
+    // velocity: the ideal answer's train of ever smaller bounces there, collapsed. dt = 0: the impact at the end.
+    const float an = Dot3(forces * InvMass(), normal);
     const float d0 = Dot3(oldPosition - point, normal), d1 = Dot3(position - point, normal);
+    const float v1n = Dot3(velocity, normal);
     float s = t > 0.0f ? t * dt : 0.0f;
-    for (int i = 0; i < 2 && dt > 0.0f && t > 0.0f; ++i) {
-        const float slope = (d1 - d0) / dt + an * (s - 0.5f * dt);
-        if (!(slope < 0.0f)) break;
-        s = Min(Max(s - (d0 + (d1 - d0) * s / dt + 0.5f * an * s * (s - dt)) / slope, 0.0f), dt);
+    float vc = v1n;
+    if (dt > 0.0f) {
+        const float chord = (d1 - d0) / dt;
+        for (int i = 0; i < 2 && t > 0.0f; ++i) {
+            const float slope = chord + an * (s - 0.5f * dt);
+            if (!(slope < 0.0f)) break;
+            s = Min(Max(s - (d0 + chord * s + 0.5f * an * s * (s - dt)) / slope, 0.0f), dt);
+        }
+        vc = chord + an * (s - 0.5f * dt);
     }
     const float tau = dt - s;
-    const float v1n = Dot3(velocity, normal);
     float dEnd = d1, vEnd = v1n;
-    if (v1n - an * tau < 0.0f) {
-        dEnd = -bounce * d1 + 0.5f * (1.0f + bounce) * an * tau * tau;
-        vEnd = -bounce * v1n + (1.0f + bounce) * an * tau;
+    if (vc < 0.0f) {
+        dEnd = d1 - (1.0f + bounce) * vc * tau;
+        vEnd = v1n - (1.0f + bounce) * vc;
     }
     if (dEnd < 0.0f) {
         dEnd = 0.0f;
