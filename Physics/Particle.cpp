@@ -92,6 +92,28 @@ inline bool SegmentMissesBounds(const vec3& a, const vec3& b, const ParticleCons
            Min(a.y, b.y) > c.boundsMax.y || Max(a.z, b.z) < c.boundsMin.z || Min(a.z, b.z) > c.boundsMax.z;
 }
 
+/// The ideal bounces that follow an impact inside one step under a constant normal acceleration `an` (< 0: back
+/// towards the face): the particle leaves the face at normal speed `u` (> 0) with `left` s of the step to go, and
+/// each return within it is another impact that keeps e of the speed. Writes the normal distance and velocity at
+/// the step's end. When the rest of the train (sum of 2 u e^k / |an|) ends within the step, or after 64 impacts,
+/// the particle is at rest on the face: the train's limit.
+void BounceTrain(float u, float left, float an, float e, float* d, float* v) {
+    for (int impact = 0; impact < 64 && an < 0.0f && u > 0.0f; ++impact) {
+        const float flight = -2.0f * u / an;
+        if (flight >= left) break;
+        left -= flight;
+        u *= e;
+        if (e < 1.0f && -2.0f * u / (an * (1.0f - e)) <= left) u = 0.0f;
+    }
+    if (!(u > 0.0f) || (an < 0.0f && -2.0f * u / an < left)) {
+        *d = 0.0f;
+        *v = 0.0f;
+        return;
+    }
+    *d = Max(u * left + 0.5f * an * left * left, 0.0f);
+    *v = u + an * left;
+}
+
 }  // namespace
 
 namespace {
@@ -202,8 +224,9 @@ void Particle::ReflectHit(const vec3& point, const vec3& normal, float t, float 
     // acceleration is constant and the integrator is exact for it (gravity with verlet, velocity-verlet or rk4);
     // any other force is off by O(dt^2) per impact (a's change over the step), an integrator's own error is its
     // own, and the velocity retention's scaling is taken as part of the path. A bounce whose remainder would come
-    // back through the face within the step (d < 0: at rest or nearly) ends on the face with no approaching
-    // velocity: the ideal answer's train of ever smaller bounces there, collapsed. dt = 0: the impact at the end.
+    // back through the face within the step (d < 0) bounces again, as often as the ideal answer does in the time
+    // left (BounceTrain), and rests on the face where that train ends within the step. dt = 0: the impact at the
+    // end.
     const float an = Dot3(forces * InvMass(), normal);
     const float d0 = Dot3(oldPosition - point, normal), d1 = Dot3(position - point, normal);
     const float v1n = Dot3(velocity, normal);
@@ -223,6 +246,7 @@ void Particle::ReflectHit(const vec3& point, const vec3& normal, float t, float 
     if (vc < 0.0f) {
         dEnd = d1 - (1.0f + bounce) * vc * tau;
         vEnd = v1n - (1.0f + bounce) * vc;
+        if (dEnd < 0.0f) BounceTrain(-bounce * vc, tau, an, bounce, &dEnd, &vEnd);
     }
     if (dEnd < 0.0f) {
         dEnd = 0.0f;

@@ -107,7 +107,7 @@ namespace {
 /// A particle put on the top face of `box` (through its centre, plus `along` in the face) with tangential velocity
 /// `slide`, stepped `seconds` at dt with `integrator`; returns the largest |distance off the face's plane| seen.
 double LargestGapOffTheFace(const OBB& box, Integrator integrator, float dt, float seconds, const vec3& slide,
-                            vec3* endVelocity) {
+                            vec3* endVelocity, float restitution = 0.5f) {
     const float* m = box.orientation.asArray;
     const vec3 n(m[3], m[4], m[5]);
     const vec3 face = box.position + n * std::fabs(box.size.y);
@@ -117,7 +117,7 @@ double LargestGapOffTheFace(const OBB& box, Integrator integrator, float dt, flo
     w.system.AddConstraint(box);
     Particle& p = w.AddParticle();
     p.SetVelocityRetention(1.0f);
-    p.SetBounce(0.5f);
+    p.SetBounce(restitution);
     p.SetGravity(n * static_cast<float>(-kG));
     p.SetPosition(face);
     p.SetVelocity(slide);
@@ -138,10 +138,12 @@ TEST(ReflectContact, AParticleAtRestOnAFaceStaysOnItForEveryIntegrator) {
     for (const OBB& box : {kFlat, kRotated}) {
         for (Integrator integrator : kAllIntegrators) {
             for (float dt : {0.01f, 0.001f}) {
-                vec3 v;
-                const double gap = LargestGapOffTheFace(box, integrator, dt, 10.0f, vec3(), &v);
-                EXPECT_LT(gap, kG * dt * dt + 1e-5) << ToString(integrator) << " dt " << dt;
-                EXPECT_LT(Magnitude(v), kG * dt + 1e-4) << ToString(integrator) << " dt " << dt;
+                for (float e : {0.3f, 0.5f, 0.7f, 1.0f}) {
+                    vec3 v;
+                    const double gap = LargestGapOffTheFace(box, integrator, dt, 10.0f, vec3(), &v, e);
+                    EXPECT_LT(gap, kG * dt * dt + 1e-5) << ToString(integrator) << " dt " << dt << " e " << e;
+                    EXPECT_LT(Magnitude(v), kG * dt + 1e-4) << ToString(integrator) << " dt " << dt << " e " << e;
+                }
             }
         }
     }
@@ -163,6 +165,8 @@ TEST(ReflectContact, AParticleSlidingAlongAFaceStaysOnItAndKeepsItsSpeed) {
 }
 
 TEST(ReflectContact, AParticleDroppedOnAFaceComesToRestOnItAndNotAboveIt) {
+    // Semi-implicit Euler (the default): its step reaches the face at g dt / 2 from rest, and the bounces that
+    // follow within the step end in it (BounceTrain), so it settles on the face.
     for (float dt : {0.01f, 0.001f}) {
         TestWorld w;
         w.system.settings.particleContact = ParticleContact::Reflect;
