@@ -92,15 +92,40 @@ inline bool SegmentMissesBounds(const vec3& a, const vec3& b, const ParticleCons
            Min(a.y, b.y) > c.boundsMax.y || Max(a.z, b.z) < c.boundsMin.z || Min(a.z, b.z) > c.boundsMax.z;
 }
 
+/// The ideal bounces that follow an impact inside one step under a constant normal acceleration `an` (< 0: back
+/// towards the face): the particle leaves the face at normal speed `u` (> 0) with `left` s of the step to go, and
+/// each return within it is another impact that keeps e of the speed. Writes the normal distance and velocity at
+/// the step's end. When the rest of the train (sum of 2 u e^k / |an|) ends within the step, or after 64 impacts,
+/// the particle is at rest on the face: the train's limit.
+void BounceTrain(float u, float left, float an, float e, float* d, float* v) {
+    for (int impact = 0; impact < 64 && an < 0.0f && u > 0.0f; ++impact) {
+        const float flight = -2.0f * u / an;
+        if (flight >= left) break;
+        left -= flight;
+        u *= e;
+        if (e < 1.0f && -2.0f * u / (an * (1.0f - e)) <= left) u = 0.0f;
+    }
+    if (!(u > 0.0f) || (an < 0.0f && -2.0f * u / an < left)) {
+        *d = 0.0f;
+        *v = 0.0f;
+        return;
+    }
+    *d = Max(u * left + 0.5f * an * left * left, 0.0f);
+    *v = u + an * left;
+}
+
 }  // namespace
 
 namespace {
-constexpr EnumId<ParticleContact> kContactIds[] = {{ParticleContact::Book, "book"}, {ParticleContact::Skin, "skin"}};
+constexpr EnumId<ParticleContact> kContactIds[] = {
+    {ParticleContact::Book, "book"}, {ParticleContact::Skin, "skin"}, {ParticleContact::Reflect, "reflect"}};
 }  // namespace
 
 const char* ToString(ParticleContact contact) { return IdOf(kContactIds, contact); }
 
 bool ParseParticleContact(const std::string& text, ParticleContact* out) { return ParseId(kContactIds, text, out); }
+
+std::string ParticleContactIds() { return JoinIds(kContactIds); }
 
 ParticleConstraint PrepareParticleConstraint(const OBB& box, ParticleContact contact) {
     ParticleConstraint c;
@@ -112,6 +137,10 @@ ParticleConstraint PrepareParticleConstraint(const OBB& box, ParticleContact con
         c.box.size = vec3(std::fabs(box.size.x) + skin, std::fabs(box.size.y) + skin, std::fabs(box.size.z) + skin);
         c.placement = 0.0f;
     }
+    if (contact == ParticleContact::Reflect) {
+        c.placement = 0.0f;
+        c.reflect = true;
+    }
     const float* m = c.box.orientation.asArray;
     for (int w = 0; w < 3; ++w) {
         // World half-extent along axis w: sum over local axes of |axis_i[w]| * size_i.
@@ -121,6 +150,10 @@ ParticleConstraint PrepareParticleConstraint(const OBB& box, ParticleContact con
         c.boundsMax[w] = c.box.position[w] + extent;
     }
     return c;
+}
+
+float ContactOffsetOf(ParticleContact contact) {
+    return contact == ParticleContact::Reflect ? 0.0f : Particle::kContactOffset;
 }
 
 Particle::Particle() : Rigidbody(RigidbodyType::Particle) {}
@@ -144,21 +177,27 @@ void Particle::SolveConstraints(const std::vector<OBB>& constraints) {
     ResolveHit(best.point, best.normal, kContactOffset);
 }
 
-void Particle::SolveConstraints(const ParticleConstraint* constraints, std::size_t count) {
+void Particle::SolveConstraints(const ParticleConstraint* constraints, std::size_t count, float dt) {
     SegmentHit best, hit;
     float placement = kContactOffset;
+    bool reflect = false;
     const vec3 delta(position.x - oldPosition.x, position.y - oldPosition.y, position.z - oldPosition.z);
     for (std::size_t i = 0; i < count; ++i) {
         if (SegmentMissesBounds(oldPosition, position, constraints[i])) continue;
         if (!ClipSegment(constraints[i].box, oldPosition, delta, &hit) || !(hit.t < best.t)) continue;
-        // The skin's particle rests on the tested surface itself, so its next segment starts on it (inside, to
-        // rounding): leaving through that face is no hit, or it could never lift off.
+        // The skin's and the reflect contact's particle rests on the tested surface itself, so its next segment
+        // starts on it (inside, to rounding): leaving through that face is no hit, or it could never lift off.
         if (constraints[i].placement == 0.0f && hit.t < 0.0f && Dot3(delta, hit.normal) > 0.0f) continue;
         best = hit;
         placement = constraints[i].placement;
+        reflect = constraints[i].reflect;
     }
     if (best.t == FLT_MAX) return;
-    ResolveHit(best.point, best.normal, placement);
+    if (reflect) {
+        ReflectHit(best.point, best.normal, best.t, dt);
+    } else {
+        ResolveHit(best.point, best.normal, placement);
+    }
 }
 
 void Particle::ResolveHit(const vec3& point, const vec3& normal, float offset) {
@@ -172,6 +211,50 @@ void Particle::ResolveHit(const vec3& point, const vec3& normal, float offset) {
         const float change = -(1.0f + bounce) * vn;  // vt - e vn = v - (1 + e) vn
         velocity = vec3(velocity.x + normal.x * change, velocity.y + normal.y * change, velocity.z + normal.z * change);
     }
+}
+
+void Particle::ReflectHit(const vec3& point, const vec3& normal, float t, float dt) {
+    // Along the face's normal n, with a the acceleration of the step's last force evaluation and d the distance
+    // off the face's plane (d0 at the step's start, d1 at its end, before this contact): taking a constant over the
+    // step, the path is the parabola through d0 and d1, d(s) = d0 + (d1 - d0) s / dt + an s (s - dt) / 2, whatever
+    // the integrator. It meets the face at s (Newton from the segment's fraction t; 0 for a start on the face),
+    // tau = dt - s before the end, with normal velocity vc = d'(s). An ideal bounce leaves with -e vc and ends at
+    //   d = -e vc tau + an tau^2 / 2 = d1 - (1 + e) vc tau,   vn = v1n - (1 + e) vc,
+    // the tangential parts as the integrator left them (no friction, as the other contacts). Exact when the step's
+    // acceleration is constant and the integrator is exact for it (gravity with verlet, velocity-verlet or rk4);
+    // any other force is off by O(dt^2) per impact (a's change over the step), an integrator's own error is its
+    // own, and the velocity retention's scaling is taken as part of the path. A bounce whose remainder would come
+    // back through the face within the step (d < 0) bounces again, as often as the ideal answer does in the time
+    // left (BounceTrain), and rests on the face where that train ends within the step. dt = 0: the impact at the
+    // end.
+    const float an = Dot3(forces * InvMass(), normal);
+    const float d0 = Dot3(oldPosition - point, normal), d1 = Dot3(position - point, normal);
+    const float v1n = Dot3(velocity, normal);
+    float s = t > 0.0f ? t * dt : 0.0f;
+    float vc = v1n;
+    if (dt > 0.0f) {
+        const float chord = (d1 - d0) / dt;
+        for (int i = 0; i < 2 && t > 0.0f; ++i) {
+            const float slope = chord + an * (s - 0.5f * dt);
+            if (!(slope < 0.0f)) break;
+            s = Min(Max(s - (d0 + chord * s + 0.5f * an * s * (s - dt)) / slope, 0.0f), dt);
+        }
+        vc = chord + an * (s - 0.5f * dt);
+    }
+    const float tau = dt - s;
+    float dEnd = d1, vEnd = v1n;
+    if (vc < 0.0f) {
+        dEnd = d1 - (1.0f + bounce) * vc * tau;
+        vEnd = v1n - (1.0f + bounce) * vc;
+        if (dEnd < 0.0f) BounceTrain(-bounce * vc, tau, an, bounce, &dEnd, &vEnd);
+    }
+    if (dEnd < 0.0f) {
+        dEnd = 0.0f;
+        vEnd = Max(vEnd, 0.0f);
+    }
+    position += normal * (dEnd - d1);
+    velocity += normal * (vEnd - v1n);
+    oldPosition = position;
 }
 
 void Particle::SetPosition(const vec3& pos) { position = oldPosition = pos; }

@@ -16,10 +16,15 @@ struct ParticleConstraint {
     OBB box;
     vec3 boundsMin, boundsMax;
     float placement = 0.003f;  ///< m off the tested surface a hit particle is put (Particle::kContactOffset, or 0)
+    bool reflect = false;      ///< ParticleContact::Reflect: the step's remainder is reflected (Particle::ReflectHit)
 };
 /// Copies the box and computes its world-space AABB (half-extents projected on the world axes). With
-/// ParticleContact::Skin the box is inflated by Particle::kContactOffset on every side and hits are placed on it.
+/// ParticleContact::Skin the box is inflated by Particle::kContactOffset on every side and hits are placed on it;
+/// with ParticleContact::Reflect the box is tested as it is and hits are reflected.
 ParticleConstraint PrepareParticleConstraint(const OBB& box, ParticleContact contact = ParticleContact::Book);
+/// m: how far off the box's true surface `contact` puts a particle that hits it, a bias no step removes
+/// (Particle::kContactOffset for book and skin, 0 for reflect).
+float ContactOffsetOf(ParticleContact contact);
 
 class Particle : public Rigidbody {
 public:
@@ -38,8 +43,9 @@ public:
     /// part of its velocity reflected with `bounce`. A start inside a box leaves through the nearest face; a
     /// zero-length segment is a point test (no NaN). At most one box per call, as the book.
     void SolveConstraints(const std::vector<OBB>& constraints) override;
-    /// The same on prepared constraints (PhysicsSystem's per-step path: AABB reject, no per-box setup).
-    void SolveConstraints(const ParticleConstraint* constraints, std::size_t count);
+    /// The same on prepared constraints (PhysicsSystem's per-step path: AABB reject, no per-box setup). `dt` is the
+    /// step just taken (s): only a reflect constraint reads it, to time its impact inside the step (0: at its end).
+    void SolveConstraints(const ParticleConstraint* constraints, std::size_t count, float dt = 0.0f);
 
     /// Sets position and oldPosition (the particle is at rest in the travelled-segment sense).
     void SetPosition(const vec3& pos);
@@ -80,4 +86,7 @@ protected:
 
 private:
     void ResolveHit(const vec3& point, const vec3& normal, float offset);
+    /// ParticleContact::Reflect: the segment oldPosition -> position entered the box through the face through
+    /// `point` with outward `normal` at fraction `t` of it (< 0: it started on or inside that face).
+    void ReflectHit(const vec3& point, const vec3& normal, float t, float dt);
 };

@@ -12,8 +12,17 @@ enum class ParticleContact {
     /// The box is inflated by kContactOffset and the particle put on the inflated surface where it crossed it: the
     /// same resting height, no lift beyond the step's own travel, so it converges as the step shrinks.
     Skin,
+    /// Opt-in: the box's true surface (no offset) is tested and the step's remainder after the impact reflected about
+    /// the face hit, the velocity's normal part at the impact times -e, so the particle ends the step where an ideal
+    /// bounce would. Exact for a constant acceleration over the step, second order otherwise.
+    Reflect,
 };
-/// "book" or "skin".
+/// Every contact, in the order of the "particle-contact" parameter's choices.
+constexpr ParticleContact kAllParticleContacts[] = {ParticleContact::Book, ParticleContact::Skin,
+                                                    ParticleContact::Reflect};
+/// "book", "skin" or "reflect".
 const char* ToString(ParticleContact contact);
+/// "book, skin, reflect": the ids for error messages.
+std::string ParticleContactIds();
 /// Parses an id from ToString; false (output untouched) for anything else.
 bool ParseParticleContact(const std::string& text, ParticleContact* out);

@@ -75,7 +75,7 @@ void PhysicsSystem::Update(float deltaTime) {
     for (Rigidbody* body : others) body->ApplyForces();
     for (Rigidbody* body : others) body->Update(deltaTime);
     if (!allParticles.empty()) IntegrateParticles(ctx);
-    if (!constraints.empty() || !joints.empty()) SolveParticleConstraints();
+    if (!constraints.empty() || !joints.empty()) SolveParticleConstraints(deltaTime);
     for (Rigidbody* body : others) body->SolveConstraints(constraints);
     ++stepCount;
 }

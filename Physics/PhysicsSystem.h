@@ -117,7 +117,7 @@ private:
     /// Gravity on every particle, then spring forces (AccumulateSpringForces).
     void AccumulateParticleForces();
     /// Free particles, then joints, then cloth particles against the constraints (book order).
-    void SolveParticleConstraints();
+    void SolveParticleConstraints(float dt);
 
     // ---- ch15: the contact solver (IContactSolver.h) with the shared stages (VolumeStages.h)
     /// Makes a new solver object when settings.contactSolver no longer matches the one the world has.

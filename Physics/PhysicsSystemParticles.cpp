@@ -21,16 +21,16 @@ void PhysicsSystem::IntegrateParticles(const StepContext& ctx) {
                             ctx.dt, ctx.settings.particleRetentionStep, evaluate, this);
 }
 
-void PhysicsSystem::SolveParticleConstraints() {
+void PhysicsSystem::SolveParticleConstraints(float dt) {
     if (!constraints.empty()) {
         if (preparedConstraints.size() != constraints.size()) preparedConstraints.resize(constraints.size());
         for (std::size_t i = 0; i < constraints.size(); ++i)
             preparedConstraints[i] = PrepareParticleConstraint(constraints[i], settings.particleContact);
-        for (Particle* p : particles) p->SolveConstraints(preparedConstraints.data(), preparedConstraints.size());
+        for (Particle* p : particles) p->SolveConstraints(preparedConstraints.data(), preparedConstraints.size(), dt);
     }
     // Joints move their particles and re-solve them against `constraints` themselves.
     if (!joints.empty()) SolveJoints();
     if (!constraints.empty())
         for (std::size_t i = particles.size(); i < allParticles.size(); ++i)
-            allParticles[i]->SolveConstraints(preparedConstraints.data(), preparedConstraints.size());
+            allParticles[i]->SolveConstraints(preparedConstraints.data(), preparedConstraints.size(), dt);
 }

@@ -22,7 +22,8 @@ struct WorldSettings {
     /// retains velocityRetention^(dt / particleRetentionStep), the same fraction per second.
     float particleRetentionStep = kBookStep;
     /// How free and cloth particles meet OBB constraints (Particle.h). Book: ParticleContact::Book, whose resting
-    /// particles hop by a step-independent amount; Skin converges as the step shrinks. Jointed particles keep the
+    /// particles hop by a step-independent amount; Skin converges as the step shrinks, Reflect (model=auto's) to the
+    /// rigid answer at second order. Jointed particles keep the
     /// book's contact (DistanceJoint re-solves them against the raw boxes).
     ParticleContact particleContact = ParticleContact::Book;
 

@@ -19,6 +19,8 @@ namespace {
 constexpr double kStepLadder[] = {0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 0.0005, 0.0002, 0.0001};
 constexpr int kIterationLadder[] = {1, 2, 5, 10, 20, 50};
 constexpr int kSubstepLadder[] = {1, 2, 4, 8, 16, 32};
+/// The particle contact every auto run uses (docs/model-choice.md "Particle contact").
+constexpr ParticleContact kAutoParticleContact = ParticleContact::Reflect;
 
 /// Within the key's range, up to the float rounding of its bounds (a range of 0.0005..0.1 s holds the ladder's
 /// 0.0005, which its float bound, 0.000500000024, would leave out).
@@ -47,7 +49,14 @@ CandidateSpace AutoModel::SpaceOf(const ParameterSet& params, const PhysicsSyste
     space.hasParticles = space.particleCount > 0.0;
     space.hasVolumes = space.volumeCount > 0.0;
     space.hasContacts = space.hasParticles && !world.Constraints().empty();
-    if (space.hasContacts) space.contactOffset = Particle::kContactOffset;
+    if (space.hasContacts) {
+        // The contact the run will use (Choose sets the parameter first): its offset is a bias no step removes, and
+        // only the reflect contact times an impact inside its step.
+        ParticleContact contact = world.settings.particleContact;
+        if (params.Find("particle-contact") != nullptr) ParseParticleContact(params.Get("particle-contact"), &contact);
+        space.contactOffset = ContactOffsetOf(contact);
+        space.impactsTimedInStep = contact == ParticleContact::Reflect;
+    }
     space.hasJoints = !world.Joints().empty();
 
     ModelCandidate& base = space.base;
@@ -187,10 +196,11 @@ bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double 
     if (!ValidateBudget(budget, error)) return false;
     hostStep = step;
     // Step doubling needs a model that converges as its step shrinks: the book's particle contact does not (a resting
-    // particle hops by a step-independent amount), so an auto run uses its convergent form, the skin, before any
-    // probe is made (docs/model-choice.md "Particle contact").
-    if (params->Find("particle-contact") != nullptr && params->Get("particle-contact") != "skin" &&
-        !params->Set("particle-contact", "skin", error))
+    // particle hops by a step-independent amount), so an auto run uses the reflect contact, which converges to the
+    // rigid answer at second order with no offset, before any probe is made (docs/model-choice.md "Particle contact").
+    const char* contact = ToString(kAutoParticleContact);
+    if (params->Find("particle-contact") != nullptr && params->Get("particle-contact") != contact &&
+        !params->Set("particle-contact", contact, error))
         return false;
     space = SpaceOf(*params, world, hostStep);
     settings = tuning;

@@ -24,7 +24,7 @@ void Ch14Scene::Reset(const Ch14Params& p) {
     panelParticles = p.particleCount;
     for (std::size_t i = 0; i < std::size(kAllIntegrators); ++i)
         if (kAllIntegrators[i] == p.integrator) integratorIndex = static_cast<int>(i);
-    contactIndex = p.particleContact == ParticleContact::Skin ? 1 : 0;
+    contactIndex = ParticleContactIndex(p.particleContact);
     panelSeed = static_cast<int>(p.seed);
     if (params.particleCount < 1) params.particleCount = 1;
     if (!(params.dt > 0.0f) || !std::isfinite(params.dt)) params.dt = Ch14Params().dt;

@@ -54,7 +54,7 @@ void FileScene::AddParameters(ParameterSet* set) {
     std::vector<std::string> integrators;
     for (Integrator i : kAllIntegrators) integrators.emplace_back(ToString(i));
     set->AddChoice("integrator", &integratorChoice, integrators, "how particles are integrated", apply);
-    contactChoice = w.particleContact == ParticleContact::Skin ? 1 : 0;
+    contactChoice = ParticleContactIndex(w.particleContact);
     AddParticleContactParameter(set, &contactChoice, [this] {
         description.world.particleContact = ParticleContactAt(contactChoice);
         ApplyWorldSettings();

@@ -283,7 +283,7 @@ void ReadWorld(const Json& j, SceneWorld* w, Problems* problems) {
     };
     choice("integrator", "an integrator", IntegratorIds(),
            [&](const std::string& n) { return ParseIntegrator(n, &w->integrator); });
-    choice("particleContact", "a particle contact", "book, skin",
+    choice("particleContact", "a particle contact", ParticleContactIds(),
            [&](const std::string& n) { return ParseParticleContact(n, &w->particleContact); });
     choice("contactSolver", "a contact solver", ContactSolverIds(),
            [&](const std::string& n) { return ParseContactSolver(n, &w->contactSolver); });

@@ -1,5 +1,6 @@
 #include "Demos/Scenes/SoftSceneCommon.h"
 
+#include <iterator>
 #include <sstream>
 
 std::vector<std::string> IntegratorChoices() {
@@ -38,13 +39,25 @@ void AddStepParameters(ParameterSet* set, int* integratorIndex, float* dt, const
 }
 
 void AddParticleContactParameter(ParameterSet* set, int* index, const std::function<void()>& apply) {
-    set->AddChoice("particle-contact", index, {ToString(ParticleContact::Book), ToString(ParticleContact::Skin)},
+    std::vector<std::string> ids;
+    for (ParticleContact c : kAllParticleContacts) ids.emplace_back(ToString(c));
+    set->AddChoice("particle-contact", index, ids,
                    "how particles meet boxes: book (put 3 mm off the surface: resting particles keep hopping at any "
-                   "step) or skin (the same 3 mm, converges as the step shrinks)",
+                   "step), skin (the same 3 mm, converges as the step shrinks) or reflect (the true surface, the "
+                   "bounce timed inside the step: second order)",
                    apply);
 }
 
-ParticleContact ParticleContactAt(int index) { return index == 1 ? ParticleContact::Skin : ParticleContact::Book; }
+ParticleContact ParticleContactAt(int index) {
+    return index >= 0 && index < static_cast<int>(std::size(kAllParticleContacts)) ? kAllParticleContacts[index]
+                                                                                   : ParticleContact::Book;
+}
+
+int ParticleContactIndex(ParticleContact contact) {
+    for (std::size_t i = 0; i < std::size(kAllParticleContacts); ++i)
+        if (kAllParticleContacts[i] == contact) return static_cast<int>(i);
+    return 0;
+}
 
 void ClampAboveFloor(std::vector<Particle>* particles, float floorY) {
     for (Particle& particle : *particles) {

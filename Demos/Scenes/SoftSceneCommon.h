@@ -25,11 +25,13 @@ constexpr float kMaxSceneDt = 0.1f;
 /// is the step the host runs (DemoBase::PhysicsStep).
 void AddStepParameters(ParameterSet* set, int* integratorIndex, float* dt, const std::function<void()>& onChange);
 
-/// Registers "particle-contact" (book|skin, bound to *index) on *set: how free and cloth particles meet their
+/// Registers "particle-contact" (book|skin|reflect, bound to *index) on *set: how free and cloth particles meet their
 /// boxes (ParticleContact, docs/ch14.md "Contact that converges"). `apply` puts the choice into the world at once.
 void AddParticleContactParameter(ParameterSet* set, int* index, const std::function<void()>& apply);
 /// The ParticleContact at an index of that choice (book for anything else).
 ParticleContact ParticleContactAt(int index);
+/// The index of `contact` in that choice (ParticleContactAt's inverse).
+int ParticleContactIndex(ParticleContact contact);
 
 /// The "integrator" choice behind a chapter 16 scene's panel. The scene owns its params; this holds the rest.
 /// Host time is not accumulated here: the host runs whole physics steps of the scene's dt (DemoBase::PhysicsStep).

@@ -145,8 +145,12 @@ public:
         }
         third = (o.wholeRun || o.third) && !observed;
         // A whole run is judged where the budget bounds it, at the end (energy and position; constraint error is
-        // observed).
-        atEnd = o.wholeRun && budget.quantity != BudgetQuantity::Constraint;
+        // observed). Not a position budget whose impacts are timed inside their step (impactsTimedInStep): there
+        // two runs' impacts fall at nearly the same time, so the largest difference over the run is a measure as
+        // for a smooth motion, and the end alone is not one, where coarse probes whose bounces died down early all
+        // rest on the surface together while the answer still bounces.
+        atEnd = o.wholeRun && budget.quantity != BudgetQuantity::Constraint &&
+                !(budget.quantity == BudgetQuantity::Position && space.impactsTimedInStep);
         if (third) {
             finest = factory();
             finest->Apply(refinedTwice);

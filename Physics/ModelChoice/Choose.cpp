@@ -402,7 +402,7 @@ void RaiseToImpactTiming(const PilotImpacts& impacted, const CandidateSpace& spa
     }
     if (budget.quantity != BudgetQuantity::Position) return;
     const double impactSpeed = impacted.speed;
-    const double timing = 0.5 * impactSpeed * e->model.step;
+    const double timing = space.impactsTimedInStep ? 0.0 : 0.5 * impactSpeed * e->model.step;
     const double offset = impacted.flying ? space.contactOffset : 0.0;
     const double floor = std::max(timing, offset);
     if (!(floor > e->estimate)) return;

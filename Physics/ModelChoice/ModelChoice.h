@@ -71,6 +71,9 @@ struct CandidateSpace {
     /// m: how far off a constraint's surface a particle that hits it is put (Particle::kContactOffset; 0: none). A
     /// bias against the rigid answer that no step removes: a position estimate is at least this once particles hit.
     double contactOffset = 0.0;
+    /// The particle contact finds each impact's time inside its step (ParticleContact::Reflect): an impact's timing
+    /// error is second order, not the up-to-a-step shift RaiseToImpactTiming allows for otherwise.
+    bool impactsTimedInStep = false;
     // Counts for the work model (PredictedWork).
     double particleCount = 0.0;  ///< free and cloth particles
     double springCount = 0.0;    ///< springs, cloth springs included, and joints

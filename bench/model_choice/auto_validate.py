@@ -6,7 +6,8 @@ Draws instances from the families of auto_families.py, each with a position budg
 writes each as a scene file with "model": "auto", and runs the release program as a user would:
 `physics-sandbox --scene F --state S.csv --no-ui` (plus `--size 16x16`, which only shrinks the frames it renders and
 throws away). The error is read from the last --state row, against the exact answer at that row's `time`. Every
-instance also runs a grid of fixed models (world.step, integrator or contact solver, iterations or soft substeps) in
+instance also runs a grid of fixed models (world.step, integrator and, where particles can hit a constraint, particle
+contact; or contact solver, iterations or soft substeps) in
 order of predicted work until one meets the budget, and on up to 4x that work for the cheapest; on a refusal it
 shows whether any model of the grid meets the budget. CPU is the child process's (user + system, wait4).
 
@@ -34,6 +35,7 @@ BUDGET_RANGE = (1e-4, 1e-1)  # m
 PARTICLE_STEPS = [0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4]
 VOLUME_STEPS = [0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4]
 INTEGRATORS = {"explicit-euler": 1, "euler": 1, "velocity-verlet": 2, "verlet": 1, "rk4": 4}  # force evaluations
+PARTICLE_CONTACTS = ["book", "skin", "reflect"]  # world.particleContact, for particles that can hit a constraint
 SOLVERS = [("book", 5), ("book", 20), ("accumulated", 5), ("accumulated", 20), ("soft", 4), ("soft", 16)]
 CHEAPEST_WINDOW = 4.0  # after the first grid model meeting the budget, models up to this times its work also run
 CSV_COLUMNS = ["id", "family", "index", "budget", "duration", "parameters", "auto_exit", "refused", "auto_model",
@@ -53,6 +55,7 @@ class Instance:
         self.duration = self.scene["duration"]
         bodies = self.scene["bodies"]
         self.volumes = any(b["type"] != "particle" and b["mass"] > 0 for b in bodies)
+        self.contacts = bool(self.scene.get("constraints")) and any(b["type"] == "particle" for b in bodies)
 
     def auto_scene(self):
         s = dict(self.scene)
@@ -77,10 +80,17 @@ class Instance:
                     label = f"{solver} {'substeps' if solver == 'soft' else 'iterations'} {passes}, dt {step:g}"
                     models.append({"label": label, "world": world, "work": work})
         else:
+            # Particles that can hit a constraint: every particle contact too (the engine's model space).
+            contacts = PARTICLE_CONTACTS if self.contacts else [None]
             for integrator, evals in INTEGRATORS.items():
                 for step in PARTICLE_STEPS:
-                    models.append({"label": f"{integrator}, dt {step:g}", "world": {"integrator": integrator,
-                                   "step": step}, "work": self.duration / step * bodies * evals})
+                    for contact in contacts:
+                        world = {"integrator": integrator, "step": step}
+                        label = f"{integrator}, dt {step:g}"
+                        if contact:
+                            world["particleContact"] = contact
+                            label += f", {contact} contact"
+                        models.append({"label": label, "world": world, "work": self.duration / step * bodies * evals})
         return sorted(models, key=lambda m: m["work"])
 
     def error(self, run):

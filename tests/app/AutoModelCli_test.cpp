@@ -326,8 +326,8 @@ double LastFrameDistance(const std::string& a, const std::string& b, double* tim
 
 TEST(AutoModelCli, TheReadmesSpringsExamplesMeetTheirBudgetsAgainstAConvergedReference) {
     // README "Using it": 1 mm over 600 frames, and 1 cm over 300 frames. Each must run (exit 0) and its last row must
-    // be within the budget of a converged reference: RK4 at 0.5 ms with the skin contact auto runs (checked converged
-    // by the same run at 1 ms: the two differ by under a tenth of the budget).
+    // be within the budget of a converged reference: RK4 at 0.5 ms with the reflect contact auto runs (checked
+    // converged by the same run at 1 ms: the two differ by under a tenth of the budget).
     const std::string dir = ScratchDir("auto_model_readme_springs");
     for (const auto& [tolerance, frames] :
          std::vector<std::pair<std::string, std::string>>{{"1e-3", "600"}, {"1e-2", "300"}}) {
@@ -341,7 +341,7 @@ TEST(AutoModelCli, TheReadmesSpringsExamplesMeetTheirBudgetsAgainstAConvergedRef
         for (int i = 0; i < 2; ++i) {
             reference[i] = dir + "/reference-" + frames + "-" + steps[i] + ".csv";
             const SandboxResult ref = RunSandboxExe(
-                {"--demo", "springs", "--set", "integrator=rk4", "--set", "particle-contact=skin", "--set",
+                {"--demo", "springs", "--set", "integrator=rk4", "--set", "particle-contact=reflect", "--set",
                  std::string("dt=") + steps[i], "--frames", frames, "--state", reference[i], "--no-ui", "--quiet"});
             ASSERT_EQ(ref.exitCode, 0) << ref.err;
         }

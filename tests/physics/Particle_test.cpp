@@ -231,7 +231,7 @@ TEST(Particle, TheSkinContactComesToRestOnTheSameSurfaceAsTheStepShrinks) {
 }
 
 TEST(Particle, ParticleContactIdsRoundTrip) {
-    for (ParticleContact c : {ParticleContact::Book, ParticleContact::Skin}) {
+    for (ParticleContact c : kAllParticleContacts) {
         ParticleContact parsed = c == ParticleContact::Book ? ParticleContact::Skin : ParticleContact::Book;
         ASSERT_TRUE(ParseParticleContact(ToString(c), &parsed));
         EXPECT_EQ(parsed, c);

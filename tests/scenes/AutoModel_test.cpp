@@ -488,7 +488,7 @@ double EnergyAtTheEnd(const SceneDescription& d, Integrator integrator, double s
     SceneDescription fixed = d;
     fixed.world.integrator = integrator;
     fixed.world.step = static_cast<float>(step);
-    fixed.world.particleContact = ParticleContact::Skin;  // the contact an auto run uses (docs/model-choice.md)
+    fixed.world.particleContact = ParticleContact::Reflect;  // the contact an auto run uses (docs/model-choice.md)
     FileScene scene(fixed);
     const long long steps = std::llround(std::floor(d.duration / step + 1e-9));
     for (long long k = 0; k < steps; ++k) scene.Step(static_cast<float>(step));

@@ -181,6 +181,8 @@ TEST(SceneFile, OutOfRangeValuesAndNames) {
                            {"bodies[0].type: must be particle, sphere or box", "\"cone\""}));
     EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"integrator": "leapfrog"})")),
                            {"world.integrator: is not an integrator", "rk4", "\"leapfrog\""}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"particleContact": "bounce"})")),
+                           {"world.particleContact: is not a particle contact", "reflect", "\"bounce\""}));
     EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"contactSolver": "pgs"})")),
                            {"world.contactSolver: is not a contact solver"}));
     EXPECT_TRUE(
