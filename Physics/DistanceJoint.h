@@ -4,8 +4,11 @@
 // the relative velocity along the joint is removed, as position-based dynamics does (docs/ERRATA.md, Chapter 16,
 // "DistanceJoint without mass or velocity").
 
+#include <cstddef>
 #include <vector>
 
+#include "Physics/Integrator.h"
+#include "Physics/JointModel.h"
 #include "Physics/Particle.h"
 #include "Physics/Rigidbody.h"
 
@@ -25,3 +28,20 @@ public:
     /// but still re-solve their constraints.
     void SolveConstraints(const std::vector<OBB>& constraints) override;
 };
+
+/// JointModel::Tension: adds each joint's tension to its particles' `forces` (N), computed from their current
+/// positions, velocities and forces (gravity and springs already in), so that |p2 - p1|^2 has no second derivative
+/// (docs/ch16.md, "A joint that keeps the integrator's order"). Exact for joints whose movable ends are on no other
+/// joint: pass TensionJoints' list. Mass-0 ends get no force; joints with both ends of mass 0, without particles or
+/// with coincident ends are skipped.
+void AddJointTensions(DistanceJoint* const* joints, std::size_t count);
+/// The joints of `joints` that JointModel::Tension pulls: those whose movable (mass > 0) ends belong to no other joint
+/// of the list, in list order. Joints sharing a movable particle (chains) are left to the book's projection alone:
+/// their tensions are coupled, and solving them one joint at a time (Gauss-Seidel) converged too slowly to keep a
+/// chain stable (docs/ch16.md).
+std::vector<DistanceJoint*> TensionJoints(const std::vector<DistanceJoint*>& joints);
+/// Whether JointModel::Tension pulls under `integrator`: velocity Verlet and RK4, whose order it keeps. The first-order
+/// integrators keep the book's joint: with the tension, each explicit step adds (v^2 / L)^2 dt^2 / 2 to the squared
+/// speed, so a fast pendulum gains energy until it blows up (150 degrees, 0.01 s: within 60 s), and position Verlet's
+/// history is restarted by the projection every step anyway (docs/ch16.md).
+bool TensionKeepsOrder(Integrator integrator);

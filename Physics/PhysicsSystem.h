@@ -135,7 +135,9 @@ private:
     std::vector<Particle*> particles;
     std::vector<RigidbodyVolume*> volumes;
     std::vector<DistanceJoint*> joints;
-    std::vector<Rigidbody*> others;  // any other Rigidbody subclass: generic virtual calls
+    std::vector<DistanceJoint*> tensionJoints;  // JointModel::Tension: the joints it pulls (TensionJoints)
+    std::size_t tensionJointsFor = static_cast<std::size_t>(-1);  // joints.size() when tensionJoints was chosen
+    std::vector<Rigidbody*> others;                               // any other Rigidbody subclass: generic virtual calls
     std::vector<Cloth*> cloths;
     std::vector<OBB> constraints;
     std::vector<Spring> springs;

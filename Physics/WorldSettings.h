@@ -7,6 +7,7 @@
 
 #include "Physics/ContactSolverSettings.h"
 #include "Physics/Integrator.h"
+#include "Physics/JointModel.h"
 #include "Physics/ParticleContact.h"
 #include "Physics/SleepSettings.h"
 #include "Physics/StepFactor.h"
@@ -25,6 +26,10 @@ struct WorldSettings {
     /// particles hop by a step-independent amount; Skin converges as the step shrinks. Jointed particles keep the
     /// book's contact (DistanceJoint re-solves them against the raw boxes).
     ParticleContact particleContact = ParticleContact::Book;
+    /// How distance joints hold their particles (JointModel.h). Book: JointModel::Book, a projection after an
+    /// unconstrained step, first order whatever the integrator; Tension puts the joint's force into every force
+    /// evaluation, so each integrator keeps its order (docs/ch16.md, "A joint that keeps the integrator's order").
+    JointModel jointModel = JointModel::Book;
 
     // ---- rigid volumes (ch15)
     /// How contact impulses are solved (ContactSolverSettings.h; the world makes its IContactSolver from it). Book: its

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "Physics/Cloth.h"
+#include "Physics/DistanceJoint.h"
 #include "Physics/Particle.h"
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
@@ -48,7 +49,11 @@ CandidateSpace AutoModel::SpaceOf(const ParameterSet& params, const PhysicsSyste
     space.hasVolumes = space.volumeCount > 0.0;
     space.hasContacts = space.hasParticles && !world.Constraints().empty();
     if (space.hasContacts) space.contactOffset = Particle::kContactOffset;
-    space.hasJoints = !world.Joints().empty();
+    // Only the book's joints are a first-order splitting; tension joints keep the integrator's order, but joints that
+    // share a movable particle (chains) are left to the projection (TensionJoints) and stay first order.
+    space.hasJoints = !world.Joints().empty() && (world.settings.jointModel == JointModel::Book ||
+                                                  TensionJoints(world.Joints()).size() != world.Joints().size());
+    space.hasTensionJoints = !world.Joints().empty() && !space.hasJoints;
 
     ModelCandidate& base = space.base;
     base.integrator = world.settings.integrator;
@@ -191,6 +196,12 @@ bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double 
     // probe is made (docs/model-choice.md "Particle contact").
     if (params->Find("particle-contact") != nullptr && params->Get("particle-contact") != "skin" &&
         !params->Set("particle-contact", "skin", error))
+        return false;
+    // Likewise the book's distance joint is first order whatever the integrator (its projection's error does not
+    // shrink at the integrator's order), so a world with joints runs them as tension (docs/ch16.md).
+    if (!world.Joints().empty() && params->Find("joint-model") != nullptr &&
+        params->Get("joint-model") != ToString(JointModel::Tension) &&
+        !params->Set("joint-model", ToString(JointModel::Tension), error))
         return false;
     space = SpaceOf(*params, world, hostStep);
     settings = tuning;
