@@ -41,7 +41,7 @@ void AddJointTensions(DistanceJoint* const* joints, std::size_t count);
 /// chain stable (docs/ch16.md).
 std::vector<DistanceJoint*> TensionJoints(const std::vector<DistanceJoint*>& joints);
 /// Whether JointModel::Tension pulls under `integrator`: velocity Verlet and RK4, whose order it keeps. The first-order
-/// integrators keep the book's joint: with the tension, each explicit step adds (v^2 / L)^2 dt^2 / 2 to the squared
+/// integrators keep the book's joint: with the tension, each explicit step adds (v^2 / L)^2 dt^2 to the squared
 /// speed, so a fast pendulum gains energy until it blows up (150 degrees, 0.01 s: within 60 s), and position Verlet's
 /// history is restarted by the projection every step anyway (docs/ch16.md).
 bool TensionKeepsOrder(Integrator integrator);
