@@ -29,17 +29,24 @@ public:
     void SolveConstraints(const std::vector<OBB>& constraints) override;
 };
 
-/// JointModel::Tension: adds each joint's tension to its particles' `forces` (N), computed from their current
-/// positions, velocities and forces (gravity and springs already in), so that |p2 - p1|^2 has no second derivative
-/// (docs/ch16.md, "A joint that keeps the integrator's order"). Exact for joints whose movable ends are on no other
-/// joint: pass TensionJoints' list. Mass-0 ends get no force; joints with both ends of mass 0, without particles or
-/// with coincident ends are skipped.
-void AddJointTensions(DistanceJoint* const* joints, std::size_t count);
-/// The joints of `joints` that JointModel::Tension pulls: those whose movable (mass > 0) ends belong to no other joint
-/// of the list, in list order. Joints sharing a movable particle (chains) are left to the book's projection alone:
-/// their tensions are coupled, and solving them one joint at a time (Gauss-Seidel) converged too slowly to keep a
-/// chain stable (docs/ch16.md).
-std::vector<DistanceJoint*> TensionJoints(const std::vector<DistanceJoint*>& joints);
+/// The joints JointModel::Tension pulls, in groups coupled through shared movable particles (PlanTensions).
+struct TensionPlan {
+    std::vector<DistanceJoint*> joints;  ///< group after group, each group's joints in list order
+    std::vector<std::size_t> groupEnds;  ///< one past each group's last joint in `joints`
+    std::vector<double> scratch;         ///< the largest group's linear system, grown only
+};
+/// Most joints in one coupled group (a chain of 64 links); a larger group is left to the book's projection alone.
+constexpr std::size_t kMaxTensionGroup = 64;
+/// Groups `joints`: two joints holding the same movable (mass > 0) particle are in one group; mass-0 particles (pivots)
+/// couple nothing. Groups come in the order of their first joint; groups above kMaxTensionGroup joints are left out.
+TensionPlan PlanTensions(const std::vector<DistanceJoint*>& joints);
+/// JointModel::Tension: adds every planned joint's tension to its particles' `forces` (N), computed from their current
+/// positions, velocities and forces (gravity and springs already in), so that no |p2 - p1|^2 has a second derivative
+/// (docs/ch16.md, "A joint that keeps the integrator's order"). One joint alone: lambda = -(|u|^2 + d.(a2 - a1)) /
+/// ((w1 + w2) |d|^2), lambda d on p2 and -lambda d on p1. A coupled group (a chain) solves its joints' tensions
+/// together (Cholesky, in double). Mass-0 ends get no force. A group with a joint without particles, with coincident
+/// ends or with dependent joints gets no tension in that evaluation.
+void AddJointTensions(TensionPlan* plan);
 /// Whether JointModel::Tension pulls under `integrator`: velocity Verlet and RK4, whose order it keeps. The first-order
 /// integrators keep the book's joint: with the tension, each explicit step adds (v^2 / L)^2 dt^2 to the squared
 /// speed, so a fast pendulum gains energy until it blows up (150 degrees, 0.01 s: within 60 s), and position Verlet's

@@ -14,16 +14,17 @@ void PhysicsSystem::AccumulateParticleForces() {
         p->forces = vec3(p->gravity.x * m, p->gravity.y * m, p->gravity.z * m);
     }
     if (!springs.empty() || !cloths.empty()) AccumulateSpringForces();
-    if (settings.jointModel == JointModel::Tension && TensionKeepsOrder(settings.integrator) && !tensionJoints.empty())
-        AddJointTensions(tensionJoints.data(), tensionJoints.size());
+    if (settings.jointModel == JointModel::Tension && TensionKeepsOrder(settings.integrator) &&
+        !tensionPlan.joints.empty())
+        AddJointTensions(&tensionPlan);
 }
 
 void PhysicsSystem::IntegrateParticles(const StepContext& ctx) {
     if (integratorScratch.size() < allParticles.size()) integratorScratch.resize(allParticles.size());
-    // The joints tension pulls (TensionJoints), chosen again only when the joint count changes.
-    if (ctx.settings.jointModel == JointModel::Tension && tensionJointsFor != joints.size()) {
-        tensionJoints = TensionJoints(joints);
-        tensionJointsFor = joints.size();
+    // The joints tension pulls (PlanTensions), planned again only when the joint count changes.
+    if (ctx.settings.jointModel == JointModel::Tension && tensionPlanFor != joints.size()) {
+        tensionPlan = PlanTensions(joints);
+        tensionPlanFor = joints.size();
     }
     ForceEvaluator evaluate = [](void* self) { static_cast<PhysicsSystem*>(self)->AccumulateParticleForces(); };
     IntegrateParticleStates(ctx.settings.integrator, allParticles.data(), allParticles.size(), integratorScratch.data(),

@@ -49,10 +49,10 @@ CandidateSpace AutoModel::SpaceOf(const ParameterSet& params, const PhysicsSyste
     space.hasVolumes = space.volumeCount > 0.0;
     space.hasContacts = space.hasParticles && !world.Constraints().empty();
     if (space.hasContacts) space.contactOffset = Particle::kContactOffset;
-    // Only the book's joints are a first-order splitting; tension joints keep the integrator's order, but joints that
-    // share a movable particle (chains) are left to the projection (TensionJoints) and stay first order.
+    // Only the book's joints are a first-order splitting; tension joints keep the integrator's order, but a group of
+    // joints above kMaxTensionGroup is left to the projection (PlanTensions) and stays first order.
     space.hasJoints = !world.Joints().empty() && (world.settings.jointModel == JointModel::Book ||
-                                                  TensionJoints(world.Joints()).size() != world.Joints().size());
+                                                  PlanTensions(world.Joints()).joints.size() != world.Joints().size());
     space.hasTensionJoints = !world.Joints().empty() && !space.hasJoints;
 
     ModelCandidate& base = space.base;
