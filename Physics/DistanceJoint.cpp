@@ -1,9 +1,18 @@
 #include "Physics/DistanceJoint.h"
 
+#include "Physics/EnumIds.h"
+
 namespace {
+constexpr EnumId<JointModel> kJointModelIds[] = {{JointModel::Book, "book"}, {JointModel::Tension, "tension"}};
 // Below this separation (m) the pair has no axis to correct along (erratum 5.2-6).
 constexpr float kMinAxisLength = 1e-6f;
 }  // namespace
+
+const char* ToString(JointModel model) { return IdOf(kJointModelIds, model); }
+
+bool ParseJointModel(const std::string& text, JointModel* out) { return ParseId(kJointModelIds, text, out); }
+
+std::string JointModelIds() { return JoinIds(kJointModelIds); }
 
 void DistanceJoint::Initialize(Particle* _p1, Particle* _p2, float len) {
     p1 = _p1;

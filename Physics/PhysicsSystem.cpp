@@ -172,6 +172,8 @@ void PhysicsSystem::ClearRigidbodys() {
     particles.clear();
     volumes.clear();
     joints.clear();
+    tensionPlan = TensionPlan();
+    tensionPlanFor = static_cast<std::size_t>(-1);
     others.clear();
     stages.Reset();  // a new world may run again
     solver->Clear();

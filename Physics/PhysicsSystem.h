@@ -19,6 +19,7 @@
 
 #include "Physics/Broadphase.h"
 #include "Physics/ContactSolver.h"
+#include "Physics/DistanceJoint.h"
 #include "Physics/Geometry/Geometry3D.h"
 #include "Physics/IContactSolver.h"
 #include "Physics/Integrator.h"
@@ -135,7 +136,9 @@ private:
     std::vector<Particle*> particles;
     std::vector<RigidbodyVolume*> volumes;
     std::vector<DistanceJoint*> joints;
-    std::vector<Rigidbody*> others;  // any other Rigidbody subclass: generic virtual calls
+    TensionPlan tensionPlan;  // JointModel::Tension: the joints it pulls, grouped (PlanTensions)
+    std::size_t tensionPlanFor = static_cast<std::size_t>(-1);  // joints.size() when tensionPlan was made
+    std::vector<Rigidbody*> others;                             // any other Rigidbody subclass: generic virtual calls
     std::vector<Cloth*> cloths;
     std::vector<OBB> constraints;
     std::vector<Spring> springs;

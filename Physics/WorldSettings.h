@@ -7,6 +7,7 @@
 
 #include "Physics/ContactSolverSettings.h"
 #include "Physics/Integrator.h"
+#include "Physics/JointModel.h"
 #include "Physics/ParticleContact.h"
 #include "Physics/SleepSettings.h"
 #include "Physics/StepFactor.h"
@@ -26,6 +27,10 @@ struct WorldSettings {
     /// rigid answer at second order. Jointed particles keep the
     /// book's contact (DistanceJoint re-solves them against the raw boxes).
     ParticleContact particleContact = ParticleContact::Book;
+    /// How distance joints hold their particles (JointModel.h). Book: JointModel::Book, a projection after an
+    /// unconstrained step, first order whatever the integrator; Tension puts the joint's force into every force
+    /// evaluation, so each integrator keeps its order (docs/ch16.md, "A joint that keeps the integrator's order").
+    JointModel jointModel = JointModel::Book;
 
     // ---- rigid volumes (ch15)
     /// How contact impulses are solved (ContactSolverSettings.h; the world makes its IContactSolver from it). Book: its

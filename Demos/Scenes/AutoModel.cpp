@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "Physics/Cloth.h"
+#include "Physics/DistanceJoint.h"
 #include "Physics/Particle.h"
 #include "Physics/PhysicsSystem.h"
 #include "Physics/RigidbodyVolume.h"
@@ -57,7 +58,11 @@ CandidateSpace AutoModel::SpaceOf(const ParameterSet& params, const PhysicsSyste
         space.contactOffset = ContactOffsetOf(contact);
         space.impactsTimedInStep = contact == ParticleContact::Reflect;
     }
-    space.hasJoints = !world.Joints().empty();
+    // Only the book's joints are a first-order splitting; tension joints keep the integrator's order, but a group of
+    // joints above kMaxTensionGroup is left to the projection (PlanTensions) and stays first order.
+    space.hasJoints = !world.Joints().empty() && (world.settings.jointModel == JointModel::Book ||
+                                                  PlanTensions(world.Joints()).joints.size() != world.Joints().size());
+    space.hasTensionJoints = !world.Joints().empty() && !space.hasJoints;
 
     ModelCandidate& base = space.base;
     base.integrator = world.settings.integrator;
@@ -201,6 +206,12 @@ bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double 
     const char* contact = ToString(kAutoParticleContact);
     if (params->Find("particle-contact") != nullptr && params->Get("particle-contact") != contact &&
         !params->Set("particle-contact", contact, error))
+        return false;
+    // Likewise the book's distance joint is first order whatever the integrator (its projection's error does not
+    // shrink at the integrator's order), so a world with joints runs them as tension (docs/ch16.md).
+    if (!world.Joints().empty() && params->Find("joint-model") != nullptr &&
+        params->Get("joint-model") != ToString(JointModel::Tension) &&
+        !params->Set("joint-model", ToString(JointModel::Tension), error))
         return false;
     space = SpaceOf(*params, world, hostStep);
     settings = tuning;

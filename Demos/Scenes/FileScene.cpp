@@ -59,6 +59,11 @@ void FileScene::AddParameters(ParameterSet* set) {
         description.world.particleContact = ParticleContactAt(contactChoice);
         ApplyWorldSettings();
     });
+    jointChoice = w.jointModel == JointModel::Tension ? 1 : 0;
+    AddJointModelParameter(set, &jointChoice, [this] {
+        description.world.jointModel = JointModelAt(jointChoice);
+        ApplyWorldSettings();
+    });
     AddContactSolverParameters(
         set, &contact, "contact solver: the book's per-contact impulses, accumulated impulses or the soft step", apply);
     set->AddInt("iterations", &w.iterations, 1, SceneLimits::kMaxIterations, "contact solver passes per step", apply);
@@ -97,6 +102,7 @@ void FileScene::ApplyWorldSettings() {
     WorldSettings& s = system->settings;
     s.integrator = w.integrator;
     s.particleContact = w.particleContact;
+    s.jointModel = w.jointModel;
     s.contactSolver = w.contactSolver;
     s.solverIterations = w.iterations;
     s.penetrationSlop = w.penetrationSlop;

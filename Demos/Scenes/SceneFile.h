@@ -47,6 +47,7 @@ struct SceneWorld {
     float step = 0.0f;                 ///< s, the physics step; 0 = the host's (--dt, book 0.03)
     Integrator integrator = Integrator::SemiImplicitEuler;
     ParticleContact particleContact = ParticleContact::Book;  ///< how particles meet boxes (Physics/Particle.h)
+    JointModel jointModel = JointModel::Book;  ///< how distance joints hold their particles (Physics/JointModel.h)
     ContactSolver contactSolver = ContactSolver::Book;
     int iterations = 5;             ///< solver passes per (sub)step
     float penetrationSlop = 0.01f;  ///< m

@@ -59,6 +59,16 @@ int ParticleContactIndex(ParticleContact contact) {
     return 0;
 }
 
+void AddJointModelParameter(ParameterSet* set, int* index, const std::function<void()>& apply) {
+    set->AddChoice("joint-model", index, {ToString(JointModel::Book), ToString(JointModel::Tension)},
+                   "how distance joints hold their particles: book (projected back after the step: first order for "
+                   "every integrator) or tension (the joint's force in every force evaluation: each integrator keeps "
+                   "its order)",
+                   apply);
+}
+
+JointModel JointModelAt(int index) { return index == 1 ? JointModel::Tension : JointModel::Book; }
+
 void ClampAboveFloor(std::vector<Particle>* particles, float floorY) {
     for (Particle& particle : *particles) {
         const vec3 pos = particle.GetPosition();

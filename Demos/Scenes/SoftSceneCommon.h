@@ -7,6 +7,7 @@
 
 #include "Demos/Scenes/Parameters.h"
 #include "Physics/Integrator.h"
+#include "Physics/JointModel.h"
 #include "Physics/Particle.h"
 
 /// Integrator ids in IntegratorIds() order ("explicit-euler", "euler", ...): the "integrator" choice list.
@@ -32,6 +33,12 @@ void AddParticleContactParameter(ParameterSet* set, int* index, const std::funct
 ParticleContact ParticleContactAt(int index);
 /// The index of `contact` in that choice (ParticleContactAt's inverse).
 int ParticleContactIndex(ParticleContact contact);
+
+/// Registers "joint-model" (book|tension, bound to *index) on *set: how distance joints hold their particles
+/// (JointModel, docs/ch16.md "A joint that keeps the integrator's order"). `apply` puts the choice into the world.
+void AddJointModelParameter(ParameterSet* set, int* index, const std::function<void()>& apply);
+/// The JointModel at an index of that choice (book for anything else).
+JointModel JointModelAt(int index);
 
 /// The "integrator" choice behind a chapter 16 scene's panel. The scene owns its params; this holds the rest.
 /// Host time is not accumulated here: the host runs whole physics steps of the scene's dt (DemoBase::PhysicsStep).

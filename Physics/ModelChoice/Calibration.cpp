@@ -15,10 +15,11 @@ double ProcessCpuSeconds() {
 }
 
 /// Formal order of accuracy of a candidate on a space: contact (volumes or particles bouncing off constraints) is
-/// non-smooth, and a joint's projection after the integrator's step is a first-order splitting, so first order;
-/// otherwise the integrator's.
+/// non-smooth, and the book joint's projection after the integrator's step is a first-order splitting, so first order;
+/// otherwise (tension joints included) the integrator's.
 int OrderOf(const ModelCandidate& c, const CandidateSpace& space) {
     if (space.hasVolumes || space.hasContacts || space.hasJoints) return 1;
+    if (space.hasTensionJoints && c.integrator == Integrator::PositionVerlet) return 1;
     switch (c.integrator) {
         case Integrator::ExplicitEuler:
         case Integrator::SemiImplicitEuler:

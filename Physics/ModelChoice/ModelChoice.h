@@ -65,9 +65,14 @@ struct CandidateSpace {
     bool hasParticles = false;      ///< the world has particles (free, cloth or jointed): the integrator matters
     bool hasVolumes = false;        ///< the world has rigid volumes: the contact solver matters
     bool hasContacts = false;       ///< particles can hit constraints (non-smooth: first order at best)
-    /// Particles on distance joints: each step projects their positions back onto the joint and drops the velocity
-    /// along it, a first-order splitting whatever the integrator (docs/model-choice.md, "The candidates").
+    /// Particles on the book's distance joints (JointModel::Book): each step projects their positions back onto the
+    /// joint and drops the velocity along it, a first-order splitting whatever the integrator (docs/model-choice.md,
+    /// "The candidates"). False for JointModel::Tension, whose joints keep the integrator's order.
     bool hasJoints = false;
+    /// Particles on tension joints (JointModel::Tension): the integrator's order. Tension pulls only under velocity
+    /// Verlet and RK4 (TensionKeepsOrder); position Verlet, whose history the joint's projection restarts every step,
+    /// stays first order (docs/ch16.md).
+    bool hasTensionJoints = false;
     /// m: how far off a constraint's surface a particle that hits it is put (Particle::kContactOffset; 0: none). A
     /// bias against the rigid answer that no step removes: a position estimate is at least this once particles hit.
     double contactOffset = 0.0;

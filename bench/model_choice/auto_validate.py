@@ -36,6 +36,10 @@ PARTICLE_STEPS = [0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4]
 VOLUME_STEPS = [0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4]
 INTEGRATORS = {"explicit-euler": 1, "euler": 1, "velocity-verlet": 2, "verlet": 1, "rk4": 4}  # force evaluations
 PARTICLE_CONTACTS = ["book", "skin", "reflect"]  # world.particleContact, for particles that can hit a constraint
+# Distance joint models (world.jointModel, docs/ch16.md): "tension" pulls only under these integrators (elsewhere it is
+# the book's joint bit for bit, so the grid does not run it twice).
+JOINT_MODELS = ["book", "tension"]
+TENSION_INTEGRATORS = ("velocity-verlet", "rk4")
 SOLVERS = [("book", 5), ("book", 20), ("accumulated", 5), ("accumulated", 20), ("soft", 4), ("soft", 16)]
 CHEAPEST_WINDOW = 4.0  # after the first grid model meeting the budget, models up to this times its work also run
 CSV_COLUMNS = ["id", "family", "index", "budget", "duration", "parameters", "auto_exit", "refused", "auto_model",
@@ -83,14 +87,18 @@ class Instance:
             # Particles that can hit a constraint: every particle contact too (the engine's model space).
             contacts = PARTICLE_CONTACTS if self.contacts else [None]
             for integrator, evals in INTEGRATORS.items():
-                for step in PARTICLE_STEPS:
-                    for contact in contacts:
-                        world = {"integrator": integrator, "step": step}
-                        label = f"{integrator}, dt {step:g}"
-                        if contact:
-                            world["particleContact"] = contact
-                            label += f", {contact} contact"
-                        models.append({"label": label, "world": world, "work": self.duration / step * bodies * evals})
+                for joints in JOINT_MODELS if self.scene.get("joints") and integrator in TENSION_INTEGRATORS else [None]:
+                    for step in PARTICLE_STEPS:
+                        for contact in contacts:
+                            world = {"integrator": integrator, "step": step}
+                            label = f"{integrator}, dt {step:g}"
+                            if joints is not None:
+                                world["jointModel"] = joints
+                                label += f", {joints} joints"
+                            if contact:
+                                world["particleContact"] = contact
+                                label += f", {contact} contact"
+                            models.append({"label": label, "world": world, "work": self.duration / step * bodies * evals})
         return sorted(models, key=lambda m: m["work"])
 
     def error(self, run):

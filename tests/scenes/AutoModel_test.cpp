@@ -15,6 +15,7 @@
 
 #include "Demos/Scenes/FileScene.h"
 #include "Demos/Scenes/SceneFile.h"
+#include "Physics/DistanceJoint.h"
 #include "Physics/ModelChoice/ModelChoice.h"
 #include "Physics/PhysicsSystem.h"
 
@@ -418,18 +419,36 @@ TEST(AutoModel, AWholeRunChoiceIsNotWatched) {
     }
 }
 
+/// A reference problem's choice with the book's joints (JointModel::Book: first order whatever the integrator), which
+/// an auto run no longer uses (it runs joints as tension, docs/ch16.md); the checks below still guard every family
+/// whose error stops shrinking at the integrator's order, and this one shows them.
+ModelChoiceResult BookJointChoice(const std::string& name, double bound) {
+    SceneDescription d;
+    std::vector<std::string> errors;
+    const std::string path = std::string(PSB_SOURCE_DIR "/scenes/reference/") + name + ".json";
+    EXPECT_TRUE(LoadSceneFile(path, &d, &errors)) << path;
+    EXPECT_EQ(d.world.jointModel, JointModel::Book);
+    FileScene scene(d);
+    ParameterSet params;
+    scene.AddParameters(&params);
+    ChoiceSettings settings = Untimed();
+    settings.runSeconds = d.duration;
+    return ChooseModel(ProbesOf(scene.System()), AutoModel::SpaceOf(params, scene.System(), kHostStep),
+                       Budget(bound).Budget(), settings);
+}
+
 // A span estimate is not trusted below what its family's whole-run measurements predict. The 1 m pendulum at 120°
-// over 14.45 s (the validation's reference): RK4 down to 0.5 ms is cheap enough to be measured over the whole run
-// (0.80 m there); at 0.1 ms it is not, and its 0.72 s start span, extrapolated, says 1.8 mm. The joint makes the
-// family first order, so 0.1 ms is taken to be at least 0.16 m. With a budget of 7.8 cm nothing then meets it, and
-// the run is refused; without the floor RK4 at 0.1 ms was chosen and ended 0.41 m off
+// over 14.45 s (the validation's reference) on the book's joint: RK4 down to 0.5 ms is cheap enough to be measured over
+// the whole run (0.80 m there); at 0.1 ms it is not, and its 0.72 s start span, extrapolated, says 1.8 mm. The joint
+// makes the family first order, so 0.1 ms is taken to be at least 0.16 m. With a budget of 7.8 cm nothing then meets
+// it, and the run is refused; without the floor RK4 at 0.1 ms was chosen and ended 0.41 m off
 // (docs/model-choice-validation.md, a period error of 0.0052).
 TEST(AutoModel, ASpanEstimateIsNotTrustedBelowItsFamilysWholeRun) {
-    const Chosen run = ReferenceChoice("pendulum-large", 0.0784);
-    EXPECT_FALSE(run.chosen);
+    const ModelChoiceResult choice = BookJointChoice("pendulum-large", 0.0784);
+    EXPECT_FALSE(choice.feasible);
     const CandidateEstimate* fine = nullptr;
     const CandidateEstimate* measured = nullptr;  // the finest RK4 step measured over the whole run
-    for (const CandidateEstimate& e : run.autoModel.Choice().candidates) {
+    for (const CandidateEstimate& e : choice.candidates) {
         if (e.model.integrator != Integrator::RK4 || !e.evaluated) continue;
         if (std::fabs(e.model.step - 1e-4) < 1e-12) fine = &e;
         if (e.wholeRun && e.stable && (!measured || e.model.step < measured->model.step)) measured = &e;
@@ -442,19 +461,32 @@ TEST(AutoModel, ASpanEstimateIsNotTrustedBelowItsFamilysWholeRun) {
     EXPECT_NE(fine->note.find("raised from"), std::string::npos) << fine->note;
 }
 
+// An auto run puts the joints into tension (JointModel::Tension, docs/ch16.md): the same pendulum and budget the book's
+// joint cannot meet at any step is then chosen, at an order the integrator keeps.
+TEST(AutoModel, AWorldWithJointsRunsThemAsTension) {
+    const Chosen run = ReferenceChoice("pendulum-large", 0.0784);
+    ASSERT_TRUE(run.chosen) << run.error;
+    EXPECT_EQ(run.scene->System().settings.jointModel, JointModel::Tension);
+    EXPECT_EQ(run.params.Get("joint-model"), "tension");
+    const CandidateEstimate& chosen = run.autoModel.Choice().candidates[std::size_t(run.autoModel.Choice().chosen)];
+    EXPECT_TRUE(TensionKeepsOrder(chosen.model.integrator)) << chosen.model.Describe(true, false);
+    EXPECT_LE(chosen.estimate, 0.0784);
+}
+
 // A whole run's difference (at its end) is checked by a third probe at a quarter of the step, whose difference from
 // the refinement, when it is not smaller by the order's factor, says the error has stopped shrinking with the step. The
-// 120° pendulum with the validation's budget for a period error of 0.1 (1.73 m, docs/model-choice-validation.md): every
-// integrator's period error saturates near 0.25 at steps of 0.02 s and more (the sweep: semi-implicit Euler 0.244 at
-// 0.1 s, 0.253 at 0.05 s), so the candidate at 0.1 s and its refinement agree while both are far off. Without the third
-// probe semi-implicit Euler at 0.1 s was chosen (estimated 0.78 m) and ended 2.4 times over the period budget. The
-// finer pair differs more than the pair, so the error does not shrink at the candidate's order: it is unreliable, never
-// chosen, and its note (--explain-model) says so with the two differences.
+// 120° pendulum on the book's joint with the validation's budget for a period error of 0.1 (1.73 m,
+// docs/model-choice-validation.md): every integrator's period error saturates near 0.25 at steps of 0.02 s and more
+// (the sweep: semi-implicit Euler 0.244 at 0.1 s, 0.253 at 0.05 s), so the candidate at 0.1 s and its refinement agree
+// while both are far off. Without the third probe semi-implicit Euler at 0.1 s was chosen (estimated 0.78 m) and ended
+// 2.4 times over the period budget. The finer pair differs more than the pair, so the error does not shrink at the
+// candidate's order: it is unreliable, never chosen, and its note (--explain-model) says so with the two differences.
 TEST(AutoModel, AWholeRunDifferenceIsCheckedByAFinerPair) {
-    const Chosen run = ReferenceChoice("pendulum-large", 1.732);
-    ASSERT_TRUE(run.chosen) << run.error;
-    EXPECT_LE(run.autoModel.Current().step, 0.005) << run.autoModel.Current().Describe(true, false);
-    for (const CandidateEstimate& e : run.autoModel.Choice().candidates) {
+    const ModelChoiceResult choice = BookJointChoice("pendulum-large", 1.732);
+    ASSERT_TRUE(choice.feasible);
+    const CandidateEstimate& chosen = choice.candidates[static_cast<std::size_t>(choice.chosen)];
+    EXPECT_LE(chosen.model.step, 0.005) << chosen.model.Describe(true, false);
+    for (const CandidateEstimate& e : choice.candidates) {
         if (!e.evaluated || e.model.step < 0.1 - 1e-12) continue;
         EXPECT_TRUE(e.wholeRun) << e.model.Describe(true, false);
         EXPECT_FALSE(e.meets) << e.model.Describe(true, false);

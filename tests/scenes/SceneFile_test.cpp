@@ -60,7 +60,8 @@ TEST(SceneFile, ReadsEveryField) {
     const std::string text = R"({"format": 1, "name": "All", "duration": 4.5,
       "world": {"gravity": [0, -5, 0], "step": 0.01, "integrator": "rk4", "contactSolver": "accumulated",
                 "iterations": 12, "penetrationSlop": 0.02, "linearProjection": false, "projectionFraction": 0.3,
-                "substeps": 4, "warmStartFactor": 0.5, "baumgarte": 0.2, "restitutionThreshold": 2},
+                "substeps": 4, "warmStartFactor": 0.5, "baumgarte": 0.2, "restitutionThreshold": 2,
+                "jointModel": "tension"},
       "camera": {"target": [1, 2, 3], "rotation": [10, 20], "zoom": 15},
       "bodies": [{"id": "b", "type": "box", "position": [1, 2, 3], "halfExtents": [0.5, 1, 2], "euler": [0, 90, 0],
                   "velocity": [1, 0, 0], "angularVelocity": [0, 1, 0], "mass": 2, "restitution": 0.1,
@@ -79,6 +80,8 @@ TEST(SceneFile, ReadsEveryField) {
     EXPECT_TRUE(VecNear(d.world.gravity, vec3(0, -5, 0), 0.0f));
     EXPECT_EQ(d.world.step, 0.01f);
     EXPECT_EQ(d.world.integrator, Integrator::RK4);
+    EXPECT_EQ(d.world.jointModel, JointModel::Tension);
+    EXPECT_EQ(SceneWorld().jointModel, JointModel::Book) << "absent, the joints are the book's";
     EXPECT_EQ(d.world.contactSolver, ContactSolver::Accumulated);
     EXPECT_EQ(d.world.iterations, 12);
     EXPECT_FALSE(d.world.linearProjection);
@@ -185,6 +188,8 @@ TEST(SceneFile, OutOfRangeValuesAndNames) {
                            {"world.particleContact: is not a particle contact", "reflect", "\"bounce\""}));
     EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"contactSolver": "pgs"})")),
                            {"world.contactSolver: is not a contact solver"}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"jointModel": "rigid"})")),
+                           {"world.jointModel: is not a joint model", "book, tension", "\"rigid\""}));
     EXPECT_TRUE(
         OneProblem(Problems(File(kBox, R"("world": {"iterations": 0})")), {"world.iterations: must be in [1, 1000]"}));
     EXPECT_TRUE(OneProblem(Problems(R"({"format": 2, "name": "t"})"), {"format: is not a version this build reads"}));
@@ -507,13 +512,15 @@ TEST(FileScene, AppliesWorldSettingsAndBodyFields) {
                                    "velocityEpsilon": 0},
                                   {"id": "p", "type": "particle", "position": [1, 2, 3], "restitution": 0.3})",
                               R"("world": {"gravity": [0, -2, 0], "iterations": 9, "integrator": "verlet",
-                                           "contactSolver": "accumulated", "substeps": 3})"),
+                                           "contactSolver": "accumulated", "substeps": 3,
+                                           "jointModel": "tension"})"),
                          &d)
                     .empty());
     FileScene scene(d);
     const WorldSettings& s = scene.System().settings;
     EXPECT_EQ(s.solverIterations, 9);
     EXPECT_EQ(s.integrator, Integrator::PositionVerlet);
+    EXPECT_EQ(s.jointModel, JointModel::Tension);
     EXPECT_EQ(s.contactSolver, ContactSolver::Accumulated);
     EXPECT_EQ(s.maxVolumeSubsteps, 3);
     const RigidbodyVolume& v = scene.Volumes()[0];
@@ -593,7 +600,7 @@ TEST(SceneExport, WrittenTextReadsBackToTheSameWorld) {
                                  "joints": [{"a": "p", "b": "q", "length": 1}],
                                  "constraints": [{"position": [0, -1, 0], "halfExtents": [5, 1, 5]}],
                                  "cloths": [{"gridSize": 4, "spacing": 0.3, "position": [0, 4, 0]}],
-                                 "world": {"iterations": 7, "integrator": "rk4"})"),
+                                 "world": {"iterations": 7, "integrator": "rk4", "jointModel": "tension"})"),
                          &d)
                     .empty());
     FileScene original(d);
@@ -608,6 +615,7 @@ TEST(SceneExport, WrittenTextReadsBackToTheSameWorld) {
     EXPECT_EQ(copy.Volumes()[0].velocityEpsilon, RigidbodyVolume().velocityEpsilon);
     EXPECT_EQ(copy.System().settings.solverIterations, 7);
     EXPECT_EQ(copy.System().settings.integrator, Integrator::RK4);
+    EXPECT_EQ(copy.System().settings.jointModel, JointModel::Tension);
     ASSERT_EQ(copy.System().Bodies().size(), original.System().Bodies().size());
     ASSERT_EQ(copy.System().Springs().size(), 1u);
     EXPECT_EQ(copy.System().Springs()[0].b, 0.5f);
