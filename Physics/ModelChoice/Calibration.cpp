@@ -301,6 +301,9 @@ private:
 
 SpanResult RunSpan(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
                    const ErrorBudget& budget, double span, const SpanOptions& o) {
+    if (o.wholeRun && o.clock && o.clock->SharesWholeRuns() && budget.quantity != BudgetQuantity::Constraint) {
+        return RunWholeShared(factory, candidate, space, budget, span, o);
+    }
     return SpanRun(factory, candidate, space, budget, span, o).Run();
 }
 
