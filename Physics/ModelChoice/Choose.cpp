@@ -61,6 +61,16 @@ double OffsetEnergyShare(const PhysicsSystem& world, const CandidateSpace& space
     return raised / std::max(std::fabs(WorldEnergy(world)), 1e-12);
 }
 
+/// `plan` with a span over the first contact of a world of several volumes that starts in free flight, if any
+/// (FindContactOnset).
+std::vector<PlannedSpan> WithOnsetSpan(std::vector<PlannedSpan> plan, const ProbeFactory& factory,
+                                       const CandidateSpace& space, const ChoiceSettings& settings, double span,
+                                       ModelChoiceResult* result, ChoiceClock* clock) {
+    const ContactOnset o = FindContactOnset(factory, space, settings, span, result, clock);
+    if (o.start > 0.0) plan.push_back({PlannedSpan::Kind::Event, o.from, o.start, settings.runSeconds - o.start, 0});
+    return plan;
+}
+
 /// The calibration's spans: one at the start and, for a world without volumes, up to settings.eventSpans around
 /// events the start span cannot see (a bounce, a cloth reaching an obstacle), from snapshots of a pilot run of the
 /// scene's own model over the whole run. Particles restart exactly from a snapshot; volumes would lose their contact
@@ -79,13 +89,7 @@ std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateS
     const double interval = span / 2.0;
     const int intervals = static_cast<int>(std::ceil(T / interval - 1e-9));
     if (settings.eventSpans <= 0 || intervals < 4) return plan;
-    if (space.hasVolumes) {  // one span over the contact onset of a world that starts in free flight, if any
-        const ContactOnset onset =
-            space.volumeCount > 1.0 ? FindContactOnset(factory, space, settings, span, result, clock) : ContactOnset{};
-        if (onset.start > 0.0) plan.push_back({Kind::Event, onset.from, onset.start, T - onset.start, 0});
-        if (onset.start > 0.0) result->eventTimes.push_back(onset.start);
-        return plan;
-    }
+    if (space.hasVolumes) return WithOnsetSpan(std::move(plan), factory, space, settings, span, result, clock);
     const double start = ProcessCpuSeconds();
     clock->StartPiece();
     clock->Candidate(0.0, "the pilot run of the scene's own model");
@@ -151,10 +155,8 @@ std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateS
         plan.push_back({Kind::Event, snapshots[static_cast<std::size_t>(k - 1)], begin, T - begin, 0});
         result->eventTimes.push_back(begin);
     }
-    result->pilotCpuSeconds = ProcessCpuSeconds() - start;
-    result->calibrationWork += PredictedWork(space.base, space) * static_cast<double>(n) * h;
-    result->calibrationCpuSeconds += result->pilotCpuSeconds;
-    clock->Add(result->pilotCpuSeconds, PredictedWork(space.base, space) * static_cast<double>(n) * h);
+    AccountPilot(ProcessCpuSeconds() - start, PredictedWork(space.base, space) * static_cast<double>(n) * h, result,
+                 clock);
     return plan;
 }
 

@@ -162,11 +162,15 @@ SpanResult RunSpan(const ProbeFactory& factory, const ModelCandidate& candidate,
 /// m/s: the fastest point between two sets of positions a step `h` apart (0 when they differ in size).
 double FastestPoint(const std::vector<double>& now, const std::vector<double>& before, double h);
 
+/// Adds a pilot run's CPU and work to the choice's calibration and its clock.
+void AccountPilot(double cpuSeconds, double work, ModelChoiceResult* result, ChoiceClock* clock);
+
 /// Where a world of volumes estimated on spans first makes contact, when it starts in free flight and the start span
 /// ends before it (Physics/ModelChoice/Onset.cpp): a pilot run of the scene's own model up to its first colliding
 /// pair, its snapshots taken while nothing touched (a probe from one lacks no contact history). `from` builds probes
-/// from the snapshot a span covering the onset starts at, `start` s into the run (< 0: no such onset). The pilot's
-/// cost is added to *result and the clock.
+/// from the snapshot a span covering the onset starts at, `start` s into the run (< 0: no such onset; a world of one
+/// volume has none, being measured over the whole run), also added to result->eventTimes. The pilot's cost is added to
+/// *result and the clock.
 struct ContactOnset {
     ProbeFactory from;
     double start = -1.0;

@@ -17,12 +17,19 @@ double FastestPoint(const std::vector<double>& now, const std::vector<double>& b
     return speed;
 }
 
+void AccountPilot(double cpuSeconds, double work, ModelChoiceResult* result, ChoiceClock* clock) {
+    result->pilotCpuSeconds += cpuSeconds;
+    result->calibrationWork += work;
+    result->calibrationCpuSeconds += cpuSeconds;
+    clock->Add(cpuSeconds, work);
+}
+
 ContactOnset FindContactOnset(const ProbeFactory& factory, const CandidateSpace& space, const ChoiceSettings& settings,
                               double span, ModelChoiceResult* result, ChoiceClock* clock) {
     ContactOnset out;
     const double T = settings.runSeconds;
     const double h = space.base.step;
-    if (!(h > 0.0)) return out;
+    if (!(h > 0.0) || space.volumeCount < 2.0) return out;  // one volume: measured over the whole run
     const double start = ProcessCpuSeconds();
     clock->StartPiece();
     clock->Candidate(0.0, "the pilot run of the scene's own model, to its first contact");
@@ -49,12 +56,8 @@ ContactOnset FindContactOnset(const ProbeFactory& factory, const CandidateSpace&
             lastTime = static_cast<double>(n) * h;
         }
     }
-    const double work = PredictedWork(space.base, space) * static_cast<double>(n) * h;
-    const double cpu = ProcessCpuSeconds() - start;
-    result->pilotCpuSeconds += cpu;
-    result->calibrationWork += work;
-    result->calibrationCpuSeconds += cpu;
-    clock->Add(cpu, work);
+    AccountPilot(ProcessCpuSeconds() - start, PredictedWork(space.base, space) * static_cast<double>(n) * h, result,
+                 clock);
     // The start span covers an onset within it; one past it gets a span from the newest contact-free snapshot at
     // least a quarter span before it (a speculative contact may carry solver state just before a touch), which
     // then covers the first half span or more after the touch.
@@ -62,7 +65,8 @@ ContactOnset FindContactOnset(const ProbeFactory& factory, const CandidateSpace&
     const bool older = lastTime > onset - 0.25 * span && previousTime > 0.0;
     out.from = older ? previous : last;
     out.start = older ? previousTime : lastTime;
-    if (!(out.start > 0.0)) out = ContactOnset{};
+    if (!(out.start > 0.0)) return ContactOnset{};
+    result->eventTimes.push_back(out.start);
     return out;
 }
 

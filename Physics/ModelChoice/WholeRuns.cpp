@@ -31,6 +31,21 @@ int FailSample(const WholeRunRecord& r, const ModelCandidate& m, double candidat
     return samples + 1;
 }
 
+/// The budget's quantity between two runs' states at one end: the largest distance of a body, or the energy's
+/// difference over `energyScale`.
+double Differ(const WholeRunRecord::AtEnd& a, const WholeRunRecord::AtEnd& b, BudgetQuantity quantity,
+              double energyScale) {
+    if (quantity == BudgetQuantity::Energy) return std::fabs(a.energy - b.energy) / energyScale;
+    double worst = 0.0;
+    const std::size_t n = std::min(a.positions.size(), b.positions.size());
+    for (std::size_t i = 0; i + 2 < n; i += 3) {
+        const double d[3] = {a.positions[i] - b.positions[i], a.positions[i + 1] - b.positions[i + 1],
+                             a.positions[i + 2] - b.positions[i + 2]};
+        worst = std::max(worst, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+    }
+    return worst;
+}
+
 /// s: where a whole run of a candidate of step `step` over `span` s ends (SpanRun's measured part: whole steps).
 double WholeRunEnd(double step, double span) {
     return step * static_cast<double>(std::max(2LL, std::llround(span / step)));
@@ -84,6 +99,17 @@ bool RunOne(const ProbeFactory& factory, const ModelCandidate& m, const Candidat
     return true;
 }
 
+/// Makes sure the cache holds `m`'s run with its state at `end` (or its failure); false when the clock stopped it.
+bool Keep(const ProbeFactory& factory, const ModelCandidate& m, const CandidateSpace& space, double span, double end,
+          ChoiceClock* clock, double pieceStart, double* work) {
+    const WholeRunRecord* kept = clock->runs.Find(m);
+    if (kept && (kept->failStep >= 0 || kept->At(end))) return true;
+    WholeRunRecord made;
+    if (!RunOne(factory, m, space, span, clock, pieceStart, work, &made)) return false;
+    clock->runs.records.push_back(std::move(made));
+    return true;
+}
+
 }  // namespace
 
 const WholeRunRecord* WholeRunCache::Find(const ModelCandidate& m) const {
@@ -105,16 +131,8 @@ SpanResult RunWholeShared(const ProbeFactory& factory, const ModelCandidate& can
     const double start = ProcessCpuSeconds();
     clock.StartPiece();
     double work = 0.0;
-    for (int i = 0; i < 3 && !r.stopped; ++i) {
-        const WholeRunRecord* kept = clock.runs.Find(models[i]);
-        if (kept && (kept->failStep >= 0 || kept->At(end))) continue;
-        WholeRunRecord made;
-        if (RunOne(factory, models[i], space, span, &clock, start, &work, &made)) {
-            clock.runs.records.push_back(std::move(made));
-        } else {
-            r.stopped = true;
-        }
-    }
+    for (int i = 0; i < 3 && !r.stopped; ++i)
+        r.stopped = !Keep(factory, models[i], space, span, end, &clock, start, &work);
     r.probeCpuSeconds = ProcessCpuSeconds() - start;
     r.work = work;
     clock.Add(r.probeCpuSeconds, work);
@@ -147,19 +165,8 @@ SpanResult RunWholeShared(const ProbeFactory& factory, const ModelCandidate& can
     }
     const double energyScale =
         budget.quantity == BudgetQuantity::Energy ? std::max(std::fabs(WorldEnergy(factory()->World())), 1e-12) : 1.0;
-    auto differ = [&](const WholeRunRecord::AtEnd& a, const WholeRunRecord::AtEnd& b) {
-        if (budget.quantity == BudgetQuantity::Energy) return std::fabs(a.energy - b.energy) / energyScale;
-        double worst = 0.0;
-        const std::size_t n = std::min(a.positions.size(), b.positions.size());
-        for (std::size_t i = 0; i + 2 < n; i += 3) {
-            const double d[3] = {a.positions[i] - b.positions[i], a.positions[i + 1] - b.positions[i + 1],
-                                 a.positions[i + 2] - b.positions[i + 2]};
-            worst = std::max(worst, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
-        }
-        return worst;
-    };
-    const double pair = differ(*at[0], *at[1]);
-    const double finer = differ(*at[1], *at[2]);
+    const double pair = Differ(*at[0], *at[1], budget.quantity, energyScale);
+    const double finer = Differ(*at[1], *at[2], budget.quantity, energyScale);
     if (!std::isfinite(pair)) {
         r.stable = false;
         return r;
