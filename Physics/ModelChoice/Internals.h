@@ -183,6 +183,9 @@ ContactOnset FindContactOnset(const ProbeFactory& factory, const CandidateSpace&
 /// WholeRunCache and run once per choice (Physics/ModelChoice/WholeRuns.cpp).
 SpanResult RunWholeShared(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
                           const ErrorBudget& budget, double span, const SpanOptions& o);
+/// A whole run judged at its end (SpanRun: energy and position budgets; not a position budget whose impacts are
+/// timed inside their step, judged by the largest difference over the run; not constraint error, observed).
+bool JudgedAtEnd(const SpanOptions& o, const ErrorBudget& budget, const CandidateSpace& space);
 /// Steps a candidate's positions are advanced by per simulated second (soft substeps on volumes).
 double UpdatesPerSecond(const ModelCandidate& c, const CandidateSpace& space);
 /// The refinement a span uses: Refine, or half the step (`byStep`).
