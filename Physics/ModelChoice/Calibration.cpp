@@ -103,6 +103,11 @@ double UpdatesPerSecond(const ModelCandidate& c, const CandidateSpace& space) {
     return (substeps ? static_cast<double>(c.softSubsteps) : 1.0) / c.step;
 }
 
+bool JudgedAtEnd(const SpanOptions& o, const ErrorBudget& budget, const CandidateSpace& space) {
+    return o.wholeRun && budget.quantity != BudgetQuantity::Constraint &&
+           !(budget.quantity == BudgetQuantity::Position && space.impactsTimedInStep);
+}
+
 /// The refinement a span uses: Refine, or half the step (`byStep`: the convergence check along the step).
 ModelCandidate RefineFor(const ModelCandidate& c, const CandidateSpace& space, bool byStep) {
     if (!byStep) return Refine(c, space);
@@ -150,8 +155,7 @@ public:
         // two runs' impacts fall at nearly the same time, so the largest difference over the run is a measure as
         // for a smooth motion, and the end alone is not one, where coarse probes whose bounces died down early all
         // rest on the surface together while the answer still bounces.
-        atEnd = o.wholeRun && budget.quantity != BudgetQuantity::Constraint &&
-                !(budget.quantity == BudgetQuantity::Position && space.impactsTimedInStep);
+        atEnd = JudgedAtEnd(o, budget, space);
         if (third) {
             finest = factory();
             finest->Apply(refinedTwice);
@@ -301,6 +305,10 @@ private:
 
 SpanResult RunSpan(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
                    const ErrorBudget& budget, double span, const SpanOptions& o) {
+    // Shared whole runs keep each run's state at its ends only: for a span judged at its end.
+    if (JudgedAtEnd(o, budget, space) && o.clock && o.clock->SharesWholeRuns()) {
+        return RunWholeShared(factory, candidate, space, budget, span, o);
+    }
     return SpanRun(factory, candidate, space, budget, span, o).Run();
 }
 

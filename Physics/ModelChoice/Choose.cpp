@@ -35,16 +35,6 @@ int Impacts(std::vector<double> jump) {
     return count;
 }
 
-/// m/s: the fastest point between two sets of positions a step `h` apart (0 when they differ in size).
-double FastestPoint(const std::vector<double>& now, const std::vector<double>& before, double h) {
-    double speed = 0.0;
-    for (std::size_t i = 0; i + 2 < now.size() && before.size() == now.size(); i += 3) {
-        const double d[3] = {now[i] - before[i], now[i + 1] - before[i + 1], now[i + 2] - before[i + 2]};
-        speed = std::max(speed, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / h);
-    }
-    return speed;
-}
-
 /// Still flying near the pilot's end: its fastest point over the last interval (`speed`, m/s: not at the end alone,
 /// where a bounce can be at its apex) is faster than a hop of the contact offset's height under the strongest
 /// gravity; slower, a particle rests at the contact's resting height, the model's own (RaiseToImpactTiming).
@@ -71,10 +61,22 @@ double OffsetEnergyShare(const PhysicsSystem& world, const CandidateSpace& space
     return raised / std::max(std::fabs(WorldEnergy(world)), 1e-12);
 }
 
+/// `plan` with a span over the first contact of a world of several volumes that starts in free flight, if any
+/// (FindContactOnset).
+std::vector<PlannedSpan> WithOnsetSpan(std::vector<PlannedSpan> plan, const ProbeFactory& factory,
+                                       const CandidateSpace& space, const ChoiceSettings& settings, double span,
+                                       ModelChoiceResult* result, ChoiceClock* clock) {
+    const ContactOnset o = FindContactOnset(factory, space, settings, span, result, clock);
+    if (o.start > 0.0) plan.push_back({PlannedSpan::Kind::Event, o.from, o.start, settings.runSeconds - o.start, 0});
+    return plan;
+}
+
 /// The calibration's spans: one at the start and, for a world without volumes, up to settings.eventSpans around
 /// events the start span cannot see (a bounce, a cloth reaching an obstacle), from snapshots of a pilot run of the
 /// scene's own model over the whole run. Particles restart exactly from a snapshot; volumes would lose their contact
-/// history (and the scene's own model may let a stack fall), so their events are left to the live watch. Each
+/// history (and the scene's own model may let a stack fall), so their events are left to the live watch, except a
+/// world of several volumes that starts in free flight: its first contact gets a span from a snapshot taken before
+/// anything touched (FindContactOnset), which has no contact history to lose. Each
 /// step's irregularity is the largest change of any point's acceleration times the step (m/s: what an impulse does,
 /// and what gravity or a smooth spring hardly does); the run is cut into intervals of half a span, and an interval
 /// ten times more irregular than any the start span covers gets a span from the snapshot of the interval before.
@@ -86,7 +88,8 @@ std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateS
     std::vector<PlannedSpan> plan{{Kind::Start, factory, 0.0, T, 0}};
     const double interval = span / 2.0;
     const int intervals = static_cast<int>(std::ceil(T / interval - 1e-9));
-    if (settings.eventSpans <= 0 || space.hasVolumes || intervals < 4) return plan;
+    if (settings.eventSpans <= 0 || intervals < 4) return plan;
+    if (space.hasVolumes) return WithOnsetSpan(std::move(plan), factory, space, settings, span, result, clock);
     const double start = ProcessCpuSeconds();
     clock->StartPiece();
     clock->Candidate(0.0, "the pilot run of the scene's own model");
@@ -152,10 +155,8 @@ std::vector<PlannedSpan> PlanSpans(const ProbeFactory& factory, const CandidateS
         plan.push_back({Kind::Event, snapshots[static_cast<std::size_t>(k - 1)], begin, T - begin, 0});
         result->eventTimes.push_back(begin);
     }
-    result->pilotCpuSeconds = ProcessCpuSeconds() - start;
-    result->calibrationWork += PredictedWork(space.base, space) * static_cast<double>(n) * h;
-    result->calibrationCpuSeconds += result->pilotCpuSeconds;
-    clock->Add(result->pilotCpuSeconds, PredictedWork(space.base, space) * static_cast<double>(n) * h);
+    AccountPilot(ProcessCpuSeconds() - start, PredictedWork(space.base, space) * static_cast<double>(n) * h, result,
+                 clock);
     return plan;
 }
 

@@ -37,6 +37,31 @@ double SpanFor(const ChoiceSettings& s);
 /// the largest coordinate (at least 1 m) for positions and joints.
 double ConvergenceNoise(BudgetQuantity quantity, const std::vector<double>& positions, double steps);
 
+/// A model's whole run from the start, kept for the candidates that share it (Physics/ModelChoice/WholeRuns.cpp):
+/// its state at each end a candidate that runs it may measure at.
+struct WholeRunRecord {
+    struct AtEnd {
+        double end = 0.0;  // s
+        std::vector<double> positions;
+        double energy = 0.0;  // J
+    };
+    ModelCandidate model;
+    long long failStep = -1;  // the step (1-based) at which it blew up or stopped, else < 0
+    std::vector<AtEnd> ends;
+    double cpuSeconds = 0.0;  // its own run's
+    const AtEnd* At(double end) const {
+        for (const AtEnd& a : ends) {
+            if (a.end == end) return &a;
+        }
+        return nullptr;
+    }
+};
+/// The whole runs of one choice, all from its start (the calibration's first span).
+struct WholeRunCache {
+    const WholeRunRecord* Find(const ModelCandidate& m) const;
+    std::vector<WholeRunRecord> records;
+};
+
 /// The choice's CPU limit and its progress lines (ChoiceSettings::cpuLimit, runShare, progress). Spans report
 /// what they cost when they end (Add, from the clock reads they make anyway); inside a span the clock is read only
 /// once enough predicted work has passed since the last read (about a millisecond), so a microsecond problem reads
@@ -74,6 +99,8 @@ public:
     }
     double Spent() const { return spent; }
     void StartPiece() { polledWork = 0.0; }
+    WholeRunCache runs;  ///< the choice's whole runs, shared between candidates (RunWholeShared)
+    bool SharesWholeRuns() const { return settings.shareWholeRuns; }
 
 private:
     static constexpr double kPollWork = 4e4;  // PredictedWork units, about a millisecond of CPU
@@ -131,6 +158,38 @@ struct SpanOptions {
 /// for `span` seconds (Physics/ModelChoice/Calibration.cpp says how).
 SpanResult RunSpan(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
                    const ErrorBudget& budget, double span, const SpanOptions& o);
+
+/// m/s: the fastest point between two sets of positions a step `h` apart (0 when they differ in size).
+double FastestPoint(const std::vector<double>& now, const std::vector<double>& before, double h);
+
+/// Adds a pilot run's CPU and work to the choice's calibration and its clock.
+void AccountPilot(double cpuSeconds, double work, ModelChoiceResult* result, ChoiceClock* clock);
+
+/// Where a world of volumes estimated on spans first makes contact, when it starts in free flight and the start span
+/// ends before it (Physics/ModelChoice/Onset.cpp): a pilot run of the scene's own model up to its first colliding
+/// pair, its snapshots taken while nothing touched (a probe from one lacks no contact history). `from` builds probes
+/// from the snapshot a span covering the onset starts at, `start` s into the run (< 0: no such onset; a world of one
+/// volume has none, being measured over the whole run), also added to result->eventTimes. The pilot's cost is added to
+/// *result and the clock.
+struct ContactOnset {
+    ProbeFactory from;
+    double start = -1.0;
+};
+ContactOnset FindContactOnset(const ProbeFactory& factory, const CandidateSpace& space, const ChoiceSettings& settings,
+                              double span, ModelChoiceResult* result, ChoiceClock* clock);
+
+/// RunSpan over the whole run from the choice's start (SpanOptions::wholeRun, a position or energy budget, with the
+/// choice's clock): the same figures as the side-by-side span, each of the three probes' runs kept in the clock's
+/// WholeRunCache and run once per choice (Physics/ModelChoice/WholeRuns.cpp).
+SpanResult RunWholeShared(const ProbeFactory& factory, const ModelCandidate& candidate, const CandidateSpace& space,
+                          const ErrorBudget& budget, double span, const SpanOptions& o);
+/// A whole run judged at its end (SpanRun: energy and position budgets; not a position budget whose impacts are
+/// timed inside their step, judged by the largest difference over the run; not constraint error, observed).
+bool JudgedAtEnd(const SpanOptions& o, const ErrorBudget& budget, const CandidateSpace& space);
+/// Steps a candidate's positions are advanced by per simulated second (soft substeps on volumes).
+double UpdatesPerSecond(const ModelCandidate& c, const CandidateSpace& space);
+/// The refinement a span uses: Refine, or half the step (`byStep`).
+ModelCandidate RefineFor(const ModelCandidate& c, const CandidateSpace& space, bool byStep);
 
 /// FamilyFloor: what the nearest coarser whole-run rung of e's family with the same passes predicts for e, at the
 /// order its two nearest such rungs showed, kept between 1 and the formal order (floor 0: no such rung); that rung's

@@ -150,6 +150,10 @@ struct ChoiceSettings {
     /// instead of spans: the difference at the run's end, measured rather than extrapolated (a bounce's or a
     /// period's error, which a span cannot see). About 0.13 s of CPU for a particle world; 0: never.
     double wholeRunWork = 5e6;
+    /// Whole runs are shared between candidates: each model's run from the start is made once per choice and kept
+    /// (the soft solver's refinement, twice the substeps, is the next candidate of its family). False runs each
+    /// candidate's three probes side by side, for the same figures at a higher cost (a comparison).
+    bool shareWholeRuns = true;
     /// A calibration span (not a whole run) stops at the first sample whose difference alone already misses the
     /// budget: the candidate misses, and the rest of the span would only say by how much. False runs every
     /// span to its end (the same choice at a higher cost, as a comparison).

@@ -35,12 +35,20 @@ FamilyPrediction FamilyFloor(const std::vector<CandidateEstimate>& candidates, c
     return {nearest->estimate * std::pow(e->model.step / nearest->model.step, p), nearest->model.step, p};
 }
 
+/// An estimate whose error was seen to shrink at its order (CheckOrder ran, above rounding, and passed).
+bool CheckedRung(const CandidateEstimate& f) {
+    return f.evaluated && f.stable && !f.partial && !f.unreliable && !f.withinRounding && f.finerDifference > 0.0 &&
+           f.pairDifference > 0.0 && std::isfinite(f.estimate);
+}
+
 /// WhySkip's prediction of a finer step from `nearest`, the nearest coarser rung of e's family with the same passes
 /// that was estimated: its estimate times the step ratio to the power of the candidate's order, or of the order the
 /// family's two nearest such rungs showed (complete estimates) where that is faster. At the formal order alone the
 /// rung may be at most 2.5 steps coarser (coarser steps are often outside the asymptotic range, where an error does
 /// not shrink with the step as its order says); with two rungs that showed their order, up to 5 (an order of 2 where
-/// 1 is assumed stays within the factor 8 of the rule). Predicted above 8 times the bound: not run.
+/// 1 is assumed stays within the factor 8 of the rule); from a rung whose own error was seen to shrink at its order
+/// (CheckedRung), up to 10, at the faster of that order and the one its pairs showed. Predicted above 8 times the
+/// bound: not run.
 std::string PredictedMiss(const ModelChoiceResult& result, const std::vector<std::size_t>& order, std::size_t k,
                           const CandidateEstimate& nearest, const CandidateEstimate& e, const CandidateSpace& space,
                           double bound) {
@@ -60,7 +68,15 @@ std::string PredictedMiss(const ModelChoiceResult& result, const std::vector<std
     } else if (observed) {
         p = kInf;  // the error did not shrink between the rungs: no order to predict with
     }
-    if (!std::isfinite(p) || nearest.model.step > (observed ? 5.0 : 2.5) * e.model.step) return "";
+    double reach = observed ? 5.0 : 2.5;
+    // A rung whose own error was seen to shrink at its order (CheckOrder: its pair and its finer pair, above
+    // rounding) is in the range where the order holds: it predicts up to 10 steps finer, at the faster of the formal
+    // order and the one its two pairs showed.
+    if (CheckedRung(nearest)) {
+        reach = 10.0;
+        p = std::max(p, std::log2(nearest.pairDifference / nearest.finerDifference));
+    }
+    if (!std::isfinite(p) || nearest.model.step > reach * (1.0 + 1e-9) * e.model.step) return "";
     const double predicted = nearest.estimate * std::pow(e.model.step / nearest.model.step, p);
     if (!(predicted > 8.0 * bound)) return "";
     char text[120];
