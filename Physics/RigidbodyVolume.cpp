@@ -3,7 +3,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include "Physics/EnumIds.h"
+
 namespace {
+
+constexpr EnumId<VolumePositions> kVolumePositionsIds[] = {{VolumePositions::Euler, "euler"},
+                                                           {VolumePositions::Average, "average"}};
 
 /// sum_k d_k * axis_k^T axis_k for the rows axis_k of R: the row-vector form R^T diag(d) R.
 mat3 RotateDiagonal(const mat3& R, const vec3& d) {
@@ -25,6 +30,14 @@ void ZeroSmall(vec3& v, float epsilon) {
 bool IsIsotropic(const vec3& inertia) { return inertia.x == inertia.y && inertia.y == inertia.z; }
 
 }  // namespace
+
+const char* ToString(VolumePositions mode) { return IdOf(kVolumePositionsIds, mode); }
+
+bool ParseVolumePositions(const std::string& text, VolumePositions* out) {
+    return ParseId(kVolumePositionsIds, text, out);
+}
+
+std::string VolumePositionsIds() { return JoinIds(kVolumePositionsIds); }
 
 void RigidbodyVolume::ApplyForces() { forces = gravity * mass; }
 
@@ -72,7 +85,19 @@ void RigidbodyVolume::IntegrateVelocity(float dt) {
 
 void RigidbodyVolume::IntegratePosition(float dt) {
     position += velocity * dt;
+    AdvanceOrientation(dt);
+}
 
+void RigidbodyVolume::IntegratePosition(float dt, VolumePositions mode) {
+    if (mode == VolumePositions::Average) {
+        position += (startVelocity + velocity) * (0.5f * dt);
+        AdvanceOrientation(dt);
+        return;
+    }
+    IntegratePosition(dt);
+}
+
+void RigidbodyVolume::AdvanceOrientation(float dt) {
     if (InvMass() > 0.0f) {
         orientation = AdvanceRotation(orientation, &angVel, LocalInertia(), dt);
     } else if (MagnitudeSq(angVel) > 0.0f) {
