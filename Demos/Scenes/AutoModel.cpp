@@ -213,6 +213,12 @@ bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double 
         params->Get("joint-model") != ToString(JointModel::Tension) &&
         !params->Set("joint-model", ToString(JointModel::Tension), error))
         return false;
+    // And volumes move by each (sub)step's mean velocity, exact for constant acceleration (free fall, a steady slide;
+    // docs/ch15.md "A position update exact for constant acceleration"): the book's x += v h is first order there.
+    const char* positions = ToString(VolumePositions::Average);
+    if (!world.Volumes().empty() && params->Find("volume-positions") != nullptr &&
+        params->Get("volume-positions") != positions && !params->Set("volume-positions", positions, error))
+        return false;
     space = SpaceOf(*params, world, hostStep);
     settings = tuning;
     settings.runSeconds = runSeconds;
