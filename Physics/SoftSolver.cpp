@@ -367,7 +367,9 @@ void SoftContactSolver::IntegratePositions(const StepContext& ctx, const Block& 
         BodySim& bs = sim[i];
         BodyState& st = state[i];
         // VolumePositions::Average: the substep's mean velocity, exact for constant acceleration.
-        const vec3 move = averagePositions ? (bs.vStart + st.v) * (0.5f * h) : st.v * h;
+        // A substep whose velocity changes by more than twice g h (an impact) moves by v h (RigidbodyVolume).
+        const bool smooth = averagePositions && MagnitudeSq(st.v - bs.vStart) <= 4.0f * MagnitudeSq(bs.gravityStep);
+        const vec3 move = smooth ? (bs.vStart + st.v) * (0.5f * h) : st.v * h;
         st.dp += move;
         bs.p += move;
         // Orientation advanced by the world angular velocity (exponential map, normalised), keeping the world
