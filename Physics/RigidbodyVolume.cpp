@@ -3,7 +3,12 @@
 #include <cmath>
 #include <cstdio>
 
+#include "Physics/EnumIds.h"
+
 namespace {
+
+constexpr EnumId<VolumePositions> kVolumePositionsIds[] = {{VolumePositions::Euler, "euler"},
+                                                           {VolumePositions::Average, "average"}};
 
 /// sum_k d_k * axis_k^T axis_k for the rows axis_k of R: the row-vector form R^T diag(d) R.
 mat3 RotateDiagonal(const mat3& R, const vec3& d) {
@@ -22,9 +27,24 @@ void ZeroSmall(vec3& v, float epsilon) {
         if (std::fabs(v[i]) < epsilon) v[i] = 0.0f;
 }
 
+/// An impact is not a constant acceleration: it changes the velocity by more than gravity and friction can over a
+/// step, and the mean of the velocities before and after it would carry the body half a step into what stopped it.
+/// A step whose velocity change exceeds twice g h moves by the end velocity (x += v h) as the default does.
+bool SmoothStep(const vec3& start, const vec3& end, const vec3& gravityStep) {
+    return MagnitudeSq(end - start) <= 4.0f * MagnitudeSq(gravityStep);
+}
+
 bool IsIsotropic(const vec3& inertia) { return inertia.x == inertia.y && inertia.y == inertia.z; }
 
 }  // namespace
+
+const char* ToString(VolumePositions mode) { return IdOf(kVolumePositionsIds, mode); }
+
+bool ParseVolumePositions(const std::string& text, VolumePositions* out) {
+    return ParseId(kVolumePositionsIds, text, out);
+}
+
+std::string VolumePositionsIds() { return JoinIds(kVolumePositionsIds); }
 
 void RigidbodyVolume::ApplyForces() { forces = gravity * mass; }
 
@@ -72,7 +92,19 @@ void RigidbodyVolume::IntegrateVelocity(float dt) {
 
 void RigidbodyVolume::IntegratePosition(float dt) {
     position += velocity * dt;
+    AdvanceOrientation(dt);
+}
 
+void RigidbodyVolume::IntegratePosition(float dt, VolumePositions mode) {
+    if (mode == VolumePositions::Average && SmoothStep(startVelocity, velocity, gravity * dt)) {
+        position += (startVelocity + velocity) * (0.5f * dt);
+        AdvanceOrientation(dt);
+        return;
+    }
+    IntegratePosition(dt);
+}
+
+void RigidbodyVolume::AdvanceOrientation(float dt) {
     if (InvMass() > 0.0f) {
         orientation = AdvanceRotation(orientation, &angVel, LocalInertia(), dt);
     } else if (MagnitudeSq(angVel) > 0.0f) {

@@ -9,6 +9,7 @@
 #include "Physics/Geometry/Geometry3D.h"
 #include "Physics/Rigidbody.h"
 #include "Physics/StepFactor.h"
+#include "Physics/VolumePositions.h"
 
 /// The book's GRAVITY_CONST, m/s^2.
 constexpr vec3 kVolumeGravity{0.0f, -9.82f, 0.0f};
@@ -18,7 +19,10 @@ public:
     vec3 position;
     vec3 velocity;
     quat orientation;  ///< body -> world
-    vec3 angVel;       ///< world-space angular velocity, rad/s
+    /// m/s: the linear velocity the current (sub)step began with, before forces and impulses; set by the volume
+    /// stages for VolumePositions::Average, unused otherwise.
+    vec3 startVelocity;
+    vec3 angVel;  ///< world-space angular velocity, rad/s
     vec3 forces;
     vec3 torques;
     float mass = 1.0f;      ///< 0 = static
@@ -53,6 +57,9 @@ public:
     void IntegrateVelocity(float dt);
     /// x += v dt, orientation advanced by w (momentum-preserving for anisotropic bodies), volumes synced.
     void IntegratePosition(float dt);
+    /// IntegratePosition with the linear part chosen by `mode` (VolumePositions.h): Average moves the body by
+    /// (startVelocity + velocity) dt / 2.
+    void IntegratePosition(float dt, VolumePositions mode);
     /// Copies position and orientation into `box` and `sphere`.
     void SynchCollisionVolumes();
     /// 0 for a static body (mass <= 0), else 1/mass.
@@ -90,6 +97,8 @@ public:
     float SleepTime() const { return sleepTime; }
 
 private:
+    /// The orientation part of IntegratePosition, then SynchCollisionVolumes.
+    void AdvanceOrientation(float dt);
     friend class Islands;  // keeps `sleeping` and `sleepTime`
     bool sleeping = false;
     float sleepTime = 0.0f;

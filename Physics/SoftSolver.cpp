@@ -130,6 +130,7 @@ void SoftContactSolver::Step(const std::vector<RigidbodyVolume*>& volumes,
     const bool carryOver = ctx.step == lastStep + 1;
     lastStep = ctx.step;
 
+    averagePositions = ctx.settings.volumePositions == VolumePositions::Average;
     LoadBodies(volumes, ctx, active);
     Collide(volumes, candidates, ctx, carryOver);
 
@@ -332,8 +333,9 @@ void SoftContactSolver::IntegrateVelocities(const Block& block, bool warm) {
     auto store = [](vec3& to, Float4 v) { std::memcpy(&to.x, &v, sizeof v); };
     for (std::size_t k = block.bodyBegin; k < block.bodyEnd; ++k) {
         const std::size_t i = static_cast<std::size_t>(graph.BlockBodies()[k]);
-        const BodySim& bs = sim[i];
+        BodySim& bs = sim[i];
         BodyState& st = state[i];
+        if (averagePositions) bs.vStart = st.v;  // before forces and contacts (IntegratePositions)
         // Semi-implicit Euler, then the body's velocity retention and threshold per substep (RigidbodyVolume), a
         // lane per component (the vec3 operations' bits; the padding lanes stay 0).
         const Float4 retention = simd4::Wide(bs.retention);
@@ -364,8 +366,12 @@ void SoftContactSolver::IntegratePositions(const StepContext& ctx, const Block& 
         const std::size_t i = static_cast<std::size_t>(index);
         BodySim& bs = sim[i];
         BodyState& st = state[i];
-        st.dp += st.v * h;
-        bs.p += st.v * h;
+        // VolumePositions::Average: the substep's mean velocity, exact for constant acceleration.
+        // A substep whose velocity changes by more than twice g h (an impact) moves by v h (RigidbodyVolume).
+        const bool smooth = averagePositions && MagnitudeSq(st.v - bs.vStart) <= 4.0f * MagnitudeSq(bs.gravityStep);
+        const vec3 move = smooth ? (bs.vStart + st.v) * (0.5f * h) : st.v * h;
+        st.dp += move;
+        bs.p += move;
         // Orientation advanced by the world angular velocity (exponential map, normalised), keeping the world
         // angular momentum of a body whose principal moments differ (AdvanceRotation: between contacts a box turns
         // as a free body does, not at a constant w); the rotation since the step began moves the fixed anchors

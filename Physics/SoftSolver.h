@@ -106,6 +106,7 @@ public:
         vec3 torqueStep;  // I^-1 torque h, rad/s
         float padT = 0.0f;
         vec3 p;        // position, m
+        vec3 vStart;   // linear velocity the substep began with, m/s (VolumePositions::Average only)
         quat q, q0;    // orientation now and at the start of the step
         vec3 inertia;  // principal moments, kg m^2 (body frame): torque-free rotation keeps L (AdvanceRotation)
         float invMass = 0.0f;
@@ -298,4 +299,5 @@ private:
     std::size_t reusedManifolds = 0;
     float inheritedNormal = 0.0f;
     long long lastStep = -2;
+    bool averagePositions = false;  // settings.volumePositions == Average in the current step
 };

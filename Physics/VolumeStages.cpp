@@ -132,9 +132,12 @@ void VolumeStages::ApplyVolumeForces(const StepContext& ctx, const Islands* slee
     // into velocity (semi-implicit Euler's first half), so the impulses act on the velocity that will move
     // the body.
     // Sleeping bodies get no forces (their velocities stay zero); static ones run as without sleep.
+    // VolumePositions::Average needs the velocity each body starts the substep with (IntegrateVolumes).
+    const bool average = ctx.settings.volumePositions == VolumePositions::Average;
     for (std::size_t i = 0; i < volumes.size(); ++i) {
         if (sleep != nullptr && !sleep->IsAwake(static_cast<int>(i))) continue;
         volumes[i]->ApplyForces();
+        if (average) volumes[i]->startVelocity = volumes[i]->velocity;
         volumes[i]->IntegrateVelocity(ctx.h);
     }
 }
@@ -172,12 +175,13 @@ int VolumeStages::VolumeSubsteps(const StepContext& ctx) {
 }
 
 void VolumeStages::IntegrateVolumes(const StepContext& ctx, const Islands* sleep) {
+    const VolumePositions mode = ctx.settings.volumePositions;
     if (sleep == nullptr) {
-        for (RigidbodyVolume* body : volumes) body->IntegratePosition(ctx.h);
+        for (RigidbodyVolume* body : volumes) body->IntegratePosition(ctx.h, mode);
         return;
     }
     for (std::size_t i = 0; i < volumes.size(); ++i)
-        if (sleep->IsAwake(static_cast<int>(i))) volumes[i]->IntegratePosition(ctx.h);
+        if (sleep->IsAwake(static_cast<int>(i))) volumes[i]->IntegratePosition(ctx.h, mode);
 }
 
 void VolumeStages::ApplyLinearProjection(const StepContext& ctx) {

@@ -11,6 +11,7 @@
 #include "Physics/ParticleContact.h"
 #include "Physics/SleepSettings.h"
 #include "Physics/StepFactor.h"
+#include "Physics/VolumePositions.h"
 
 class JobPool;
 
@@ -38,6 +39,10 @@ struct WorldSettings {
     ContactSolver contactSolver = ContactSolver::Book;
     /// Passes over every contact per (sub)step, count. Book: ImpulseIteration = 5.
     int solverIterations = 5;
+    /// How volumes' positions follow their linear velocity in every contact solver (VolumePositions.h). Book:
+    /// VolumePositions::Euler (x += v h); Average moves by the (sub)step's mean velocity, exact for constant
+    /// acceleration (docs/ch15.md, "A position update exact for constant acceleration").
+    VolumePositions volumePositions = VolumePositions::Euler;
     /// m: penetration left uncorrected by linear projection and the Baumgarte bias (0.01-0.1). Book:
     /// PenetrationSlack = 0.01.
     float penetrationSlop = 0.01f;

@@ -64,6 +64,11 @@ void FileScene::AddParameters(ParameterSet* set) {
         description.world.jointModel = JointModelAt(jointChoice);
         ApplyWorldSettings();
     });
+    positionsChoice = w.volumePositions == VolumePositions::Average ? 1 : 0;
+    AddVolumePositionsParameter(set, &positionsChoice, [this] {
+        description.world.volumePositions = VolumePositionsAt(positionsChoice);
+        ApplyWorldSettings();
+    });
     AddContactSolverParameters(
         set, &contact, "contact solver: the book's per-contact impulses, accumulated impulses or the soft step", apply);
     set->AddInt("iterations", &w.iterations, 1, SceneLimits::kMaxIterations, "contact solver passes per step", apply);
@@ -104,6 +109,7 @@ void FileScene::ApplyWorldSettings() {
     s.particleContact = w.particleContact;
     s.jointModel = w.jointModel;
     s.contactSolver = w.contactSolver;
+    s.volumePositions = w.volumePositions;
     s.solverIterations = w.iterations;
     s.penetrationSlop = w.penetrationSlop;
     s.linearProjection = w.linearProjection;

@@ -60,6 +60,7 @@ private:
     int integratorChoice = 0;  // index into kAllIntegrators, mirrors description.world.integrator
     int contactChoice = 0;     // the "particle-contact" choice (ParticleContactIndex)
     int jointChoice = 0;       // the "joint-model" choice (0 book, 1 tension)
+    int positionsChoice = 0;   // the "volume-positions" choice (0 euler, 1 average)
     // The "solver", soft-solver and "sleep" keys (the type every rigid-volume scene uses); each change is written
     // into description.world (contactSolver, soft, sleep.enabled) before the world's settings are applied.
     ContactSolverChoice contact;

@@ -85,6 +85,7 @@ struct Describer {
         d.world.particleContact = s.particleContact;
         d.world.jointModel = s.jointModel;
         d.world.contactSolver = s.contactSolver;
+        d.world.volumePositions = s.volumePositions;
         d.world.iterations = s.solverIterations;
         d.world.penetrationSlop = s.penetrationSlop;
         d.world.linearProjection = s.linearProjection;
@@ -272,6 +273,7 @@ Json WorldJson(const SceneWorld& w) {
     // Only a non-book contact is written, so exports of the book's scenes stay as they were.
     if (w.particleContact != ParticleContact::Book) world["particleContact"] = ToString(w.particleContact);
     if (w.jointModel != JointModel::Book) world["jointModel"] = ToString(w.jointModel);
+    if (w.volumePositions != VolumePositions::Euler) world["volumePositions"] = ToString(w.volumePositions);
     if (w.step > 0.0f) world["step"] = J(w.step);
     // Written only where they differ from the defaults (docs/scenes.md, "Export").
     if (const Json soft = SoftObject(w.soft); !soft.empty()) world["soft"] = soft;

@@ -287,6 +287,8 @@ void ReadWorld(const Json& j, SceneWorld* w, Problems* problems) {
            [&](const std::string& n) { return ParseParticleContact(n, &w->particleContact); });
     choice("jointModel", "a joint model", JointModelIds(),
            [&](const std::string& n) { return ParseJointModel(n, &w->jointModel); });
+    choice("volumePositions", "a volume position update", VolumePositionsIds(),
+           [&](const std::string& n) { return ParseVolumePositions(n, &w->volumePositions); });
     choice("contactSolver", "a contact solver", ContactSolverIds(),
            [&](const std::string& n) { return ParseContactSolver(n, &w->contactSolver); });
     r.Int("iterations", &w->iterations, 1, SceneLimits::kMaxIterations);

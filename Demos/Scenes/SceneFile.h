@@ -49,8 +49,9 @@ struct SceneWorld {
     ParticleContact particleContact = ParticleContact::Book;  ///< how particles meet boxes (Physics/Particle.h)
     JointModel jointModel = JointModel::Book;  ///< how distance joints hold their particles (Physics/JointModel.h)
     ContactSolver contactSolver = ContactSolver::Book;
-    int iterations = 5;             ///< solver passes per (sub)step
-    float penetrationSlop = 0.01f;  ///< m
+    VolumePositions volumePositions = VolumePositions::Euler;  ///< volumes' position update (VolumePositions.h)
+    int iterations = 5;                                        ///< solver passes per (sub)step
+    float penetrationSlop = 0.01f;                             ///< m
     bool linearProjection = true;
     float projectionFraction = 0.45f;   ///< 0..1
     int maxSubsteps = 64;               ///< volume substeps per step, 1 = off

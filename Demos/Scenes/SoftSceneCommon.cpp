@@ -69,6 +69,15 @@ void AddJointModelParameter(ParameterSet* set, int* index, const std::function<v
 
 JointModel JointModelAt(int index) { return index == 1 ? JointModel::Tension : JointModel::Book; }
 
+void AddVolumePositionsParameter(ParameterSet* set, int* index, const std::function<void()>& apply) {
+    set->AddChoice("volume-positions", index, {ToString(VolumePositions::Euler), ToString(VolumePositions::Average)},
+                   "how rigid volumes' positions follow their velocity: euler (x += v h, the book's: first order) or "
+                   "average (x += (v_start + v_end) h / 2: exact for constant acceleration)",
+                   apply);
+}
+
+VolumePositions VolumePositionsAt(int index) { return index == 1 ? VolumePositions::Average : VolumePositions::Euler; }
+
 void ClampAboveFloor(std::vector<Particle>* particles, float floorY) {
     for (Particle& particle : *particles) {
         const vec3 pos = particle.GetPosition();

@@ -9,6 +9,7 @@
 #include "Physics/Integrator.h"
 #include "Physics/JointModel.h"
 #include "Physics/Particle.h"
+#include "Physics/VolumePositions.h"
 
 /// Integrator ids in IntegratorIds() order ("explicit-euler", "euler", ...): the "integrator" choice list.
 std::vector<std::string> IntegratorChoices();
@@ -39,6 +40,11 @@ int ParticleContactIndex(ParticleContact contact);
 void AddJointModelParameter(ParameterSet* set, int* index, const std::function<void()>& apply);
 /// The JointModel at an index of that choice (book for anything else).
 JointModel JointModelAt(int index);
+/// Registers "volume-positions" (euler|average, bound to *index) on *set: how rigid volumes' positions follow their
+/// velocity (VolumePositions, docs/ch15.md "A position update exact for constant acceleration").
+void AddVolumePositionsParameter(ParameterSet* set, int* index, const std::function<void()>& apply);
+/// The VolumePositions at an index of that choice (euler for anything else).
+VolumePositions VolumePositionsAt(int index);
 
 /// The "integrator" choice behind a chapter 16 scene's panel. The scene owns its params; this holds the rest.
 /// Host time is not accumulated here: the host runs whole physics steps of the scene's dt (DemoBase::PhysicsStep).

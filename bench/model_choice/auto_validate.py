@@ -33,6 +33,9 @@ SEED = 2028  # the validation's seed and set: SEED, PER_FAMILY instances of ever
 PER_FAMILY = 20
 BUDGET_RANGE = (1e-4, 1e-1)  # m
 PARTICLE_STEPS = [0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4]
+# Volume position updates (world.volumePositions, docs/ch15.md "A position update exact for constant acceleration"):
+# the book's (None: the default, euler) and the mean velocity's, which model=auto uses.
+VOLUME_POSITIONS = [None, "average"]
 VOLUME_STEPS = [0.05, 0.02, 0.01, 0.005, 0.002, 0.001, 5e-4, 2e-4, 1e-4]
 INTEGRATORS = {"explicit-euler": 1, "euler": 1, "velocity-verlet": 2, "verlet": 1, "rk4": 4}  # force evaluations
 PARTICLE_CONTACTS = ["book", "skin", "reflect"]  # world.particleContact, for particles that can hit a constraint
@@ -78,11 +81,15 @@ class Instance:
         if self.volumes:
             for solver, passes in SOLVERS:
                 for step in VOLUME_STEPS:
-                    world = {"contactSolver": solver, "step": step}
-                    world.update({"soft": {"substeps": passes}} if solver == "soft" else {"iterations": passes})
-                    work = self.duration / step * bodies * (2 * passes if solver == "soft" else passes + 1)
-                    label = f"{solver} {'substeps' if solver == 'soft' else 'iterations'} {passes}, dt {step:g}"
-                    models.append({"label": label, "world": world, "work": work})
+                    for positions in VOLUME_POSITIONS:
+                        world = {"contactSolver": solver, "step": step}
+                        world.update({"soft": {"substeps": passes}} if solver == "soft" else {"iterations": passes})
+                        work = self.duration / step * bodies * (2 * passes if solver == "soft" else passes + 1)
+                        label = f"{solver} {'substeps' if solver == 'soft' else 'iterations'} {passes}, dt {step:g}"
+                        if positions is not None:
+                            world["volumePositions"] = positions
+                            label += f", {positions} positions"
+                        models.append({"label": label, "world": world, "work": work})
         else:
             # Particles that can hit a constraint: every particle contact too (the engine's model space).
             contacts = PARTICLE_CONTACTS if self.contacts else [None]

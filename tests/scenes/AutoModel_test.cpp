@@ -473,6 +473,22 @@ TEST(AutoModel, AWorldWithJointsRunsThemAsTension) {
     EXPECT_LE(chosen.estimate, 0.0784);
 }
 
+// An auto run on a world of one moving volume moves it by its mean velocity (VolumePositions::Average, docs/ch15.md
+// "A position update exact for constant acceleration"): the validation's incline at 2.65 mm is then met at 0.1 s
+// steps (the book's update needs 0.5 ms). A world of several moving volumes keeps the book's update (the stack of
+// five).
+TEST(AutoModel, AWorldOfOneMovingVolumeMovesItByItsMeanVelocity) {
+    const Chosen run = ReferenceChoice("incline", 0.00265);
+    ASSERT_TRUE(run.chosen) << run.error;
+    EXPECT_EQ(run.scene->System().settings.volumePositions, VolumePositions::Average);
+    EXPECT_EQ(run.params.Get("volume-positions"), "average");
+    const CandidateEstimate& chosen = run.autoModel.Choice().candidates[std::size_t(run.autoModel.Choice().chosen)];
+    EXPECT_GE(chosen.model.step, 0.01) << chosen.model.Describe(true, false);
+    const Chosen stack = ReferenceChoice("stack-5", 0.01);
+    ASSERT_TRUE(stack.chosen) << stack.error;
+    EXPECT_EQ(stack.scene->System().settings.volumePositions, VolumePositions::Euler);
+}
+
 // A whole run's difference (at its end) is checked by a third probe at a quarter of the step, whose difference from
 // the refinement, when it is not smaller by the order's factor, says the error has stopped shrinking with the step. The
 // 120° pendulum on the book's joint with the validation's budget for a period error of 0.1 (1.73 m,
@@ -635,9 +651,20 @@ TEST(AutoModel, TheWatchKeepsAModelAFinerOneWouldChangeLittle) {
 
 // The evaluation limit bounds the calibration of a budget nothing meets, not one a fine candidate meets: the
 // validation's incline (a cube sliding 1.5 s down a slab) at 2.65 mm is met by the accumulated solver at 0.5 ms,
-// the 64th candidate in order of cost; with the old limit of 60 the budget was refused.
+// the 64th candidate in order of cost; with the old limit of 60 the budget was refused. The scene is doubled (a
+// second slab and cube 10 m away) so that auto keeps the book's position update (a world of one moving volume gets
+// volume-positions=average, which meets this budget at 0.1 s).
 TEST(AutoModel, TheEvaluationLimitReachesPastTheSixtiethCandidate) {
-    const Chosen run = ReferenceChoice("incline", 0.00265);
+    SceneDescription d;
+    std::vector<std::string> errors;
+    ASSERT_TRUE(LoadSceneFile(PSB_SOURCE_DIR "/scenes/reference/incline.json", &d, &errors));
+    for (std::size_t i = 0, n = d.bodies.size(); i < n; ++i) {
+        SceneBody copy = d.bodies[i];
+        copy.id += "-copy";
+        copy.position.z += 10.0f;
+        d.bodies.push_back(copy);
+    }
+    const Chosen run(d, d.duration, Budget(0.00265));
     ASSERT_TRUE(run.chosen) << run.error;
     // Past the sixtieth in order of cost (fewer than that are run: the rest are skipped as predicted misses).
     const ModelChoiceResult& c = run.autoModel.Choice();

@@ -190,6 +190,8 @@ TEST(SceneFile, OutOfRangeValuesAndNames) {
                            {"world.contactSolver: is not a contact solver"}));
     EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"jointModel": "rigid"})")),
                            {"world.jointModel: is not a joint model", "book, tension", "\"rigid\""}));
+    EXPECT_TRUE(OneProblem(Problems(File(kBox, R"("world": {"volumePositions": "verlet"})")),
+                           {"world.volumePositions: is not a volume position update", "euler, average", "\"verlet\""}));
     EXPECT_TRUE(
         OneProblem(Problems(File(kBox, R"("world": {"iterations": 0})")), {"world.iterations: must be in [1, 1000]"}));
     EXPECT_TRUE(OneProblem(Problems(R"({"format": 2, "name": "t"})"), {"format: is not a version this build reads"}));
@@ -513,7 +515,7 @@ TEST(FileScene, AppliesWorldSettingsAndBodyFields) {
                                   {"id": "p", "type": "particle", "position": [1, 2, 3], "restitution": 0.3})",
                               R"("world": {"gravity": [0, -2, 0], "iterations": 9, "integrator": "verlet",
                                            "contactSolver": "accumulated", "substeps": 3,
-                                           "jointModel": "tension"})"),
+                                           "jointModel": "tension", "volumePositions": "average"})"),
                          &d)
                     .empty());
     FileScene scene(d);
@@ -521,6 +523,7 @@ TEST(FileScene, AppliesWorldSettingsAndBodyFields) {
     EXPECT_EQ(s.solverIterations, 9);
     EXPECT_EQ(s.integrator, Integrator::PositionVerlet);
     EXPECT_EQ(s.jointModel, JointModel::Tension);
+    EXPECT_EQ(s.volumePositions, VolumePositions::Average);
     EXPECT_EQ(s.contactSolver, ContactSolver::Accumulated);
     EXPECT_EQ(s.maxVolumeSubsteps, 3);
     const RigidbodyVolume& v = scene.Volumes()[0];
@@ -600,7 +603,8 @@ TEST(SceneExport, WrittenTextReadsBackToTheSameWorld) {
                                  "joints": [{"a": "p", "b": "q", "length": 1}],
                                  "constraints": [{"position": [0, -1, 0], "halfExtents": [5, 1, 5]}],
                                  "cloths": [{"gridSize": 4, "spacing": 0.3, "position": [0, 4, 0]}],
-                                 "world": {"iterations": 7, "integrator": "rk4", "jointModel": "tension"})"),
+                                 "world": {"iterations": 7, "integrator": "rk4", "jointModel": "tension",
+                                           "volumePositions": "average"})"),
                          &d)
                     .empty());
     FileScene original(d);
@@ -616,6 +620,7 @@ TEST(SceneExport, WrittenTextReadsBackToTheSameWorld) {
     EXPECT_EQ(copy.System().settings.solverIterations, 7);
     EXPECT_EQ(copy.System().settings.integrator, Integrator::RK4);
     EXPECT_EQ(copy.System().settings.jointModel, JointModel::Tension);
+    EXPECT_EQ(copy.System().settings.volumePositions, VolumePositions::Average);
     ASSERT_EQ(copy.System().Bodies().size(), original.System().Bodies().size());
     ASSERT_EQ(copy.System().Springs().size(), 1u);
     EXPECT_EQ(copy.System().Springs()[0].b, 0.5f);

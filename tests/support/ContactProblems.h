@@ -62,7 +62,8 @@ struct Setting {
     ContactSolver solver = ContactSolver::Book;
     double dt = 1e-3;
     int substeps = 6;
-    int gridSide = 3;  ///< DropGrid: cubes per side
+    int gridSide = 3;                                    ///< DropGrid: cubes per side
+    VolumePositions positions = VolumePositions::Euler;  ///< the volumes' position update (VolumePositions.h)
 };
 
 /// An undamped spec (the exact answers have no damping).
@@ -73,6 +74,7 @@ struct World : RigidWorld {
     World(const Setting& s, const std::vector<BodySpec>& specs) : RigidWorld(specs) {
         system.settings.contactSolver = s.solver;
         system.settings.soft.substeps = s.substeps;
+        system.settings.volumePositions = s.positions;
     }
     void Run(const Setting& s, double seconds) {
         const long long n = std::llround(seconds / s.dt);
