@@ -98,6 +98,10 @@ double ConvergenceNoise(BudgetQuantity quantity, const std::vector<double>& posi
 
 /// Steps a candidate's positions are advanced by per simulated second: the soft solver on volumes moves them once
 /// per substep.
+bool Unrefined(const CandidateSpace& space, long long candidateUpdates, long long refinedUpdates) {
+    return space.hasVolumes && candidateUpdates > 0 && 2 * refinedUpdates < 3 * candidateUpdates;
+}
+
 double UpdatesPerSecond(const ModelCandidate& c, const CandidateSpace& space) {
     const bool substeps = space.hasVolumes && c.solver == ContactSolver::Soft;
     return (substeps ? static_cast<double>(c.softSubsteps) : 1.0) / c.step;
@@ -249,6 +253,11 @@ private:
         r.observed = full;
         r.length = length;
         r.factor = factor;
+        if (!observed && Unrefined(space, coarse->VolumeUpdates(), fine->VolumeUpdates())) {
+            r.unrefined = true;
+            r.observed = kInf;
+            return r;
+        }
         if (r.missedAt >= 0.0 || r.stopped) {
             r.growth = 0.0;  // a lower bound: the difference so far, nothing extrapolated
             return r;

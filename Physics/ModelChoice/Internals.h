@@ -36,6 +36,10 @@ double SpanFor(const ChoiceSettings& s);
 /// The level at which a difference is rounding (float states) after `steps` steps: relative for energy, scaled by
 /// the largest coordinate (at least 1 m) for positions and joints.
 double ConvergenceNoise(BudgetQuantity quantity, const std::vector<double>& positions, double steps);
+/// A refinement that did not refine: on a world of volumes, the finer probe made fewer than 1.5 times the
+/// candidate's volume (sub)steps over the same time (a halved step whose substeps are bound by travel takes the
+/// same substeps: the two runs are the same run, and their difference, 0, estimates nothing).
+bool Unrefined(const CandidateSpace& space, long long candidateUpdates, long long refinedUpdates);
 
 /// A model's whole run from the start, kept for the candidates that share it (Physics/ModelChoice/WholeRuns.cpp):
 /// its state at each end a candidate that runs it may measure at.
@@ -43,7 +47,8 @@ struct WholeRunRecord {
     struct AtEnd {
         double end = 0.0;  // s
         std::vector<double> positions;
-        double energy = 0.0;  // J
+        double energy = 0.0;          // J
+        long long volumeUpdates = 0;  // ModelProbe::VolumeUpdates at this end
     };
     ModelCandidate model;
     long long failStep = -1;  // the step (1-based) at which it blew up or stopped, else < 0
@@ -141,6 +146,9 @@ struct SpanResult {
     // finer pair's on the same terms, and the rounding level below which neither says anything.
     double pair = -1.0, finer = -1.0, noise = 0.0;
     bool stopped = false;  // cut short by the choice's CPU limit
+    // The refinement integrated no finer: it made fewer than 1.5 times the candidate's volume (sub)steps (Unrefined).
+    // No estimate: observed is infinite.
+    bool unrefined = false;
 };
 
 /// How a span runs (RunSpan).

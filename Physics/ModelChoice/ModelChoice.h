@@ -113,6 +113,9 @@ public:
     virtual const PhysicsSystem& World() const = 0;
     /// A factory of probes that start from this probe's world as it is now.
     virtual ProbeFactory Snapshot() const = 0;
+    /// Volume (sub)steps made since Apply (PhysicsSystem::LastVolumeSubsteps summed; one per step without volumes):
+    /// how finely the probe really integrated, which a halved step does not change where substeps are bound by travel.
+    virtual long long VolumeUpdates() const { return 0; }
 };
 /// Probes over `world` as it is at the factory's first call: that state is copied once (WorldCopy) and each probe
 /// runs its own copy of it. `world` must outlive the factory's first call.

@@ -24,6 +24,7 @@ public:
         s.soft.substeps = model.softSubsteps;
         step = model.step;
         steps = 0;
+        updates = 0;
         monitor = StabilityMonitor();
         monitor.Start(copy->System());
     }
@@ -36,6 +37,7 @@ public:
             world.Update(dt);
             if (!world.StopReason().empty() || !monitor.Check(world)) return false;
             ++steps;
+            updates += world.LastVolumeSubsteps();
         }
         return true;
     }
@@ -44,12 +46,15 @@ public:
 
     ProbeFactory Snapshot() const override { return ProbesNow(World()); }
 
+    long long VolumeUpdates() const override { return updates; }
+
 private:
     std::shared_ptr<const WorldCopy> source;
     std::unique_ptr<WorldCopy> copy;
     StabilityMonitor monitor;
     double step = 0.03;
     long long steps = 0;
+    long long updates = 0;
 };
 
 }  // namespace

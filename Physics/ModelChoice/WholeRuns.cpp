@@ -92,6 +92,7 @@ bool RunOne(const ProbeFactory& factory, const ModelCandidate& m, const Candidat
         at.end = end;
         WorldPositions(probe->World(), &at.positions);
         at.energy = WorldEnergy(probe->World());
+        at.volumeUpdates = probe->VolumeUpdates();
         out->ends.push_back(std::move(at));
     }
     out->model = m;
@@ -161,6 +162,11 @@ SpanResult RunWholeShared(const ProbeFactory& factory, const ModelCandidate& can
         } else {
             r.observed = kInf;
         }
+        return r;
+    }
+    if (Unrefined(space, at[0]->volumeUpdates, at[1]->volumeUpdates)) {
+        r.unrefined = true;
+        r.observed = kInf;
         return r;
     }
     const double energyScale =

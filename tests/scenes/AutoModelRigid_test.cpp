@@ -127,4 +127,30 @@ TEST(AutoModelRigid, AWorldOfVolumesInFreeFlightGetsASpanOverItsFirstContact) {
     EXPECT_TRUE(Chosen(resting, 1.0, 1e-2, Untimed(), &met).Choice().eventTimes.empty());
 }
 
+// Two boxes sliding at 3 m/s: at dt 0.1 s a box travels past the substep bound, so the book and accumulated solvers
+// split the step into travel-bound substeps, and dt 0.05 s takes half as many of the same length. The candidate and
+// its refinement then run the same substeps: their difference is 0, which is no estimate (a 4 x 4 grid of such boxes
+// chose the book solver at dt 0.1 s on that 0 and ended 2,100 times its budget off). Such a candidate gets no
+// estimate, and the choice goes on to candidates whose refinement does refine.
+TEST(AutoModelRigid, ACandidateWhoseRefinementTakesTheSameSubstepsGetsNoEstimate) {
+    SceneDescription d;
+    d.bodies.push_back(Ground(0.7f));
+    d.bodies.push_back(Box("a", vec3(-2, 0.1f, 0), vec3(0.3f, 0.1f, 0.2f), vec3(3.0f, 0, 0)));
+    d.bodies.push_back(Box("b", vec3(2, 0.1f, 3), vec3(0.2f, 0.1f, 0.3f), vec3(0, 0, -3.0f)));
+    bool met = false;
+    const AutoModel chosen = Chosen(d, 0.6, 1e-2, Untimed(), &met);
+    const ModelChoiceResult& c = chosen.Choice();
+    int travelBound = 0;
+    for (const CandidateEstimate& e : c.candidates) {
+        if (!e.evaluated || e.model.solver == ContactSolver::Soft || e.model.step != 0.1) continue;
+        ++travelBound;
+        EXPECT_TRUE(std::isinf(e.estimate)) << e.model.Describe(false, true) << ": " << e.estimate;
+        EXPECT_NE(e.note.find("no more volume substeps"), std::string::npos) << e.note;
+    }
+    EXPECT_GT(travelBound, 0) << "book or accumulated candidates at dt 0.1 s were estimated";
+    ASSERT_TRUE(met);
+    ASSERT_GE(c.chosen, 0);
+    EXPECT_GT(c.candidates[static_cast<std::size_t>(c.chosen)].estimate, 0.0) << "chosen on a real difference";
+}
+
 }  // namespace
