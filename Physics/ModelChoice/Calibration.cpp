@@ -254,7 +254,7 @@ private:
         r.length = length;
         r.factor = factor;
         if (!observed && Unrefined(space, coarse->VolumeUpdates(), fine->VolumeUpdates())) {
-            r.unrefined = true;
+            r.noEstimate = kUnrefined;
             r.observed = kInf;
             return r;
         }

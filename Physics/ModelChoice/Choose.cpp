@@ -272,9 +272,7 @@ void Evaluate(const std::vector<PlannedSpan>& plan, double span, const Candidate
         if (!w.stable || !std::isfinite(w.observed)) {
             e->stable = w.stable;
             e->estimate = kInf;
-            e->note = !w.stable     ? "unstable in the calibration"
-                      : w.unrefined ? "its refinement took no more volume substeps (bound by travel): no estimate"
-                                    : "its refinement blew up in the calibration";
+            e->note = w.stable ? w.noEstimate : "unstable in the calibration";
             break;
         }
         if (k == 0) e->growth = w.growth;

@@ -40,6 +40,7 @@ double ConvergenceNoise(BudgetQuantity quantity, const std::vector<double>& posi
 /// candidate's volume (sub)steps over the same time (a halved step whose substeps are bound by travel takes the
 /// same substeps: the two runs are the same run, and their difference, 0, estimates nothing).
 bool Unrefined(const CandidateSpace& space, long long candidateUpdates, long long refinedUpdates);
+constexpr const char* kUnrefined = "its refinement took no more volume substeps (bound by travel): no estimate";
 
 /// A model's whole run from the start, kept for the candidates that share it (Physics/ModelChoice/WholeRuns.cpp):
 /// its state at each end a candidate that runs it may measure at.
@@ -146,9 +147,9 @@ struct SpanResult {
     // finer pair's on the same terms, and the rounding level below which neither says anything.
     double pair = -1.0, finer = -1.0, noise = 0.0;
     bool stopped = false;  // cut short by the choice's CPU limit
-    // The refinement integrated no finer: it made fewer than 1.5 times the candidate's volume (sub)steps (Unrefined).
-    // No estimate: observed is infinite.
-    bool unrefined = false;
+    // Why a stable candidate has no estimate (observed infinite): its refinement blew up, or it integrated no finer,
+    // making fewer than 1.5 times the candidate's volume (sub)steps (Unrefined, kUnrefined).
+    const char* noEstimate = "its refinement blew up in the calibration";
 };
 
 /// How a span runs (RunSpan).

@@ -165,7 +165,7 @@ SpanResult RunWholeShared(const ProbeFactory& factory, const ModelCandidate& can
         return r;
     }
     if (Unrefined(space, at[0]->volumeUpdates, at[1]->volumeUpdates)) {
-        r.unrefined = true;
+        r.noEstimate = kUnrefined;
         r.observed = kInf;
         return r;
     }
