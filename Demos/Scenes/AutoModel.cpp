@@ -36,6 +36,13 @@ std::string Number(double v) {
     return text;
 }
 
+/// Volumes with mass (the ones that move).
+int MovingVolumes(const PhysicsSystem& world) {
+    int n = 0;
+    for (const RigidbodyVolume* v : world.Volumes()) n += v->mass > 0.0f ? 1 : 0;
+    return n;
+}
+
 }  // namespace
 
 CandidateSpace AutoModel::SpaceOf(const ParameterSet& params, const PhysicsSystem& world, double hostStep) {
@@ -46,7 +53,7 @@ CandidateSpace AutoModel::SpaceOf(const ParameterSet& params, const PhysicsSyste
     }
     space.particleCount += static_cast<double>(world.Particles().size());
     space.springCount += static_cast<double>(world.Springs().size() + world.Joints().size());
-    for (const RigidbodyVolume* v : world.Volumes()) space.volumeCount += v->mass > 0.0f ? 1.0 : 0.0;
+    space.volumeCount = static_cast<double>(MovingVolumes(world));
     space.hasParticles = space.particleCount > 0.0;
     space.hasVolumes = space.volumeCount > 0.0;
     space.hasContacts = space.hasParticles && !world.Constraints().empty();
@@ -192,11 +199,10 @@ std::string RefusalText(const ModelChoiceResult& choice, const CandidateSpace& s
     return out;
 }
 
-/// Volumes with mass (the ones that move).
-int MovingVolumes(const PhysicsSystem& world) {
-    int n = 0;
-    for (const RigidbodyVolume* v : world.Volumes()) n += v->mass > 0.0f ? 1 : 0;
-    return n;
+/// Sets the host's `key` to `id` before any probe is made, where the host has that key (a demo without it keeps its
+/// own model); false, with `error`, when the host refuses the value.
+bool UseModel(ParameterSet* params, const char* key, const char* id, std::string* error) {
+    return params->Find(key) == nullptr || params->Get(key) == id || params->Set(key, id, error);
 }
 
 }  // namespace
@@ -210,23 +216,15 @@ bool AutoModel::Choose(ParameterSet* params, const PhysicsSystem& world, double 
     // Step doubling needs a model that converges as its step shrinks: the book's particle contact does not (a resting
     // particle hops by a step-independent amount), so an auto run uses the reflect contact, which converges to the
     // rigid answer at second order with no offset, before any probe is made (docs/model-choice.md "Particle contact").
-    const char* contact = ToString(kAutoParticleContact);
-    if (params->Find("particle-contact") != nullptr && params->Get("particle-contact") != contact &&
-        !params->Set("particle-contact", contact, error))
-        return false;
+    if (!UseModel(params, "particle-contact", ToString(kAutoParticleContact), error)) return false;
     // Likewise the book's distance joint is first order whatever the integrator (its projection's error does not
     // shrink at the integrator's order), so a world with joints runs them as tension (docs/ch16.md).
-    if (!world.Joints().empty() && params->Find("joint-model") != nullptr &&
-        params->Get("joint-model") != ToString(JointModel::Tension) &&
-        !params->Set("joint-model", ToString(JointModel::Tension), error))
-        return false;
+    if (!world.Joints().empty() && !UseModel(params, "joint-model", ToString(JointModel::Tension), error)) return false;
     // A world of one moving volume moves it by each (sub)step's mean velocity, exact for constant acceleration (free
     // fall, a steady slide; docs/ch15.md "A position update exact for constant acceleration"). Only there: its
     // candidates are compared over whole runs, which include every contact, while a world of several volumes is
     // calibrated on spans that may end before the first contact, and an exact free flight then reads as no error.
-    const char* positions = ToString(VolumePositions::Average);
-    if (MovingVolumes(world) == 1 && params->Find("volume-positions") != nullptr &&
-        params->Get("volume-positions") != positions && !params->Set("volume-positions", positions, error))
+    if (MovingVolumes(world) == 1 && !UseModel(params, "volume-positions", ToString(VolumePositions::Average), error))
         return false;
     space = SpaceOf(*params, world, hostStep);
     settings = tuning;
