@@ -27,13 +27,6 @@ void ZeroSmall(vec3& v, float epsilon) {
         if (std::fabs(v[i]) < epsilon) v[i] = 0.0f;
 }
 
-/// An impact is not a constant acceleration: it changes the velocity by more than gravity and friction can over a
-/// step, and the mean of the velocities before and after it would carry the body half a step into what stopped it.
-/// A step whose velocity change exceeds twice g h moves by the end velocity (x += v h) as the default does.
-bool SmoothStep(const vec3& start, const vec3& end, const vec3& gravityStep) {
-    return MagnitudeSq(end - start) <= 4.0f * MagnitudeSq(gravityStep);
-}
-
 bool IsIsotropic(const vec3& inertia) { return inertia.x == inertia.y && inertia.y == inertia.z; }
 
 }  // namespace
@@ -96,7 +89,7 @@ void RigidbodyVolume::IntegratePosition(float dt) {
 }
 
 void RigidbodyVolume::IntegratePosition(float dt, VolumePositions mode) {
-    if (mode == VolumePositions::Average && SmoothStep(startVelocity, velocity, gravity * dt)) {
+    if (mode == VolumePositions::Average && SmoothVolumeStep(startVelocity, velocity, gravity * dt)) {
         position += (startVelocity + velocity) * (0.5f * dt);
         AdvanceOrientation(dt);
         return;

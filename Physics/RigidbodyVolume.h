@@ -114,6 +114,14 @@ private:
 /// step (SoftSolver.cpp).
 quat AdvanceRotation(const quat& orientation, vec3* angularVelocity, const vec3& inertia, float dt);
 
+/// VolumePositions::Average's test of a (sub)step: its velocity changed from `start` to `end` by no more than twice
+/// `gravityStep` (g h). An impact is not a constant acceleration: it changes the velocity by more than gravity and
+/// friction can over a step, and the mean of the velocities before and after it would carry the body half a step into
+/// what stopped it, so such a step moves by the end velocity (x += v h). Shared by IntegratePosition and the soft step.
+inline bool SmoothVolumeStep(const vec3& start, const vec3& end, const vec3& gravityStep) {
+    return MagnitudeSq(end - start) <= 4.0f * MagnitudeSq(gravityStep);
+}
+
 /// True when `body` can be simulated: a sphere or box with finite, non-negative mass (0 = static); finite
 /// position, velocity, angular velocity, gravity, forces and torques; a finite, non-zero orientation; finite,
 /// strictly positive half sizes (box) or radius (sphere); finite cor, friction >= 0, damping in [0, 1], finite

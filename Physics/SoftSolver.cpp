@@ -367,8 +367,8 @@ void SoftContactSolver::IntegratePositions(const StepContext& ctx, const Block& 
         BodySim& bs = sim[i];
         BodyState& st = state[i];
         // VolumePositions::Average: the substep's mean velocity, exact for constant acceleration.
-        // A substep whose velocity changes by more than twice g h (an impact) moves by v h (RigidbodyVolume).
-        const bool smooth = averagePositions && MagnitudeSq(st.v - bs.vStart) <= 4.0f * MagnitudeSq(bs.gravityStep);
+        // A substep whose velocity changes by more than twice g h (an impact) moves by v h (SmoothVolumeStep).
+        const bool smooth = averagePositions && SmoothVolumeStep(bs.vStart, st.v, bs.gravityStep);
         const vec3 move = smooth ? (bs.vStart + st.v) * (0.5f * h) : st.v * h;
         st.dp += move;
         bs.p += move;
